@@ -1,0 +1,42 @@
+# mortarcontact — one-command set-up, build, demo, tests and benchmarks (run as root on Debian).
+PYTHON ?= python3
+JOBS ?= $(shell nproc)
+BUILD_DIR := build/cmake
+DEBS := g++ cmake ninja-build ccache pkg-config libeigen3-dev libsuitesparse-dev libmetis-dev \
+        nlohmann-json3-dev libnanoflann-dev libhdf5-dev libgtest-dev libmuparser-dev
+PY_BUILD := scikit-build-core pybind11 ninja cmake
+PY_RUN := numpy scipy meshio h5py rich pytest sympy matplotlib
+
+.PHONY: all deps install demo test test-cpp test-python bench clean
+
+all: install
+
+deps:
+	@missing=""; for p in $(DEBS); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
+	if [ -n "$$missing" ]; then \
+	  echo "Installing Debian packages:$$missing"; \
+	  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $$missing; \
+	fi
+	@$(PYTHON) -m pip install -q --disable-pip-version-check $(PY_BUILD) $(PY_RUN)
+
+# Incremental: scikit-build-core reuses $(BUILD_DIR) and ccache caches objects.
+install: deps
+	CMAKE_BUILD_PARALLEL_LEVEL=$(JOBS) $(PYTHON) -m pip install -q --disable-pip-version-check \
+	  --no-build-isolation --no-deps .
+
+demo: install
+	cd examples/plate_with_hole && $(PYTHON) -m mortarcontact run ProjectParameters.json && $(PYTHON) postprocess.py
+
+test: install test-cpp test-python
+
+test-cpp:
+	ctest --test-dir $(BUILD_DIR) --output-on-failure -j $(JOBS)
+
+test-python:
+	$(PYTHON) -m pytest -q tests/python
+
+bench: install
+	$(PYTHON) benchmarks/run_benchmarks.py
+
+clean:
+	rm -rf build

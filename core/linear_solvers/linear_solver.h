@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "core/linear_solvers/sparse_types.h"
+#include "core/utilities/error.h"
+
+namespace mc {
+
+class Parameters;
+
+/// Raised by a direct solver whose factorization met a zero pivot; `Equation()` is the row or
+/// column of the system at fault (-1 if unknown), which the builder translates into the node
+/// and DoF name for the user.
+class SingularMatrixError : public SolutionError {
+ public:
+  SingularMatrixError(const std::string& what, long equation) : SolutionError(what), equation_(equation) {}
+  long Equation() const noexcept { return equation_; }
+
+ private:
+  long equation_;
+};
+
+/// Solves A x = b for the global system. The builder calls `Initialize` whenever the sparsity
+/// pattern changes (symbolic analysis, orderings) and `Solve` every iteration (numeric
+/// factorization or iterations, then the solve), so direct solvers reuse their symbolic work.
+class LinearSolver {
+ public:
+  virtual ~LinearSolver() = default;
+  /// The normalised name from the settings (e.g. "umfpack", "cg").
+  virtual std::string Name() const = 0;
+  virtual bool IsDirect() const = 0;
+  /// Symbolic phase for the pattern of A.
+  virtual void Initialize(const SparseMatrix& A) = 0;
+  /// Numeric phase and solve. Throws SingularMatrixError, or SolutionError when an iterative
+  /// solver does not reach its tolerance (with the iterations and the residual reached).
+  virtual void Solve(const SparseMatrix& A, Vector& x, const Vector& b) = 0;
+  /// Frees factorizations (the next Solve starts afresh).
+  virtual void Clear() = 0;
+  /// Iterations of the last solve (1 for direct solvers).
+  virtual int IterationsNumber() const { return 1; }
+};
+
+/// Builds a solver from `linear_solver_settings` (Kratos names, normalised as in spec 7.1:
+/// "skyline_lu_factorization", "SkylineLUFactorizationSolver", "sparse_lu", "umfpack", "klu",
+/// "cholmod", "cg", "bicgstab", "gmres", "amgcl", ...). An empty object gives UMFPACK.
+/// Unknown names and keys raise InputError with the nearest valid names.
+std::unique_ptr<LinearSolver> CreateLinearSolver(const Parameters& settings);
+
+/// The normalised solver name for a Kratos spelling (spec 7.1), without validation.
+std::string NormalizeLinearSolverName(const std::string& name);
+
+}  // namespace mc

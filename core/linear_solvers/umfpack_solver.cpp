@@ -1,0 +1,93 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "core/linear_solvers/umfpack_solver.h"
+
+#include <suitesparse/umfpack.h>
+
+#include <algorithm>
+#include <cassert>
+#include <vector>
+
+namespace mc {
+
+namespace {
+
+std::string UmfpackStatusText(int status) {
+  switch (status) {
+    case UMFPACK_ERROR_out_of_memory: return "out of memory";
+    case UMFPACK_ERROR_invalid_matrix: return "invalid matrix (unsorted or duplicate indices)";
+    case UMFPACK_ERROR_different_pattern: return "pattern changed since the symbolic analysis";
+    default: return Concat("status ", status);
+  }
+}
+
+}  // namespace
+
+UmfpackSolver::~UmfpackSolver() { Clear(); }
+
+void UmfpackSolver::Initialize(const SparseMatrix& A) {
+  Clear();
+  if (A.rows() != A.cols()) throw SolutionError(Concat("UMFPACK: matrix is ", A.rows(), "x", A.cols(), ", not square"));
+  const SparseMatrix& M = CompressedView(A, compressed_);
+  const int status = umfpack_di_symbolic(static_cast<int>(M.rows()), static_cast<int>(M.cols()), M.outerIndexPtr(),
+                                         M.innerIndexPtr(), M.valuePtr(), &symbolic_, nullptr, nullptr);
+  if (status != UMFPACK_OK) {
+    symbolic_ = nullptr;
+    throw SolutionError(Concat("UMFPACK symbolic analysis of a ", M.rows(), "-equation matrix failed: ",
+                               UmfpackStatusText(status)));
+  }
+  pattern_.Assign(M);
+  ++symbolic_count_;
+}
+
+void UmfpackSolver::Solve(const SparseMatrix& A, Vector& x, const Vector& b) {
+  assert(b.size() == A.rows());
+  const SparseMatrix& M = CompressedView(A, compressed_);
+  if (symbolic_ == nullptr || !pattern_.Matches(M)) Initialize(M);
+  FreeNumeric();
+  const int status = umfpack_di_numeric(M.outerIndexPtr(), M.innerIndexPtr(), M.valuePtr(), symbolic_, &numeric_,
+                                        nullptr, nullptr);
+  if (status == UMFPACK_WARNING_singular_matrix) {
+    const long column = FirstZeroPivotColumn();
+    FreeNumeric();
+    throw SingularMatrixError(Concat("UMFPACK: singular matrix, zero pivot at equation ", column), column);
+  }
+  if (status != UMFPACK_OK) {
+    FreeNumeric();
+    throw SolutionError(Concat("UMFPACK numeric factorization failed: ", UmfpackStatusText(status)));
+  }
+  x.resize(M.cols());
+  const int solve_status = umfpack_di_solve(UMFPACK_A, M.outerIndexPtr(), M.innerIndexPtr(), M.valuePtr(), x.data(),
+                                            b.data(), numeric_, nullptr, nullptr);
+  if (solve_status != UMFPACK_OK) throw SolutionError(Concat("UMFPACK solve failed: ", UmfpackStatusText(solve_status)));
+}
+
+// The diagonal of U in pivot order, with the column permutation Q, gives the original column of
+// the first zero pivot.
+long UmfpackSolver::FirstZeroPivotColumn() const {
+  int n_row = 0, n_col = 0, nz_diag = 0, lnz = 0, unz = 0, recip = 0;
+  if (umfpack_di_get_lunz(&lnz, &unz, &n_row, &n_col, &nz_diag, numeric_) != UMFPACK_OK) return -1;
+  std::vector<int> q(n_col);
+  std::vector<double> diagonal(std::min(n_row, n_col));
+  if (umfpack_di_get_numeric(nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, q.data(), diagonal.data(),
+                             &recip, nullptr, numeric_) != UMFPACK_OK) {
+    return -1;
+  }
+  for (std::size_t k = 0; k < diagonal.size(); ++k) {
+    if (diagonal[k] == 0.0) return q[k];
+  }
+  return -1;
+}
+
+void UmfpackSolver::FreeNumeric() {
+  if (numeric_ != nullptr) umfpack_di_free_numeric(&numeric_);
+  numeric_ = nullptr;
+}
+
+void UmfpackSolver::Clear() {
+  FreeNumeric();
+  if (symbolic_ != nullptr) umfpack_di_free_symbolic(&symbolic_);
+  symbolic_ = nullptr;
+  pattern_.Clear();
+}
+
+}  // namespace mc

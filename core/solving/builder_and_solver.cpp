@@ -1,0 +1,458 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "core/solving/builder_and_solver.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <map>
+
+#include "core/model/master_slave_constraint.h"
+#include "core/model/model_part.h"
+#include "core/solving/parallel_utilities.h"
+#include "core/solving/scheme.h"
+#include "core/utilities/logger.h"
+
+namespace mc {
+
+namespace {
+
+/// Adds the wall-clock time of its scope to an accumulator.
+class ScopedTimer {
+ public:
+  explicit ScopedTimer(double& seconds) : seconds_(seconds), start_(std::chrono::steady_clock::now()) {}
+  ~ScopedTimer() {
+    seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+
+ private:
+  double& seconds_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+bool DofLess(const Dof* a, const Dof* b) {
+  if (a->node->Id() != b->node->Id()) return a->node->Id() < b->node->Id();
+  return a->variable->Key() < b->variable->Key();
+}
+
+std::string DofName(const Dof& dof) { return Concat(dof.variable->Name(), " of node ", dof.node->Id()); }
+
+}  // namespace
+
+BuilderAndSolver::BuilderAndSolver(std::shared_ptr<LinearSolver> linear_solver)
+    : linear_solver_(std::move(linear_solver)) {}
+
+BuilderAndSolver::~BuilderAndSolver() = default;
+
+// DoFs ------------------------------------------------------------------------------------------
+
+void BuilderAndSolver::SetUpDofSet(ModelPart& model_part, const Scheme& scheme) {
+  ScopedTimer timer(timings_.dof_setup);
+  const ProcessInfo& info = model_part.GetProcessInfo();
+  std::vector<std::vector<Dof*>> per_thread(static_cast<std::size_t>(omp_get_max_threads()));
+  ForEachActiveEntity(model_part, [&](Entity& e) {
+    static thread_local DofsVectorType local;
+    scheme.GetDofList(e, local, info);
+    auto& mine = per_thread[static_cast<std::size_t>(omp_get_thread_num())];
+    mine.insert(mine.end(), local.begin(), local.end());
+  });
+  dofs_.clear();
+  for (auto& v : per_thread) {
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+    dofs_.insert(dofs_.end(), v.begin(), v.end());
+  }
+  for (const auto& c : constraints_) {
+    if (!c->IsActive()) continue;
+    dofs_.push_back(&c->Slave());
+    dofs_.insert(dofs_.end(), c->Masters().begin(), c->Masters().end());
+  }
+  std::sort(dofs_.begin(), dofs_.end(), DofLess);
+  dofs_.erase(std::unique(dofs_.begin(), dofs_.end()), dofs_.end());
+  numbered_ = false;
+  pattern_valid_ = false;
+  if (echo_level_ >= 2) Logger::Detail(Concat(Name(), " builder: ", dofs_.size(), " DoFs"));
+}
+
+void BuilderAndSolver::SetUpSystem() {
+  ScopedTimer timer(timings_.dof_setup);
+  slave_of_.clear();
+  for (const auto& c : constraints_) {
+    if (!c->IsActive()) continue;
+    const Dof& s = c->Slave();
+    if (!std::binary_search(dofs_.begin(), dofs_.end(), &c->Slave(), DofLess) ||
+        std::any_of(c->Masters().begin(), c->Masters().end(),
+                    [&](Dof* m) { return !std::binary_search(dofs_.begin(), dofs_.end(), m, DofLess); }))
+      throw Error(Concat("master-slave constraint ", c->Id(),
+                         " uses DoFs outside the DoF set: call SetUpDofSet after adding constraints"));
+    auto [it, inserted] = slave_of_.emplace(&s, c.get());
+    if (!inserted)
+      throw InputError(Concat("master-slave constraints ", it->second->Id(), " and ", c->Id(), " both constrain ",
+                              DofName(s), "; a DoF may be the slave of one constraint only"));
+  }
+  for (const auto& c : constraints_) {
+    if (!c->IsActive()) continue;
+    for (const Dof* m : c->Masters()) {
+      auto it = slave_of_.find(m);
+      if (it != slave_of_.end())
+        throw InputError(Concat("master-slave constraint ", c->Id(), ": master ", DofName(*m),
+                                " is the slave of constraint ", it->second->Id(),
+                                " (chained constraints are not supported)"));
+    }
+  }
+  NumberDofs();
+  const std::size_t n = dofs_.size();
+  dofs_by_equation_.assign(n, nullptr);
+  fixed_at_numbering_.assign(n, 0);
+  for (Dof* d : dofs_) {
+    assert(d->equation_id >= 0 && static_cast<std::size_t>(d->equation_id) < n);
+    dofs_by_equation_[static_cast<std::size_t>(d->equation_id)] = d;
+    fixed_at_numbering_[static_cast<std::size_t>(d->equation_id)] = d->fixed;
+  }
+  rhs_raw_.setZero(static_cast<Eigen::Index>(n));
+  rhs_effective_.setZero(static_cast<Eigen::Index>(n));
+  residual_.setZero(static_cast<Eigen::Index>(n));
+  dx_.setZero(static_cast<Eigen::Index>(n));
+  g_.setZero(static_cast<Eigen::Index>(n_assembled_));
+  b_system_.setZero(static_cast<Eigen::Index>(n_system_));
+  x_system_.setZero(static_cast<Eigen::Index>(n_system_));
+  numbered_ = true;
+  constraints_changed_ = false;
+  pattern_valid_ = false;
+  if (echo_level_ >= 2)
+    Logger::Detail(Concat(Name(), " builder: ", n, " DoFs, ", n_system_, " unknowns, ", slave_of_.size(),
+                          " constrained DoFs"));
+}
+
+// Constraints -----------------------------------------------------------------------------------
+
+void BuilderAndSolver::AddConstraint(std::shared_ptr<const MasterSlaveConstraint> constraint) {
+  constraints_.push_back(std::move(constraint));
+  constraints_changed_ = true;
+}
+
+void BuilderAndSolver::ClearConstraints() {
+  constraints_.clear();
+  constraints_changed_ = true;
+}
+
+// Pattern ---------------------------------------------------------------------------------------
+
+void BuilderAndSolver::PrepareBuild() {
+  if (!numbered_ || constraints_changed_ || NumberingIsStale()) SetUpSystem();
+  for (const auto& [slave, c] : slave_of_)
+    if (slave->fixed)
+      throw InputError(Concat("master-slave constraint ", c->Id(), ": its slave ", DofName(*slave),
+                              " is fixed; fix the masters instead"));
+}
+
+void BuilderAndSolver::BuildPattern(ModelPart& model_part) {
+  ScopedTimer timer(timings_.sparsity);
+  const int n = static_cast<int>(n_assembled_);
+  const ProcessInfo& info = model_part.GetProcessInfo();
+  std::vector<std::vector<int>> columns(static_cast<std::size_t>(n));
+  for (int j = 0; j < n; ++j) columns[static_cast<std::size_t>(j)].push_back(j);  // diagonal always present
+  std::vector<omp_lock_t> locks(static_cast<std::size_t>(n));
+  for (auto& l : locks) omp_init_lock(&l);
+  ForEachActiveEntity(model_part, [&](Entity& e) {
+    static thread_local EquationIdVectorType ids;
+    e.EquationIdVector(ids, info);
+    for (const auto J : ids) {
+      if (J < 0 || J >= n) continue;
+      auto& column = columns[static_cast<std::size_t>(J)];
+      omp_set_lock(&locks[static_cast<std::size_t>(J)]);
+      for (const auto I : ids) {
+        if (I < 0 || I >= n) continue;
+        auto pos = std::lower_bound(column.begin(), column.end(), static_cast<int>(I));
+        if (pos == column.end() || *pos != I) column.insert(pos, static_cast<int>(I));
+      }
+      omp_unset_lock(&locks[static_cast<std::size_t>(J)]);
+    }
+  });
+  for (auto& l : locks) omp_destroy_lock(&l);
+
+  SparseMatrix& target = constraints_.empty() ? A_ : K_;
+  std::size_t nnz = 0;
+  for (const auto& c : columns) nnz += c.size();
+  target = SparseMatrix(n, n);
+  target.resizeNonZeros(static_cast<Eigen::Index>(nnz));
+  int* outer = target.outerIndexPtr();
+  int* inner = target.innerIndexPtr();
+  outer[0] = 0;
+  for (int j = 0; j < n; ++j) {
+    const auto& c = columns[static_cast<std::size_t>(j)];
+    std::copy(c.begin(), c.end(), inner + outer[j]);
+    outer[j + 1] = outer[j] + static_cast<int>(c.size());
+  }
+  std::fill(target.valuePtr(), target.valuePtr() + nnz, 0.0);
+  if (!constraints_.empty()) BuildConstraintMatrix();
+  ++pattern_builds_;
+  ++pattern_version_;
+  pattern_valid_ = true;
+  if (echo_level_ >= 2) Logger::Detail(Concat(Name(), " builder: sparsity pattern with ", nnz, " entries"));
+}
+
+void BuilderAndSolver::BuildConstraintMatrix() {
+  std::vector<Eigen::Triplet<double, int>> entries;
+  entries.reserve(n_assembled_ + 4 * slave_of_.size());
+  for (std::size_t i = 0; i < n_assembled_; ++i) {
+    const Dof* dof = dofs_by_equation_[i];
+    auto it = slave_of_.find(dof);
+    if (it == slave_of_.end()) {
+      entries.emplace_back(static_cast<int>(i), static_cast<int>(i), 1.0);
+      continue;
+    }
+    const MasterSlaveConstraint& c = *it->second;
+    for (std::size_t k = 0; k < c.Masters().size(); ++k) {
+      const auto m = c.Masters()[k]->equation_id;
+      if (m < static_cast<std::int64_t>(n_system_))  // fixed masters (elimination) have no unknown
+        entries.emplace_back(static_cast<int>(i), static_cast<int>(m), c.Weights()[k]);
+    }
+  }
+  T_ = SparseMatrix(static_cast<Eigen::Index>(n_assembled_), static_cast<Eigen::Index>(n_system_));
+  T_.setFromTriplets(entries.begin(), entries.end());
+  T_.makeCompressed();
+}
+
+// Assembly --------------------------------------------------------------------------------------
+
+void BuilderAndSolver::Assemble(Scheme& scheme, ModelPart& model_part, Mode mode) {
+  const bool lhs = mode != Mode::kRhs;
+  const bool rhs = mode != Mode::kLhs;
+  SparseMatrix& target = constraints_.empty() ? A_ : K_;
+  if (lhs) std::fill(target.valuePtr(), target.valuePtr() + target.nonZeros(), 0.0);
+  if (rhs) rhs_raw_.setZero();
+  const int* outer = target.outerIndexPtr();
+  const int* inner = target.innerIndexPtr();
+  double* values = target.valuePtr();
+  double* b = rhs_raw_.data();
+  const std::int64_t n_matrix = static_cast<std::int64_t>(n_assembled_);
+  const std::int64_t n_all = static_cast<std::int64_t>(dofs_.size());
+  const ProcessInfo& info = model_part.GetProcessInfo();
+
+  ForEachActiveEntity(model_part, [&](Entity& e) {
+    static thread_local Matrix local_lhs;
+    static thread_local Vector local_rhs;
+    static thread_local EquationIdVectorType ids;
+    if (mode == Mode::kBoth)
+      scheme.CalculateSystemContributions(e, local_lhs, local_rhs, ids, info);
+    else if (lhs)
+      scheme.CalculateLHSContribution(e, local_lhs, ids, info);
+    else
+      scheme.CalculateRHSContribution(e, local_rhs, ids, info);
+    const auto n = static_cast<Eigen::Index>(ids.size());
+    if ((lhs && (local_lhs.rows() != n || local_lhs.cols() != n)) || (rhs && local_rhs.size() != n))
+      throw Error(Concat(e.Info(), " ", e.Id(), ": local system of size ", lhs ? local_lhs.rows() : local_rhs.size(),
+                         " for ", n, " equation ids"));
+    for (const auto id : ids)
+      if (id < 0 || id >= n_all)
+        throw Error(Concat(e.Info(), " ", e.Id(), " has a DoF outside the DoF set: call SetUpDofSet after "
+                           "changing elements, conditions or their DoFs"));
+    if (rhs) {
+      for (Eigen::Index i = 0; i < n; ++i) {
+#pragma omp atomic
+        b[ids[static_cast<std::size_t>(i)]] += local_rhs[i];
+      }
+    }
+    if (!lhs) return;
+    for (Eigen::Index j = 0; j < n; ++j) {
+      const auto J = ids[static_cast<std::size_t>(j)];
+      if (J >= n_matrix) continue;
+      const int* first = inner + outer[J];
+      const int* last = inner + outer[J + 1];
+      for (Eigen::Index i = 0; i < n; ++i) {
+        const auto I = ids[static_cast<std::size_t>(i)];
+        if (I >= n_matrix) continue;
+        const int* pos = std::lower_bound(first, last, static_cast<int>(I));
+        assert(pos != last && *pos == I);
+#pragma omp atomic
+        values[pos - inner] += local_lhs(i, j);
+      }
+    }
+  });
+}
+
+void BuilderAndSolver::FinishResidual() {
+  rhs_effective_ = rhs_raw_;
+  for (const auto& c : constraints_) {
+    if (!c->IsActive()) continue;
+    const auto s = c->Slave().equation_id;
+    for (std::size_t k = 0; k < c->Masters().size(); ++k)
+      rhs_effective_[c->Masters()[k]->equation_id] += c->Weights()[k] * rhs_effective_[s];
+    rhs_effective_[s] = 0.0;
+  }
+  residual_ = rhs_effective_;
+  for (const Dof* d : dofs_)
+    if (d->fixed) residual_[d->equation_id] = 0.0;
+}
+
+void BuilderAndSolver::ReduceSystem(Mode mode) {
+  const bool lhs = mode != Mode::kRhs;
+  const bool rhs = mode != Mode::kLhs;
+  if (constraints_.empty()) {
+    if (rhs) b_system_ = residual_.head(static_cast<Eigen::Index>(n_system_));
+    return;
+  }
+  g_.setZero();
+  for (const auto& c : constraints_)
+    if (c->IsActive()) g_[c->Slave().equation_id] = c->Violation();
+  if (lhs) {
+    const SparseMatrix KT = K_ * T_;
+    A_ = T_.transpose() * KT;
+    A_.makeCompressed();
+  }
+  if (rhs) {
+    Vector r = rhs_raw_.head(static_cast<Eigen::Index>(n_assembled_));
+    r.noalias() -= K_ * g_;
+    b_system_.noalias() = T_.transpose() * r;
+  }
+}
+
+void BuilderAndSolver::Build(Scheme& scheme, ModelPart& model_part) {
+  PrepareBuild();
+  if (!pattern_valid_) BuildPattern(model_part);
+  ScopedTimer timer(timings_.build);
+  Assemble(scheme, model_part, Mode::kBoth);
+  FinishResidual();
+  ReduceSystem(Mode::kBoth);
+  ApplyDirichletConditions(true, true);
+  CheckEmptyColumns();
+}
+
+void BuilderAndSolver::BuildLHS(Scheme& scheme, ModelPart& model_part) {
+  PrepareBuild();
+  if (!pattern_valid_) BuildPattern(model_part);
+  ScopedTimer timer(timings_.build);
+  Assemble(scheme, model_part, Mode::kLhs);
+  ReduceSystem(Mode::kLhs);
+  ApplyDirichletConditions(true, false);
+  CheckEmptyColumns();
+}
+
+void BuilderAndSolver::BuildRHS(Scheme& scheme, ModelPart& model_part) {
+  PrepareBuild();
+  ScopedTimer timer(timings_.build);
+  Assemble(scheme, model_part, Mode::kRhs);
+  FinishResidual();
+  if (pattern_valid_ || constraints_.empty()) {
+    ReduceSystem(Mode::kRhs);
+    ApplyDirichletConditions(false, true);
+  }
+}
+
+// Singular systems ------------------------------------------------------------------------------
+
+void BuilderAndSolver::CheckEmptyColumns() const {
+  std::vector<const Dof*> empty;
+  const int* outer = A_.outerIndexPtr();
+  const double* values = A_.valuePtr();
+  for (Eigen::Index j = 0; j < A_.outerSize(); ++j) {
+    bool any = false;
+    for (int p = outer[j]; p < outer[j + 1] && !any; ++p) any = values[p] != 0.0;
+    if (!any) empty.push_back(dofs_by_equation_[static_cast<std::size_t>(j)]);
+  }
+  if (!empty.empty()) ThrowSingular(empty, "");
+}
+
+void BuilderAndSolver::ThrowSingular(const std::vector<const Dof*>& dofs, const std::string& detail) const {
+  constexpr std::size_t kMaxListed = 10;
+  // Group the first DoFs by variable, keeping the order in which the variables appear.
+  std::vector<std::pair<std::string, std::vector<IndexType>>> groups;
+  for (std::size_t i = 0; i < std::min(dofs.size(), kMaxListed); ++i) {
+    const std::string& name = dofs[i]->variable->Name();
+    auto it = std::find_if(groups.begin(), groups.end(), [&](const auto& g) { return g.first == name; });
+    if (it == groups.end()) {
+      groups.push_back({name, {}});
+      it = groups.end() - 1;
+    }
+    it->second.push_back(dofs[i]->node->Id());
+  }
+  std::string list;
+  for (const auto& [name, nodes] : groups) {
+    if (!list.empty()) list += "; ";
+    list += name + (nodes.size() == 1 ? " of node " : " of nodes ");
+    for (std::size_t k = 0; k < nodes.size(); ++k) list += (k ? ", " : "") + std::to_string(nodes[k]);
+  }
+  if (dofs.size() > kMaxListed) list += Concat(" and ", dofs.size() - kMaxListed, " more DoFs");
+  const bool one = dofs.size() == 1;
+  std::string message = detail.empty() ? Concat("singular system: no stiffness for ", list)
+                                       : Concat("singular system: zero pivot at ", list);
+  message += one ? " (is it constrained?)" : " (are they constrained?)";
+  if (!detail.empty()) message += Concat("; linear solver: ", detail);
+  throw SolutionError(message);
+}
+
+// Solve -----------------------------------------------------------------------------------------
+
+void BuilderAndSolver::SolveSystem() {
+  if (!linear_solver_) throw Error(Concat(Name(), " builder: no linear solver was given"));
+  {
+    ScopedTimer timer(timings_.solve);
+    if (solver_pattern_version_ != pattern_version_) {
+      linear_solver_->Initialize(A_);
+      solver_pattern_version_ = pattern_version_;
+    }
+    x_system_.setZero(static_cast<Eigen::Index>(n_system_));
+    try {
+      linear_solver_->Solve(A_, x_system_, b_system_);
+    } catch (const SingularMatrixError& e) {
+      const long eq = e.Equation();
+      if (eq >= 0 && static_cast<std::size_t>(eq) < n_system_) ThrowSingular({dofs_by_equation_[eq]}, e.what());
+      throw SolutionError(Concat("singular system; linear solver: ", e.what()));
+    }
+  }
+  if (!x_system_.allFinite())
+    throw SolutionError(Concat("linear solver ", linear_solver_->Name(), " returned non-finite values for ",
+                               n_system_, " unknowns"));
+  const auto n_matrix = static_cast<Eigen::Index>(n_assembled_);
+  if (constraints_.empty()) {
+    dx_.head(n_matrix) = x_system_;
+  } else {
+    dx_.head(n_matrix).noalias() = T_ * x_system_;
+    dx_.head(n_matrix) += g_;
+  }
+  dx_.tail(dx_.size() - n_matrix).setZero();
+  for (const Dof* d : dofs_)
+    if (d->fixed) dx_[d->equation_id] = 0.0;
+}
+
+void BuilderAndSolver::BuildAndSolve(Scheme& scheme, ModelPart& model_part) {
+  Build(scheme, model_part);
+  SolveSystem();
+}
+
+void BuilderAndSolver::BuildRHSAndSolve(Scheme& scheme, ModelPart& model_part) {
+  const bool had_pattern = pattern_valid_;
+  BuildRHS(scheme, model_part);
+  if (!had_pattern || !pattern_valid_) {
+    Build(scheme, model_part);  // no matrix to reuse yet
+  }
+  SolveSystem();
+}
+
+// Reactions -------------------------------------------------------------------------------------
+
+void BuilderAndSolver::CalculateReactions(Scheme& scheme, ModelPart& model_part) {
+  BuildRHS(scheme, model_part);
+  WriteReactions();
+}
+
+void BuilderAndSolver::WriteReactions() {
+  for (const Dof* d : dofs_)
+    if (d->fixed && d->HasReaction()) d->ReactionValue() = -rhs_effective_[d->equation_id];
+}
+
+void BuilderAndSolver::Clear() {
+  dofs_.clear();
+  dofs_by_equation_.clear();
+  slave_of_.clear();
+  A_ = SparseMatrix();
+  K_ = SparseMatrix();
+  T_ = SparseMatrix();
+  numbered_ = false;
+  pattern_valid_ = false;
+  solver_pattern_version_ = -1;
+  if (linear_solver_) linear_solver_->Clear();
+}
+
+}  // namespace mc

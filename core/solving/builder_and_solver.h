@@ -1,0 +1,167 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "core/linear_solvers/linear_solver.h"
+#include "core/linear_solvers/sparse_types.h"
+#include "core/model/dof.h"
+
+namespace mc {
+
+class ModelPart;
+class Scheme;
+class MasterSlaveConstraint;
+
+/// Collects the DoFs, numbers them, assembles the global system from the entities' local
+/// contributions and solves it. Derived classes decide the numbering and how fixed DoFs are
+/// imposed (BlockBuilderAndSolver, EliminationBuilderAndSolver).
+///
+/// Vectors seen by strategies, schemes and criteria (`Residual`, `Increment`) are full-size
+/// and indexed by Dof::equation_id, fixed and slave DoFs included, whatever the numbering of
+/// the system actually solved.
+///
+/// The sparsity pattern is built once after each SetUpSystem (DoF set or numbering change)
+/// and reused: later builds zero the values and accumulate into them in parallel (OpenMP over
+/// elements then conditions, per-column binary search, atomic adds).
+///
+/// Master-slave constraints u_s = T u_m + c are eliminated: with T the map from the system
+/// unknowns to the assembled ones and g the current constraint violation,
+///   A = T^T K T,  b = T^T (r - K g),  dx = T x + g,
+/// so every constraint holds exactly after each solve.
+class BuilderAndSolver {
+ public:
+  /// Cumulative wall-clock seconds, for benchmarks.
+  struct Timings {
+    double dof_setup = 0.0;  ///< SetUpDofSet and numbering
+    double sparsity = 0.0;   ///< pattern (and constraint matrix) construction
+    double build = 0.0;      ///< assembly, constraint reduction and Dirichlet conditions
+    double solve = 0.0;      ///< linear solver (symbolic and numeric)
+  };
+
+  /// `linear_solver` may be null for builders that only assemble residuals (explicit).
+  explicit BuilderAndSolver(std::shared_ptr<LinearSolver> linear_solver);
+  BuilderAndSolver(const BuilderAndSolver&) = delete;
+  BuilderAndSolver& operator=(const BuilderAndSolver&) = delete;
+  virtual ~BuilderAndSolver();
+
+  /// The settings name ("block", "elimination").
+  virtual std::string Name() const = 0;
+  void SetEchoLevel(int level) noexcept { echo_level_ = level; }
+  int GetEchoLevel() const noexcept { return echo_level_; }
+
+  // DoFs ----------------------------------------------------------------------------------------
+  /// The DoFs of every active element and condition (and of the constraints), sorted by node
+  /// id and variable, without duplicates.
+  void SetUpDofSet(ModelPart& model_part, const Scheme& scheme);
+  /// Equation ids, constraint bookkeeping; the pattern is rebuilt on the next build.
+  void SetUpSystem();
+  const std::vector<Dof*>& GetDofSet() const noexcept { return dofs_; }
+  std::size_t NumberOfDofs() const noexcept { return dofs_.size(); }
+  /// Number of unknowns of the linear system solved.
+  std::size_t SystemSize() const noexcept { return n_system_; }
+  /// The DoF with this equation id.
+  const Dof& DofOfEquation(std::size_t equation_id) const { return *dofs_by_equation_[equation_id]; }
+
+  // Constraints ---------------------------------------------------------------------------------
+  /// Their DoFs join the DoF set at the next SetUpDofSet; the numbering is redone at the next
+  /// build.
+  void AddConstraint(std::shared_ptr<const MasterSlaveConstraint> constraint);
+  void ClearConstraints();
+  const std::vector<std::shared_ptr<const MasterSlaveConstraint>>& Constraints() const noexcept {
+    return constraints_;
+  }
+
+  // Build and solve -----------------------------------------------------------------------------
+  void Build(Scheme& scheme, ModelPart& model_part);
+  void BuildLHS(Scheme& scheme, ModelPart& model_part);
+  void BuildRHS(Scheme& scheme, ModelPart& model_part);
+  /// Solves the system last built (A x = b), fills Increment(). Throws SolutionError naming the
+  /// DoFs when the system is singular.
+  void SolveSystem();
+  void BuildAndSolve(Scheme& scheme, ModelPart& model_part);
+  /// Rebuilds the residual only and solves with the matrix of the last build.
+  void BuildRHSAndSolve(Scheme& scheme, ModelPart& model_part);
+  /// Rebuilds the residual at the current state and writes REACTION = -(f_ext - f_int) at the
+  /// fixed DoFs: the force the support exerts, which balances the loads.
+  void CalculateReactions(Scheme& scheme, ModelPart& model_part);
+  /// Reactions from the residual of the last build (no rebuild).
+  void WriteReactions();
+
+  const SparseMatrix& SystemMatrix() const noexcept { return A_; }
+  const Vector& SystemRhs() const noexcept { return b_system_; }
+  /// f_ext - f_int of the last build with constraint forces moved to the masters, zero at
+  /// fixed and slave DoFs: what residual criteria measure.
+  const Vector& Residual() const noexcept { return residual_; }
+  Vector& Residual() noexcept { return residual_; }
+  /// The increment of every DoF from the last solve (zero at fixed DoFs).
+  const Vector& Increment() const noexcept { return dx_; }
+  Vector& Increment() noexcept { return dx_; }
+
+  LinearSolver* GetLinearSolver() const noexcept { return linear_solver_.get(); }
+  const Timings& GetTimings() const noexcept { return timings_; }
+  void ResetTimings() noexcept { timings_ = Timings{}; }
+  /// Number of times the sparsity pattern has been built (tests check the reuse).
+  int PatternBuildCount() const noexcept { return pattern_builds_; }
+  /// Forces a new pattern at the next build (e.g. after contact pairs changed the connectivity).
+  void InvalidatePattern() noexcept { pattern_valid_ = false; }
+  /// Frees the system, the DoF set and the factorization.
+  virtual void Clear();
+
+ protected:
+  /// Sets Dof::equation_id for every DoF of `dofs_` and `n_assembled_` (DoFs whose rows are
+  /// assembled: ids [0, n_assembled_)) and `n_system_` (unknowns solved: ids [0, n_system_)
+  /// when there are no constraints).
+  virtual void NumberDofs() = 0;
+  /// Whether the numbering depends on fixity that changed since NumberDofs.
+  virtual bool NumberingIsStale() const { return false; }
+  /// Imposes fixed (and slave) DoFs on A_ / b_system_ after assembly and reduction.
+  virtual void ApplyDirichletConditions(bool lhs, bool rhs) {}
+
+  bool IsSlave(const Dof& dof) const { return slave_of_.count(&dof) > 0; }
+  /// Fixity of each equation when NumberDofs ran.
+  std::vector<char> fixed_at_numbering_;
+  std::vector<Dof*> dofs_;
+  std::size_t n_assembled_ = 0;
+  std::size_t n_system_ = 0;
+  SparseMatrix A_;
+  Vector b_system_;
+  int echo_level_ = 0;
+
+ private:
+  enum class Mode { kBoth, kLhs, kRhs };
+  void PrepareBuild();
+  void BuildPattern(ModelPart& model_part);
+  void BuildConstraintMatrix();
+  void Assemble(Scheme& scheme, ModelPart& model_part, Mode mode);
+  void FinishResidual();
+  void ReduceSystem(Mode mode);
+  void CheckEmptyColumns() const;
+  [[noreturn]] void ThrowSingular(const std::vector<const Dof*>& dofs, const std::string& detail) const;
+
+  std::shared_ptr<LinearSolver> linear_solver_;
+  std::vector<std::shared_ptr<const MasterSlaveConstraint>> constraints_;
+  std::unordered_map<const Dof*, const MasterSlaveConstraint*> slave_of_;
+  std::vector<Dof*> dofs_by_equation_;
+  bool numbered_ = false;
+  bool constraints_changed_ = false;
+  bool pattern_valid_ = false;
+  int pattern_builds_ = 0;
+  long pattern_version_ = 0;
+  long solver_pattern_version_ = -1;
+
+  SparseMatrix K_;       ///< assembled matrix when constraints are reduced into A_
+  SparseMatrix T_;       ///< n_assembled x n_system constraint map
+  Vector g_;             ///< constraint violations (n_assembled)
+  Vector rhs_raw_;       ///< f_ext - f_int for every DoF
+  Vector rhs_effective_; ///< rhs_raw_ with slave entries moved to the masters
+  Vector residual_;
+  Vector x_system_;
+  Vector dx_;
+  Timings timings_;
+};
+
+}  // namespace mc

@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <memory>
+
+#include "core/solving/block_builder_and_solver.h"
+#include "core/solving/explicit_central_differences_scheme.h"
+#include "core/solving/solving_strategy.h"
+
+namespace mc {
+
+/// Explicit dynamics: per step one residual assembly and a nodal update with the lumped mass,
+/// no linear system. The lumped mass of every DoF is assembled once (and again when the DoFs
+/// are reformed) from the entities' mass matrices with COMPUTE_LUMPED_MASS_MATRIX set; each
+/// node's mass is written to its NODAL_MASS value. The time step comes from `time_stepping`:
+/// the automatic critical time step (`time_step_prediction_level` > 0) is not implemented.
+class ExplicitStrategy : public SolvingStrategy {
+ public:
+  /// Throws NotImplementedError for `time_step_prediction_level` > 0.
+  ExplicitStrategy(ModelPart& model_part, std::shared_ptr<ExplicitCentralDifferencesScheme> scheme,
+                   bool compute_reactions = true, bool reform_dofs_at_each_step = false, bool move_mesh_flag = true,
+                   int time_step_prediction_level = 0);
+
+  std::string Name() const override { return "explicit"; }
+  void Initialize() override;
+  void InitializeSolutionStep() override;
+  bool SolveSolutionStep() override;
+  void FinalizeSolutionStep() override;
+  void Clear() override;
+  void Check() const override;
+
+  /// Lumped mass of each DoF, by equation id.
+  const Vector& LumpedMass() const noexcept { return mass_; }
+  const BuilderAndSolver& GetBuilderAndSolver() const noexcept { return builder_; }
+
+ private:
+  void SetUpDofsAndMass();
+
+  std::shared_ptr<ExplicitCentralDifferencesScheme> scheme_;
+  BlockBuilderAndSolver builder_{nullptr};  ///< DoF numbering and residual assembly only
+  bool compute_reactions_;
+  bool reform_dofs_;
+  bool dofs_ready_ = false;
+  Vector mass_;
+};
+
+}  // namespace mc

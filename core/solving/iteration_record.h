@@ -1,0 +1,21 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <vector>
+
+#include "core/solving/convergence_criteria.h"
+
+namespace mc {
+
+/// One Newton iteration as the strategy saw it: what Python prints as the convergence table
+/// and tests use to measure convergence rates.
+struct IterationRecord {
+  int iteration = 0;
+  double residual_norm = 0.0;   ///< |f_ext - f_int| over free DoFs at the start of the iteration
+  double increment_norm = 0.0;  ///< |du| applied in the iteration
+  double step_length = 1.0;     ///< line-search factor applied to the Newton increment
+  std::vector<CriterionValue> criteria;
+  bool converged = false;
+};
+
+}  // namespace mc

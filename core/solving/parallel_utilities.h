@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <exception>
+
+#include "core/model/model_part.h"
+
+namespace mc {
+
+/// Runs f(item) for every item of a node/element/condition container with OpenMP. An
+/// exception thrown in any thread stops nothing else but is rethrown (the first one) after
+/// the loop, since exceptions may not cross an OpenMP region.
+template <class Container, class F>
+void ParallelForEachEntity(const Container& items, F&& f) {
+  const long n = static_cast<long>(items.size());  // sorts the container before the threads start
+  auto first = items.begin();
+  std::exception_ptr error;
+#pragma omp parallel for schedule(guided, 16)
+  for (long i = 0; i < n; ++i) {
+    try {
+      f(*first[i]);
+    } catch (...) {
+#pragma omp critical(mc_parallel_error)
+      if (!error) error = std::current_exception();
+    }
+  }
+  if (error) std::rethrow_exception(error);
+}
+
+/// f(entity) for every active element, then every active condition.
+template <class F>
+void ForEachActiveEntity(ModelPart& model_part, F&& f) {
+  ParallelForEachEntity(model_part.Elements(), [&](Entity& e) {
+    if (e.IsActive()) f(e);
+  });
+  ParallelForEachEntity(model_part.Conditions(), [&](Entity& e) {
+    if (e.IsActive()) f(e);
+  });
+}
+
+}  // namespace mc

@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The extension module `mortarcontact._core`.
+#include "custom_python/python_module.h"
+
+namespace py = pybind11;
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "mortarcontact C++ core: kernel, structural substrate and solvers";
+
+  // User mistakes, missing features and failed solutions map to their own Python types so
+  // that the command line can print them without a traceback.
+  static py::exception<mc::Error> error(m, "Error", PyExc_RuntimeError);
+  static py::exception<mc::InputError> input_error(m, "InputError", error.ptr());
+  static py::exception<mc::NotImplementedError> not_implemented(m, "NotImplementedFeatureError", error.ptr());
+  static py::exception<mc::SolutionError> solution_error(m, "SolutionError", error.ptr());
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const mc::InputError& e) {
+      input_error(e.what());
+    } catch (const mc::NotImplementedError& e) {
+      not_implemented(e.what());
+    } catch (const mc::SolutionError& e) {
+      solution_error(e.what());
+    } catch (const mc::Error& e) {
+      error(e.what());
+    }
+  });
+
+  mc::python::AddVariablesToPython(m);
+  mc::python::AddParametersToPython(m);
+  mc::python::AddGeometriesToPython(m);
+  mc::python::AddModelToPython(m);
+  mc::python::AddIoToPython(m);
+  mc::python::AddLinearSolversToPython(m);
+  mc::python::AddSolvingToPython(m);
+  mc::python::AddStructuralToPython(m);
+  mc::python::AddUtilitiesToPython(m);
+  mc::python::ExportRegisteredNames(m);
+  m.def("ExportRegisteredNames", [m]() mutable { mc::python::ExportRegisteredNames(m); },
+        "Re-exports registered variables and flags as module attributes (after loading a plugin).");
+}

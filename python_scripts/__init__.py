@@ -1,0 +1,64 @@
+"""mortarcontact: mortar contact mechanics with a fast C++ core.
+
+``import mortarcontact as mc`` gives the kernel (``mc.Model``, ``mc.Parameters``, variables such
+as ``mc.DISPLACEMENT``), the structural substrate and the analysis stage that runs Kratos-format
+cases (``mc.run("ProjectParameters.json")``).
+"""
+from __future__ import annotations
+
+import atexit
+import os as _os
+
+from . import _core
+from ._core import *  # noqa: F401,F403  (kernel classes, variables and flags)
+from ._core import InputError, NotImplementedFeatureError, SolutionError, Error  # noqa: F401
+
+__version__ = "0.1.0"
+
+_core.RegisterStructuralMechanics()
+_core.ExportRegisteredNames()
+globals().update({name: getattr(_core, name) for name in _core.VariableNames() + _core.FlagNames()})
+
+# The C++ log sink may hold a Python callable; drop it before the interpreter goes away.
+atexit.register(_core.ResetLogSink)
+
+
+def get_cmake_dir() -> str:
+    """Folder of the installed CMake package, for out-of-tree C++ plugins:
+    ``cmake -Dmortarcontact_DIR=$(python -c 'import mortarcontact; print(mortarcontact.get_cmake_dir())')``."""
+    return _os.path.join(_os.path.dirname(__file__), "lib", "cmake", "mortarcontact")
+
+
+def get_include_dir() -> str:
+    """Folder of the installed C++ headers."""
+    return _os.path.join(_os.path.dirname(__file__), "include")
+
+
+def run(project_parameters: str, **kwargs):
+    """Runs a Kratos-format case from its ProjectParameters.json; returns the finished analysis."""
+    from .analysis_stage import run_case
+
+    return run_case(project_parameters, **kwargs)
+
+
+def load_plugin(path: str) -> None:
+    """Loads an out-of-tree C++ plugin (a shared library built against the installed headers and
+    CMake package) and calls its ``extern "C" void mortarcontact_register_plugin()``, which
+    registers its elements, conditions, laws and variables by name. See
+    ``examples/spring_condition_plugin``."""
+    import ctypes
+
+    if not _os.path.isfile(path):
+        raise InputError(f"plugin {path} not found")
+    library = ctypes.CDLL(_os.path.abspath(path), mode=ctypes.RTLD_GLOBAL)
+    try:
+        register = library.mortarcontact_register_plugin
+    except AttributeError:
+        raise InputError(f"plugin {path} has no function mortarcontact_register_plugin()") from None
+    register()
+    _core.ExportRegisteredNames()
+    globals().update({name: getattr(_core, name) for name in _core.VariableNames() + _core.FlagNames()})
+    _loaded_plugins.append(library)
+
+
+_loaded_plugins = []

@@ -1,0 +1,3 @@
+from mortarcontact.cli import main
+
+raise SystemExit(main())

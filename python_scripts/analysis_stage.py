@@ -1,0 +1,185 @@
+"""The analysis stage: runs a Kratos-format case in the order of spec 1.7.
+
+construct:  read and migrate ProjectParameters.json, choose and validate the solver, add variables
+Initialize: import mdpa and materials, add DoFs, create the processes (lists in alphabetical
+            order of their names, file order inside a list; outputs last), ExecuteInitialize,
+            solver Initialize, Check, ExecuteBeforeSolutionLoop
+each step:  advance time, ExecuteInitializeSolutionStep, solver InitializeSolutionStep, Predict,
+            SolveSolutionStep, solver FinalizeSolutionStep, ExecuteFinalizeSolutionStep, output
+Finalize:   ExecuteFinalize, solver Finalize
+"""
+from __future__ import annotations
+
+import os
+import time as wallclock
+from contextlib import contextmanager
+
+from . import _core
+from .processes import create_process
+from .project_parameters import read_project_parameters
+from .solvers import create_solver
+from .utilities import warn
+
+
+class ConvergenceFailure(_core.SolutionError):
+    """Newton did not converge in a step (the message gives the step, time, iterations and norms)."""
+
+
+class StructuralMechanicsAnalysis:
+    """Runs one case. ``model`` may be shared with other stages; ``parameters`` are the migrated
+    project parameters (see ``read_project_parameters``)."""
+
+    def __init__(self, model: _core.Model, parameters: _core.Parameters, *, progress: bool = True,
+                 stop_on_non_convergence: bool = True, case_dir: str | None = None):
+        self.model = model
+        self.parameters = parameters
+        problem_data = parameters["problem_data"]
+        self.echo_level = problem_data["echo_level"].GetInt()
+        self.start_time = problem_data["start_time"].GetDouble()
+        self.end_time = problem_data["end_time"].GetDouble()
+        self.problem_name = problem_data["problem_name"].GetString()
+        self.progress = progress
+        self.stop_on_non_convergence = stop_on_non_convergence
+        self.solver = create_solver(model, parameters["solver_settings"], case_dir=case_dir)
+        self.processes = []
+        self.output_processes = []
+        self.time = self.start_time
+        self.step = 0
+        self.step_log = []  # (step, time, iterations, converged, seconds)
+
+    # -- driver -----------------------------------------------------------------------------
+    def Run(self) -> None:
+        self.Initialize()
+        self.RunSolutionLoop()
+        self.Finalize()
+
+    def Initialize(self) -> None:
+        self.solver.ImportModelPart()
+        self.solver.AddDofs()
+        self.processes = self._create_processes("processes")
+        self.output_processes = self._create_processes("output_processes")
+        for process in self._all_processes():
+            process.ExecuteInitialize()
+        self.solver.Initialize()
+        self.Check()
+        for process in self._all_processes():
+            process.ExecuteBeforeSolutionLoop()
+        self.time = self.start_time
+        self.solver.GetComputingModelPart().ProcessInfo.SetValue(_core.TIME, self.time)
+
+    def Check(self) -> None:
+        self.solver.Check()
+        for process in self._all_processes():
+            process.Check()
+
+    def KeepAdvancingSolutionLoop(self) -> bool:
+        return self.time < self.end_time
+
+    def RunSolutionLoop(self) -> None:
+        with self._progress_display() as advance:
+            while self.KeepAdvancingSolutionLoop():
+                started = wallclock.perf_counter()
+                self.time = self.solver.AdvanceInTime(self.time)
+                self.step += 1
+                self.InitializeSolutionStep()
+                self.solver.Predict()
+                converged = self.solver.SolveSolutionStep()
+                iterations = self.solver.LastIterationCount()
+                if not converged:
+                    self._report_non_convergence()
+                self.FinalizeSolutionStep()
+                self.OutputSolutionStep()
+                self.step_log.append((self.step, self.time, iterations, converged,
+                                      wallclock.perf_counter() - started))
+                advance(self.time, iterations)
+
+    def InitializeSolutionStep(self) -> None:
+        if self.echo_level >= 1 and not self.progress:
+            print(f"STEP {self.step}  TIME {self.time:.6g}")
+        for process in self._all_processes():
+            process.ExecuteInitializeSolutionStep()
+        self.solver.InitializeSolutionStep()
+
+    def FinalizeSolutionStep(self) -> None:
+        self.solver.FinalizeSolutionStep()
+        for process in self._all_processes():
+            process.ExecuteFinalizeSolutionStep()
+
+    def OutputSolutionStep(self) -> None:
+        writing = [p for p in self.output_processes if p.IsOutputStep()]
+        if not writing:
+            return
+        for process in self._all_processes():
+            process.ExecuteBeforeOutputStep()
+        for process in writing:
+            process.PrintOutput()
+        for process in self._all_processes():
+            process.ExecuteAfterOutputStep()
+
+    def Finalize(self) -> None:
+        for process in self._all_processes():
+            process.ExecuteFinalize()
+        self.solver.Finalize()
+
+    # -- helpers ----------------------------------------------------------------------------
+    def _all_processes(self):
+        return [*self.processes, *self.output_processes]
+
+    def _create_processes(self, block: str):
+        if not self.parameters.Has(block):
+            return []
+        lists = self.parameters[block]
+        created = []
+        # Kratos keeps JSON objects sorted, so lists run in alphabetical order of their names.
+        for name in sorted(lists.keys()):
+            if name.startswith("_"):
+                continue
+            items = lists[name]
+            if not items.IsArray():
+                raise _core.InputError(f"{items.Where()}: a process list must be an array")
+            for i in range(items.size()):
+                created.append(create_process(items[i], self.model))
+        return created
+
+    def _report_non_convergence(self) -> None:
+        history = self.solver.LastIterationHistory()
+        last = history[-1] if history else None
+        norms = f"; last iteration: {last}" if last else ""
+        message = (f"step {self.step} (time {self.time:.6g}) did not converge in "
+                   f"{self.solver.LastIterationCount()} iterations{norms}")
+        if self.stop_on_non_convergence:
+            raise ConvergenceFailure(message + ". The results of the last converged step were written.")
+        warn(message)
+
+    @contextmanager
+    def _progress_display(self):
+        if not self.progress:
+            yield lambda t, it: None
+            return
+        from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
+
+        columns = (TextColumn("[bold]{task.description}"), BarColumn(),
+                   TextColumn("t = {task.completed:.4g} / {task.total:.4g}"),
+                   TextColumn("step {task.fields[step]}, {task.fields[iterations]} it"), TimeElapsedColumn())
+        with Progress(*columns, transient=False) as bar:
+            task = bar.add_task(self.problem_name or "analysis", total=self.end_time - self.start_time,
+                                step=0, iterations=0)
+            _core.SetLogSink(lambda level, message: bar.console.print(message, markup=False, highlight=False))
+            try:
+                yield lambda t, it: bar.update(task, completed=min(t, self.end_time) - self.start_time,
+                                               step=self.step, iterations=it)
+            finally:
+                _core.ResetLogSink()
+
+
+def run_case(project_parameters: str, *, progress: bool = True, stop_on_non_convergence: bool = True):
+    """Runs the case of ``project_parameters`` and returns the finished analysis. As in Kratos,
+    relative paths inside the case are relative to the working directory; input files not found
+    there are looked up next to ``project_parameters``."""
+    path = os.path.abspath(project_parameters)
+    parameters = read_project_parameters(path)
+    analysis = StructuralMechanicsAnalysis(_core.Model(), parameters, progress=progress,
+                                           stop_on_non_convergence=stop_on_non_convergence,
+                                           case_dir=os.path.dirname(path))
+    analysis.Run()
+    return analysis

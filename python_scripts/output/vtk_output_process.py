@@ -1,0 +1,368 @@
+"""ParaView output: ``vtk_output_process`` (VTU files + a PVD collection, or XDMF + HDF5).
+
+Kratos' ``vtk_output`` settings are accepted unchanged (spec 1.5). Every file appears
+atomically: VTU and PVD files are written to a temporary name and renamed; the XDMF/HDF5 pair is
+built in a hidden staging folder and moved into place at ``ExecuteFinalize``.
+"""
+from __future__ import annotations
+
+import logging
+import os
+import pathlib
+import shutil
+import tempfile
+from xml.sax.saxutils import quoteattr
+
+import meshio
+import numpy as np
+
+from .. import _core
+from ..process import OutputProcess
+from ..processes._bulk import entity_connectivity, integration_point_means, nodal_flags, nodal_values, variable_by_name
+from ..processes.model_part_resolution import resolve_model_part
+
+LOG = logging.getLogger("mortarcontact")
+
+#: Kratos geometry name -> meshio (VTK) cell type
+VTK_CELL_TYPES = {
+    "Point2D": "vertex", "Point3D": "vertex",
+    "Line2D2": "line", "Line3D2": "line", "Line2D3": "line3", "Line3D3": "line3",
+    "Triangle2D3": "triangle", "Triangle3D3": "triangle", "Triangle2D6": "triangle6", "Triangle3D6": "triangle6",
+    "Quadrilateral2D4": "quad", "Quadrilateral3D4": "quad", "Quadrilateral2D8": "quad8",
+    "Quadrilateral3D8": "quad8", "Quadrilateral2D9": "quad9", "Quadrilateral3D9": "quad9",
+    "Tetrahedra3D4": "tetra", "Tetrahedra3D10": "tetra10",
+    "Hexahedra3D8": "hexahedron", "Hexahedra3D20": "hexahedron20", "Hexahedra3D27": "hexahedron27",
+    "Prism3D6": "wedge",
+}
+
+# Our hexahedra list the vertical mid-edges before the top ones and the face centres as bottom,
+# front, right, back, left, top; VTK lists top edges first and faces as left, right, front, back,
+# bottom, top. Column k of the VTK cell takes our node _VTK_ORDER[k].
+_HEX27_TO_VTK = list(range(12)) + [16, 17, 18, 19, 12, 13, 14, 15, 24, 22, 21, 23, 20, 25, 26]
+_VTK_ORDER = {"hexahedron20": _HEX27_TO_VTK[:20], "hexahedron27": _HEX27_TO_VTK}
+
+
+class _StagedTimeSeriesWriter(meshio.xdmf.TimeSeriesWriter):
+    """meshio's writer, with the HDF5 file next to the XDMF file instead of in the working folder."""
+
+    def __enter__(self):
+        import h5py
+
+        self.h5_filename = str(self.filename.with_suffix(".h5"))
+        self.h5_file = h5py.File(self.h5_filename, "w")
+        return self
+
+
+def _write_text_atomically(path: str, text: str) -> None:
+    folder = os.path.dirname(os.path.abspath(path))
+    handle, temporary = tempfile.mkstemp(prefix=".", suffix=".tmp", dir=folder)
+    try:
+        with os.fdopen(handle, "w") as stream:
+            stream.write(text)
+        os.replace(temporary, path)
+    except BaseException:
+        if os.path.exists(temporary):
+            os.remove(temporary)
+        raise
+
+
+class _PartWriter:
+    """Output of one model part: the file names, its PVD entries or XDMF series, cached cells."""
+
+    def __init__(self, part, folder: str, base_name: str, file_format: str):
+        self.part = part
+        self.folder = folder
+        self.base_name = base_name
+        self.file_format = file_format
+        self.pvd_entries: list[tuple[float, str]] = []
+        self.series = None
+        self.staging = None
+        self.series_mesh_key = None
+        self._cells_key = None
+        self._cells = None
+
+    # --- mesh ----------------------------------------------------------------------------------
+    def cells(self, entity_type: str):
+        """[(meshio type, connectivity as point indices, entity ids)], and whether they are
+        conditions; cached while the numbers of nodes / elements / conditions do not change."""
+        part = self.part
+        key = (entity_type, part.NumberOfNodes(), part.NumberOfElements(), part.NumberOfConditions())
+        if key == self._cells_key:
+            return self._cells
+        use_conditions = entity_type == "condition" or (entity_type == "automatic" and part.NumberOfElements() == 0)
+        node_ids = part.NodeIds()
+        groups = entity_connectivity(part, conditions=use_conditions) if entity_type != "none" else {}
+        blocks = []
+        for geometry, (ids, connectivity) in sorted(groups.items()):
+            cell_type = VTK_CELL_TYPES.get(geometry)
+            if cell_type is None:
+                raise _core.NotImplementedFeatureError(f"vtk_output: geometry {geometry} has no VTK cell type here")
+            index = np.searchsorted(node_ids, connectivity)
+            index = np.minimum(index, max(len(node_ids) - 1, 0))
+            inside = np.all(node_ids[index] == connectivity, axis=1) if len(node_ids) else np.zeros(len(ids), bool)
+            if not np.all(inside):
+                LOG.warning("vtk_output: %d %s of %s use nodes outside the part and are not written",
+                            int(np.count_nonzero(~inside)), "conditions" if use_conditions else "elements",
+                            part.FullName())
+                index, ids = index[inside], ids[inside]
+            if cell_type in _VTK_ORDER:
+                index = index[:, _VTK_ORDER[cell_type]]
+            blocks.append((cell_type, index.astype(np.int64), ids))
+        if not blocks:
+            # A part of nodes only: one vertex per node so that ParaView shows them.
+            blocks.append(("vertex", np.arange(len(node_ids), dtype=np.int64).reshape(-1, 1), node_ids))
+            use_conditions = None
+        self._cells_key, self._cells = key, (blocks, use_conditions)
+        return self._cells
+
+    # --- files ---------------------------------------------------------------------------------
+    def write_vtu(self, label: int, time: float, mesh: meshio.Mesh, binary: bool) -> None:
+        name = f"{self.base_name}_{label}.vtu"
+        handle, temporary = tempfile.mkstemp(prefix=".", suffix=".vtu", dir=self.folder)
+        os.close(handle)
+        try:
+            meshio.vtu.write(temporary, mesh, binary=binary)
+            os.replace(temporary, os.path.join(self.folder, name))
+        except BaseException:
+            if os.path.exists(temporary):
+                os.remove(temporary)
+            raise
+        self.pvd_entries = [(t, f) for t, f in self.pvd_entries if f != name] + [(time, name)]
+        self.write_pvd()
+
+    def write_pvd(self) -> None:
+        lines = ['<?xml version="1.0"?>',
+                 '<VTKFile type="Collection" version="0.1" byte_order="LittleEndian">', "  <Collection>"]
+        lines += [f'    <DataSet timestep="{time!r}" group="" part="0" file={quoteattr(name)}/>'
+                  for time, name in self.pvd_entries]
+        lines += ["  </Collection>", "</VTKFile>", ""]
+        _write_text_atomically(os.path.join(self.folder, f"{self.base_name}.pvd"), "\n".join(lines))
+
+    def write_xdmf(self, time: float, mesh: meshio.Mesh) -> None:
+        mesh_key = (mesh.points.shape, tuple((block.type, block.data.shape) for block in mesh.cells))
+        if self.series is None:
+            self.staging = tempfile.mkdtemp(prefix=f".{self.base_name}.", suffix=".partial", dir=self.folder)
+            path = pathlib.Path(self.staging) / f"{self.base_name}.xdmf"
+            self.series = _StagedTimeSeriesWriter(path).__enter__()
+            self.series.write_points_cells(mesh.points, mesh.cells)
+            self.series_mesh_key = mesh_key
+        elif mesh_key != self.series_mesh_key:
+            raise _core.NotImplementedFeatureError(
+                f"vtk_output: file_format 'xdmf' needs a fixed mesh, but {self.part.FullName()} changed; "
+                "use file_format 'binary' (VTU) for parts whose entities change")
+        self.series.write_data(time, point_data=mesh.point_data, cell_data=mesh.cell_data)
+
+    def close(self) -> None:
+        if self.series is None:
+            return
+        self.series.__exit__(None, None, None)
+        for suffix in (".h5", ".xdmf"):
+            name = f"{self.base_name}{suffix}"
+            os.replace(os.path.join(self.staging, name), os.path.join(self.folder, name))
+        shutil.rmtree(self.staging, ignore_errors=True)
+        self.series = None
+
+
+class VtkOutputProcess(OutputProcess):
+    """Writes one VTU file per output step (``<path>/<prefix><part><postfix>_<step>.vtu``) and a
+    ``.pvd`` collection listing every step with its TIME, rewritten after each step so that
+    ParaView can open it during the run. ``file_format`` ``"xdmf"`` writes one XDMF + HDF5 time
+    series per part instead (mesh fixed in time).
+
+    Cells: the elements of the part (``entity_type`` "automatic": the conditions if there are no
+    elements; a part with neither is written as vertices). Point data: the historical variables
+    ``nodal_solution_step_data_variables`` and the non-historical ``nodal_data_value_variables``
+    (array-3 values as 3-component arrays), ``nodal_flags`` as 0/1 arrays. Cell data:
+    ``gauss_point_variables_extrapolated_to_nodes`` and ``gauss_point_variables_in_elements``
+    are written **per cell as the mean over its integration points** (not extrapolated to the
+    nodes); vectors keep their components, matrices (stress / strain tensors) become 9
+    row-major components; ``element_data_value_variables`` / ``element_flags`` (or the
+    condition ones when conditions are written).
+
+    Keys (default): ``model_part_name`` (required), ``file_format`` ("binary"; "ascii",
+    "xdmf"), ``output_precision`` (7; accepted, meshio chooses the digits),
+    ``output_control_type`` ("step" or "time"), ``output_interval`` (1.0; legacy
+    ``output_frequency``), ``output_sub_model_parts`` (false: true also writes each direct sub
+    model part), ``output_path`` ("VTK_Output"; legacy ``folder_name``),
+    ``save_output_files_in_folder`` (true), ``custom_name_prefix`` / ``custom_name_postfix``
+    (""), ``entity_type`` ("automatic", "element", "condition"), ``write_deformed_configuration``
+    (false: initial coordinates), ``write_ids`` (false), and the variable lists above plus
+    ``condition_data_value_variables`` / ``condition_flags`` ([]).
+    """
+
+    @classmethod
+    def GetDefaultParameters(cls):
+        return _core.Parameters("""{
+            "help": "", "model_part_name": "", "file_format": "binary", "output_precision": 7,
+            "output_control_type": "step", "output_interval": 1.0, "output_frequency": null,
+            "output_sub_model_parts": false, "output_path": "VTK_Output", "folder_name": null,
+            "custom_name_prefix": "", "custom_name_postfix": "", "save_output_files_in_folder": true,
+            "entity_type": "automatic", "write_deformed_configuration": false, "write_ids": false,
+            "nodal_solution_step_data_variables": [], "nodal_data_value_variables": [], "nodal_flags": [],
+            "element_data_value_variables": [], "element_flags": [],
+            "condition_data_value_variables": [], "condition_flags": [],
+            "gauss_point_variables_extrapolated_to_nodes": [], "gauss_point_variables_in_elements": []
+        }""", "defaults")
+
+    def __init__(self, model, settings):
+        super().__init__(model, settings)
+        s = self.settings
+        where = s.Where()
+        if not s["model_part_name"].GetString():
+            raise _core.InputError(f"{where}: vtk_output requires 'model_part_name'")
+        self.file_format = s["file_format"].GetString()
+        if self.file_format not in ("binary", "ascii", "xdmf"):
+            raise _core.InputError(f"{where}: file_format '{self.file_format}' is not one of binary, ascii, xdmf")
+        self.control = s["output_control_type"].GetString()
+        if self.control not in ("step", "time"):
+            raise _core.InputError(f"{where}: output_control_type '{self.control}' is not 'step' or 'time'")
+        interval = s["output_frequency"] if not s["output_frequency"].IsNull() else s["output_interval"]
+        self.interval = interval.GetDouble()
+        if self.interval <= 0.0:
+            raise _core.InputError(f"{where}: the output interval must be positive, got {self.interval}")
+        self.entity_type = s["entity_type"].GetString()
+        if self.entity_type not in ("automatic", "element", "condition"):
+            raise _core.InputError(f"{where}: entity_type '{self.entity_type}' is not automatic, element or condition")
+        folder = s["folder_name"].GetString() if not s["folder_name"].IsNull() else s["output_path"].GetString()
+        self.folder = folder if s["save_output_files_in_folder"].GetBool() else "."
+        lists = ("nodal_solution_step_data_variables", "nodal_data_value_variables", "element_data_value_variables",
+                 "condition_data_value_variables", "gauss_point_variables_extrapolated_to_nodes",
+                 "gauss_point_variables_in_elements")
+        self.variables = {key: [variable_by_name(n) for n in s[key].GetStringArray()] for key in lists}
+        self.flags = {key: [_core.GetFlag(n) for n in s[key].GetStringArray()]
+                      for key in ("nodal_flags", "element_flags", "condition_flags")}
+        self.writers: list[_PartWriter] = []
+        self.step_count = 0
+        self.next_output = None
+
+    # --- process hooks -------------------------------------------------------------------------
+    def ExecuteInitialize(self) -> None:
+        os.makedirs(self.folder, exist_ok=True)
+        root = resolve_model_part(self.model, self.settings["model_part_name"].GetString())
+        parts = [root]
+        if self.settings["output_sub_model_parts"].GetBool():
+            parts += list(root.SubModelParts)
+        prefix = self.settings["custom_name_prefix"].GetString()
+        postfix = self.settings["custom_name_postfix"].GetString()
+        self.writers = [_PartWriter(part, self.folder, f"{prefix}{part.FullName()}{postfix}", self.file_format)
+                        for part in parts]
+
+    def ExecuteBeforeSolutionLoop(self) -> None:
+        if not self.writers:
+            self.ExecuteInitialize()
+        start = self._time() if self.control == "time" else 0.0
+        self.next_output = start + self.interval
+
+    def ExecuteInitializeSolutionStep(self) -> None:
+        self.step_count += 1
+
+    def IsOutputStep(self) -> bool:
+        if self.next_output is None:
+            self.ExecuteBeforeSolutionLoop()
+        current = self._time() if self.control == "time" else float(self.step_count)
+        return current >= self.next_output - 1e-10 * self.interval
+
+    def PrintOutput(self) -> None:
+        if not self.writers:
+            self.ExecuteInitialize()
+        time = self._time()
+        for writer in self.writers:
+            mesh = self._mesh(writer)
+            if self.file_format == "xdmf":
+                writer.write_xdmf(time, mesh)
+            else:
+                writer.write_vtu(self.step_count, time, mesh, binary=self.file_format == "binary")
+        if self.next_output is None:
+            self.ExecuteBeforeSolutionLoop()
+        current = self._time() if self.control == "time" else float(self.step_count)
+        while self.next_output <= current + 1e-10 * self.interval:
+            self.next_output += self.interval
+
+    def ExecuteFinalize(self) -> None:
+        for writer in self.writers:
+            writer.close()
+
+    # --- data ----------------------------------------------------------------------------------
+    def _time(self) -> float:
+        root = self.writers[0].part if self.writers else resolve_model_part(
+            self.model, self.settings["model_part_name"].GetString())
+        return float(root.ProcessInfo.GetValue(_core.TIME))
+
+    def _mesh(self, writer: _PartWriter) -> meshio.Mesh:
+        part = writer.part
+        entity = "none" if part.NumberOfElements() == 0 and part.NumberOfConditions() == 0 else self.entity_type
+        blocks, conditions = writer.cells(entity)
+        deformed = self.settings["write_deformed_configuration"].GetBool()
+        points = np.asarray(part.NodeCoordinates(not deformed), dtype=float)
+        point_data = {}
+        for variable in self.variables["nodal_solution_step_data_variables"]:
+            point_data[variable.Name()] = nodal_values(part, variable, historical=True)
+        for variable in self.variables["nodal_data_value_variables"]:
+            point_data[variable.Name()] = nodal_values(part, variable, historical=False)
+        for flag in self.flags["nodal_flags"]:
+            point_data[flag.Name()] = nodal_flags(part, flag).astype(np.float64)
+        if self.settings["write_ids"].GetBool():
+            point_data["KRATOS_NODE_ID"] = part.NodeIds().astype(np.int64)
+        cell_data = self._cell_data(part, blocks, conditions)
+        cells = [(cell_type, connectivity) for cell_type, connectivity, _ in blocks]
+        return meshio.Mesh(points, cells, point_data=point_data, cell_data=cell_data)
+
+    def _cell_data(self, part, blocks, conditions) -> dict[str, list[np.ndarray]]:
+        if conditions is None:  # vertices standing for nodes: no entity data
+            return {}
+        kind = "condition" if conditions else "element"
+        get = part.GetCondition if conditions else part.GetElement
+        cell_data: dict[str, list[np.ndarray]] = {}
+        gauss = (self.variables["gauss_point_variables_extrapolated_to_nodes"]
+                 + self.variables["gauss_point_variables_in_elements"])
+        for variable in gauss:
+            means = [integration_point_means(part, variable, ids, conditions) for _, _, ids in blocks]
+            width = max((m.shape[1] if m.ndim == 2 else 0) for m in means)
+            if width:  # vectors of different lengths per block: pad to the widest
+                means = [np.pad(m.reshape(len(m), -1), ((0, 0), (0, width - m.reshape(len(m), -1).shape[1])))
+                         for m in means]
+            cell_data[variable.Name()] = means
+        for variable in self.variables[f"{kind}_data_value_variables"]:
+            cell_data[variable.Name()] = [np.asarray([np.asarray(get(int(i)).GetValue(variable), dtype=float)
+                                                      for i in ids]) for _, _, ids in blocks]
+        for flag in self.flags[f"{kind}_flags"]:
+            cell_data[flag.Name()] = [np.asarray([float(get(int(i)).Is(flag)) for i in ids]) for _, _, ids in blocks]
+        if self.settings["write_ids"].GetBool():
+            cell_data[f"KRATOS_{kind.upper()}_ID"] = [ids.astype(np.int64) for _, _, ids in blocks]
+        return cell_data
+
+
+class GidOutputProcess(VtkOutputProcess):
+    """``gid_output_process``: GiD files are not written; the same results go to VTU/PVD files in
+    ``<output_name>_vtk/`` with a warning. Translated keys: ``model_part_name``, ``output_name``,
+    and from ``postprocess_parameters.result_file_configuration``: ``nodal_results``,
+    ``nodal_nonhistorical_results``, ``nodal_flags_results``, ``gauss_point_results``,
+    ``output_control_type`` ("step"/"time"), ``output_frequency`` / ``output_interval``. The
+    other GiD options (``gidpost_flags``, ``file_label``, ``body_output``, ``point_data_configuration``
+    ...) have no VTU meaning and are ignored."""
+
+    def __init__(self, model, settings):
+        settings = settings if settings is not None else _core.Parameters()
+        settings.CheckKeys(["help", "model_part_name", "output_name", "postprocess_parameters"])
+        output_name = settings["output_name"].GetString() if settings.Has("output_name") else "gid_output"
+        results = _core.Parameters()
+        if settings.Has("postprocess_parameters") and settings["postprocess_parameters"].Has("result_file_configuration"):
+            results = settings["postprocess_parameters"]["result_file_configuration"]
+        vtk = _core.Parameters()
+        vtk.AddString("model_part_name", settings["model_part_name"].GetString() if settings.Has("model_part_name") else "")
+        vtk.AddString("output_path", f"{output_name}_vtk")
+        translation = {"nodal_results": "nodal_solution_step_data_variables",
+                       "nodal_nonhistorical_results": "nodal_data_value_variables",
+                       "nodal_flags_results": "nodal_flags", "gauss_point_results": "gauss_point_variables_in_elements"}
+        for gid_key, vtk_key in translation.items():
+            if results.Has(gid_key):
+                vtk.AddStringArray(vtk_key, results[gid_key].GetStringArray())
+        if results.Has("output_control_type"):
+            control = results["output_control_type"].GetString()
+            vtk.AddString("output_control_type", "time" if control.startswith("time") else "step")
+        for key in ("output_interval", "output_frequency"):
+            if results.Has(key):
+                vtk.AddDouble("output_interval", results[key].GetDouble())
+        LOG.warning("gid_output_process: GiD files are not written; writing the same results as VTU/PVD to '%s'",
+                    f"{output_name}_vtk")
+        super().__init__(model, vtk)

@@ -1,0 +1,44 @@
+"""Base class of every process (boundary conditions, loads, contact, checks, outputs).
+
+The analysis stage calls the hooks in this order (spec 1.7): ``ExecuteInitialize``, ``Check``,
+``ExecuteBeforeSolutionLoop``; per step ``ExecuteInitializeSolutionStep``, then after the solve
+``ExecuteFinalizeSolutionStep``; around output ``ExecuteBeforeOutputStep`` / ``PrintOutput`` /
+``ExecuteAfterOutputStep``; at the end ``ExecuteFinalize``. Each process owns its defaults in
+``GetDefaultParameters()`` and validates its settings against them.
+"""
+from __future__ import annotations
+
+from . import _core
+
+
+class Process:
+    """Does nothing at every hook; subclasses override the hooks they need."""
+
+    def __init__(self, model: "_core.Model", settings: "_core.Parameters | None" = None):
+        self.model = model
+        self.settings = settings if settings is not None else _core.Parameters()
+        defaults = self.GetDefaultParameters()
+        if defaults is not None:
+            self.settings.ValidateAndAssignDefaults(defaults)
+
+    @classmethod
+    def GetDefaultParameters(cls) -> "_core.Parameters | None":
+        return None
+
+    def ExecuteInitialize(self) -> None: ...
+    def Check(self) -> None: ...
+    def ExecuteBeforeSolutionLoop(self) -> None: ...
+    def ExecuteInitializeSolutionStep(self) -> None: ...
+    def ExecuteFinalizeSolutionStep(self) -> None: ...
+    def ExecuteBeforeOutputStep(self) -> None: ...
+    def ExecuteAfterOutputStep(self) -> None: ...
+    def ExecuteFinalize(self) -> None: ...
+
+
+class OutputProcess(Process):
+    """A process that also writes results when ``IsOutputStep()`` is true."""
+
+    def IsOutputStep(self) -> bool:
+        return False
+
+    def PrintOutput(self) -> None: ...

@@ -1,0 +1,98 @@
+"""What the JSON result writer and checker share: which nodes, which keys, which values.
+
+Reference format: ``{"TIME": [t1, ...], "NODE_<id>": {"DISPLACEMENT_X": [v(t1), ...], ...},
+"ELEMENT_<id>": {"VAR": {"<gauss point>": [...]}}}``; array-3 variables are stored per
+component (``<VAR>_X/_Y/_Z``); with ``use_node_coordinates`` the node key is
+``NODE_X_<X0>_Y_<Y0>_Z_<Z0>`` with 6 decimals.
+"""
+from __future__ import annotations
+
+import json
+import os
+import tempfile
+
+import numpy as np
+
+from .. import _core
+from ._bulk import is_array3, nodal_flags, nodal_values, variable_by_name
+from .model_part_resolution import resolve_model_part
+
+
+def results_model_part(model, settings):
+    """``model_part_name`` plus the optional ``sub_model_part_name``."""
+    part = resolve_model_part(model, settings["model_part_name"].GetString())
+    sub = settings["sub_model_part_name"].GetString()
+    return part.GetSubModelPart(sub) if sub else part
+
+
+def node_mask(part, flag_name: str) -> np.ndarray:
+    """Nodes (node-id order) selected by ``check_for_flag`` ("" = all)."""
+    if not flag_name:
+        return np.ones(part.NumberOfNodes(), dtype=bool)
+    return nodal_flags(part, _core.GetFlag(flag_name))
+
+
+def node_keys(part, mask: np.ndarray, use_coordinates: bool) -> list[str]:
+    if use_coordinates:
+        coordinates = part.NodeCoordinates(True)[mask]
+        return ["NODE_X_%.6f_Y_%.6f_Z_%.6f" % tuple(x) for x in coordinates]
+    return [f"NODE_{i}" for i in part.NodeIds()[mask]]
+
+
+def value_columns(part, variable_name: str, historical: bool, mask: np.ndarray) -> dict[str, np.ndarray]:
+    """``{key: values of the selected nodes}``; array-3 variables split into components."""
+    variable = variable_by_name(variable_name)
+    if is_array3(variable):
+        values = nodal_values(part, variable, historical)[mask]
+        return {f"{variable_name}_{axis}": values[:, k] for k, axis in enumerate("XYZ")}
+    if variable.Type() == _core.ValueType.Double:
+        return {variable_name: nodal_values(part, variable, historical)[mask]}
+    if historical:
+        raise _core.InputError(f"{variable_name} is a {variable.Type().name} variable, which cannot be historical; "
+                               "set historical_value to false")
+    nodes = [node for node, keep in zip(part.Nodes, mask) if keep]
+    return {variable_name: np.asarray([float(node.GetValue(variable)) for node in nodes])}
+
+
+def gauss_point_columns(element, variable_name: str, info) -> dict[str, list[float]]:
+    """``{key: value per integration point}`` of one element; array-3 split into components."""
+    variable = variable_by_name(variable_name)
+    values = element.CalculateOnIntegrationPoints(variable, info)
+    if is_array3(variable):
+        return {f"{variable_name}_{axis}": [float(v[k]) for v in values] for k, axis in enumerate("XYZ")}
+    if variable.Type() == _core.ValueType.Double:
+        return {variable_name: [float(v) for v in values]}
+    raise _core.InputError(f"{variable_name}: only double and array-3 variables can be written or checked "
+                           "on integration points")
+
+
+def write_json_atomically(path: str, data) -> None:
+    """Writes ``data`` to a temporary file next to ``path`` and renames it over ``path``."""
+    folder = os.path.dirname(os.path.abspath(path))
+    os.makedirs(folder, exist_ok=True)
+    handle, temporary = tempfile.mkstemp(prefix=".", suffix=".tmp", dir=folder)
+    try:
+        with os.fdopen(handle, "w") as stream:
+            json.dump(data, stream, indent=4)
+        os.replace(temporary, path)
+    except BaseException:
+        if os.path.exists(temporary):
+            os.remove(temporary)
+        raise
+
+
+class TimeCounter:
+    """Kratos' sampling rule: DELTA_TIME accumulates every step; a step is sampled when the sum
+    exceeds ``frequency`` strictly, and the sum then restarts from zero (``frequency`` 0 samples
+    every step with a positive time step)."""
+
+    def __init__(self, frequency: float):
+        self.frequency = frequency
+        self.elapsed = 0.0
+
+    def step(self, delta_time: float) -> bool:
+        self.elapsed += delta_time
+        if self.elapsed > self.frequency:
+            self.elapsed = 0.0
+            return True
+        return False

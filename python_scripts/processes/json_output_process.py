@@ -1,0 +1,103 @@
+"""``json_output_process``: records nodal (and integration-point) values in the reference format
+read by ``from_json_check_result_process``."""
+from __future__ import annotations
+
+import numpy as np
+
+from .. import _core
+from ..process import Process
+from ._json_results import (TimeCounter, gauss_point_columns, node_keys, node_mask, results_model_part,
+                            value_columns, write_json_atomically)
+
+
+class JsonOutputProcess(Process):
+    """Samples ``output_variables`` at ``ExecuteFinalizeSolutionStep`` (see ``TimeCounter`` for
+    ``time_frequency``) and writes ``output_file_name`` at ``ExecuteFinalize`` in one atomic
+    replace, so a failed run never leaves a half-written reference.
+
+    Keys (default): ``output_variables`` ([]), ``gauss_points_output_variables`` ([]),
+    ``output_file_name`` (required), ``model_part_name`` (required), ``sub_model_part_name`` (""),
+    ``time_frequency`` (1.0), ``historical_value`` (true), ``resultant_solution`` (false: one
+    entry per node; true: the sum over the nodes under ``RESULTANT``), ``check_for_flag`` ("" or
+    a flag name: only nodes with that flag), ``use_node_coordinates`` (false), ``help``.
+    """
+
+    @classmethod
+    def GetDefaultParameters(cls):
+        return _core.Parameters("""{
+            "help": "", "output_variables": [], "gauss_points_output_variables": [],
+            "output_file_name": "", "model_part_name": "", "sub_model_part_name": "",
+            "time_frequency": 1.0, "historical_value": true, "resultant_solution": false,
+            "check_for_flag": "", "use_node_coordinates": false
+        }""", "defaults")
+
+    def __init__(self, model, settings):
+        super().__init__(model, settings)
+        s = self.settings
+        for key in ("output_file_name", "model_part_name"):
+            if not s[key].GetString():
+                raise _core.InputError(f"{s.Where()}: json_output_process requires '{key}'")
+        self.output_file_name = s["output_file_name"].GetString()
+        self.variables = s["output_variables"].GetStringArray()
+        self.gauss_variables = s["gauss_points_output_variables"].GetStringArray()
+        self.historical = s["historical_value"].GetBool()
+        self.resultant = s["resultant_solution"].GetBool()
+        self.flag = s["check_for_flag"].GetString()
+        self.use_coordinates = s["use_node_coordinates"].GetBool()
+        self.counter = TimeCounter(s["time_frequency"].GetDouble())
+        self.data: dict = {"TIME": []}
+        self.model_part = None
+
+    def ExecuteInitialize(self) -> None:
+        self.model_part = results_model_part(self.model, self.settings)
+
+    def ExecuteFinalizeSolutionStep(self) -> None:
+        if self.model_part is None:
+            self.ExecuteInitialize()
+        info = self.model_part.ProcessInfo
+        if not self.counter.step(float(info.GetValue(_core.DELTA_TIME))):
+            return
+        self.data["TIME"].append(float(info.GetValue(_core.TIME)))
+        self._sample_nodes()
+        self._sample_gauss_points()
+
+    def _sample_nodes(self) -> None:
+        if not self.variables:
+            return
+        mask = node_mask(self.model_part, self.flag)
+        keys = node_keys(self.model_part, mask, self.use_coordinates)
+        for name in self.variables:
+            for key, values in value_columns(self.model_part, name, self.historical, mask).items():
+                if self.resultant:
+                    self.data.setdefault("RESULTANT", {}).setdefault(key, []).append(float(np.sum(values)))
+                    continue
+                for node_key, value in zip(keys, values):
+                    self.data.setdefault(node_key, {}).setdefault(key, []).append(float(value))
+
+    def _sample_gauss_points(self) -> None:
+        if not self.gauss_variables:
+            return
+        info = self.model_part.ProcessInfo
+        flag = _core.GetFlag(self.flag) if self.flag else None
+        for element in self.model_part.Elements:
+            if flag is not None and not element.Is(flag):
+                continue
+            for name in self.gauss_variables:
+                for key, values in gauss_point_columns(element, name, info).items():
+                    if self.resultant:
+                        entry = self.data.setdefault("RESULTANT", {}).setdefault(key, {})
+                    else:
+                        entry = self.data.setdefault(f"ELEMENT_{element.Id}", {}).setdefault(key, {})
+                    for gp, value in enumerate(values):
+                        series = entry.setdefault(str(gp), [])
+                        if self.resultant and len(series) == len(self.data["TIME"]):
+                            series[-1] += value
+                        else:
+                            series.append(value)
+
+    def write(self) -> None:
+        """Writes what was recorded so far (atomically)."""
+        write_json_atomically(self.output_file_name, self.data)
+
+    def ExecuteFinalize(self) -> None:
+        self.write()

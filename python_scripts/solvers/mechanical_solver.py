@@ -1,0 +1,296 @@
+"""The structural solver: model import, variables and DoFs, and the C++ strategy built from
+``solver_settings`` (static, implicit dynamic with Bossak / Newmark, explicit central differences)."""
+from __future__ import annotations
+
+import os
+
+from .. import _core
+from ..utilities import resolve_model_part
+
+BASE_VARIABLES = ["DISPLACEMENT", "REACTION", "POSITIVE_FACE_PRESSURE", "NEGATIVE_FACE_PRESSURE",
+                  "POINT_LOAD", "LINE_LOAD", "SURFACE_LOAD", "VOLUME_ACCELERATION"]
+ROTATION_VARIABLES = ["ROTATION", "REACTION_MOMENT", "POINT_MOMENT"]
+DYNAMIC_VARIABLES = ["VELOCITY", "ACCELERATION"]
+IMPLICIT_SCHEMES = ("bossak", "newmark", "pseudo_static", "backward_euler", "bdf1", "bdf2", "bdf3", "bdf4",
+                    "bdf5", "relaxation")
+CRITERIA = ("displacement_criterion", "residual_criterion", "and_criterion", "or_criterion")
+
+
+class MechanicalSolver:
+    def __init__(self, model: _core.Model, settings: _core.Parameters, *, dynamic: bool, explicit: bool,
+                 case_dir: str | None = None):
+        self.model = model
+        self.case_dir = case_dir
+        self.settings = settings
+        self.dynamic = dynamic
+        self.explicit = explicit
+        self.echo_level = settings["echo_level"].GetInt()
+        name = settings["model_part_name"].GetString()
+        self.main_model_part = model.GetModelPart(name) if model.HasModelPart(name) else model.CreateModelPart(name)
+        self.domain_size = settings["domain_size"].GetInt()
+        self.main_model_part.ProcessInfo.SetValue(_core.DOMAIN_SIZE, self.domain_size)
+        self.scheme_type = self._scheme_type()
+        self._check_names()
+        self.strategy = None
+        self.pending_fixities = None
+        self.AddVariables()
+
+    # -- set-up -------------------------------------------------------------------------------
+    def _scheme_type(self) -> str:
+        requested = self.settings["scheme_type"].GetString()
+        if self.explicit:
+            scheme = requested or "central_differences"
+            if scheme != "central_differences":
+                raise _core.InputError(f"{self.settings.Where()}.scheme_type: the explicit solver supports "
+                                       f"\"central_differences\", got \"{scheme}\"")
+            if self.settings["time_step_prediction_level"].GetInt() > 0:
+                raise _core.NotImplementedFeatureError(
+                    f"{self.settings.Where()}.time_step_prediction_level: automatic time-step prediction is not "
+                    "implemented; set it to 0 and give time_stepping.time_step")
+            return scheme
+        if not self.dynamic:
+            return "static"
+        scheme = requested or "bossak"
+        if scheme not in IMPLICIT_SCHEMES:
+            from ..utilities import nearest
+
+            raise _core.InputError(f"{self.settings.Where()}.scheme_type: unknown scheme \"{scheme}\""
+                                   f"{nearest(scheme, IMPLICIT_SCHEMES)}")
+        if scheme not in ("bossak", "newmark", "pseudo_static"):
+            raise _core.NotImplementedFeatureError(f"{self.settings.Where()}.scheme_type: \"{scheme}\" is not "
+                                                   "implemented; use \"bossak\" or \"newmark\"")
+        return scheme
+
+    def _check_names(self) -> None:
+        criterion = self.settings["convergence_criterion"].GetString().lower()
+        self.settings["convergence_criterion"].SetString(criterion)
+        if criterion not in CRITERIA:
+            from ..utilities import nearest
+
+            hint = " (contact criteria need contact_settings)" if "contact" in criterion else ""
+            raise _core.InputError(f"{self.settings.Where()}.convergence_criterion: unknown criterion "
+                                   f"\"{criterion}\"{nearest(criterion, CRITERIA)}{hint}")
+        for key, valid in (("solving_strategy_settings", ("newton_raphson", "line_search", "arc_length")),
+                           ("builder_and_solver_settings", ("block", "block_lagrange", "elimination"))):
+            kind = self.settings[key]["type"].GetString()
+            if kind not in valid:
+                from ..utilities import nearest
+
+                raise _core.InputError(f"{self.settings.Where()}.{key}.type: unknown \"{kind}\"{nearest(kind, valid)}")
+        if self.settings["solving_strategy_settings"]["type"].GetString() == "arc_length":
+            raise _core.NotImplementedFeatureError(f"{self.settings.Where()}.solving_strategy_settings.type: "
+                                                   "\"arc_length\" is not implemented")
+        analysis = self.settings["analysis_type"].GetString()
+        if analysis not in ("linear", "non_linear"):
+            raise _core.InputError(f"{self.settings.Where()}.analysis_type: expected \"linear\" or \"non_linear\", "
+                                   f"got \"{analysis}\"")
+
+    def AddVariables(self) -> None:
+        names = list(BASE_VARIABLES)
+        if self.settings["rotation_dofs"].GetBool():
+            names += ROTATION_VARIABLES
+        if self.dynamic:
+            names += DYNAMIC_VARIABLES
+            if self.settings["rotation_dofs"].GetBool():
+                names += ["ANGULAR_VELOCITY", "ANGULAR_ACCELERATION"]
+        if self.explicit:
+            names += ["FORCE"]
+        names += self.settings["auxiliary_variables_list"].GetStringArray()
+        aux_dofs = self.settings["auxiliary_dofs_list"].GetStringArray()
+        aux_reactions = self.settings["auxiliary_reaction_list"].GetStringArray()
+        if len(aux_dofs) != len(aux_reactions):
+            raise _core.InputError(f"{self.settings.Where()}: auxiliary_dofs_list and auxiliary_reaction_list "
+                                   "must have the same length")
+        names += aux_dofs + aux_reactions
+        for name in names:
+            self.main_model_part.AddNodalSolutionStepVariable(_core.GetVariable(name))
+
+    def minimum_buffer_size(self) -> int:
+        return 2
+
+    def ImportModelPart(self) -> None:
+        imports = self.settings["model_import_settings"]
+        input_type = imports["input_type"].GetString()
+        if input_type == "use_input_model_part":
+            pass
+        elif input_type == "mdpa":
+            filename = imports["input_filename"].GetString()
+            if not filename:
+                raise _core.InputError(f"{imports.Where()}.input_filename: required for input_type \"mdpa\"")
+            path = self._locate(filename if filename.endswith(".mdpa") else filename + ".mdpa",
+                                f"{imports.Where()}.input_filename")
+            buffer_size = max(self.settings["buffer_size"].GetInt(), self.minimum_buffer_size())
+            self.main_model_part.SetBufferSize(buffer_size)
+            self.pending_fixities = _core.ReadModelPart(
+                self.main_model_part, path, imports["ignore_variables_not_in_solution_step_data"].GetBool())
+        else:
+            raise _core.NotImplementedFeatureError(f"{imports.Where()}.input_type: \"{input_type}\" is not "
+                                                   "supported; use \"mdpa\"")
+        self.main_model_part.SetBufferSize(max(self.settings["buffer_size"].GetInt(), self.minimum_buffer_size()))
+        self._import_materials()
+
+    def _import_materials(self) -> None:
+        filename = self.settings["material_import_settings"]["materials_filename"].GetString()
+        if not filename:
+            return
+        filename = self._locate(filename, f"{self.settings['material_import_settings'].Where()}.materials_filename")
+        materials = _core.Parameters.FromFile(filename)
+        if materials.Has("properties"):
+            for i in range(materials["properties"].size()):
+                entry = materials["properties"][i]
+                if entry.Has("model_part_name"):
+                    part = resolve_model_part(self.model, entry["model_part_name"].GetString())
+                    entry["model_part_name"].SetString(part.FullName())
+        _core.ReadMaterials(self.model, materials, filename)
+
+    def _locate(self, filename: str, key: str) -> str:
+        """A case's input file: relative to the working directory (Kratos' rule), else to the case folder."""
+        candidates = [filename]
+        if self.case_dir and not os.path.isabs(filename):
+            candidates.append(os.path.join(self.case_dir, filename))
+        for candidate in candidates:
+            if os.path.isfile(candidate):
+                return candidate
+        raise _core.InputError(f"{key}: file not found; looked for " + " and ".join(os.path.abspath(c) for c in candidates))
+
+    def AddDofs(self) -> None:
+        part = self.main_model_part
+        pairs = [("DISPLACEMENT_X", "REACTION_X"), ("DISPLACEMENT_Y", "REACTION_Y"), ("DISPLACEMENT_Z", "REACTION_Z")]
+        if self.settings["rotation_dofs"].GetBool():
+            pairs += [(f"ROTATION_{c}", f"REACTION_MOMENT_{c}") for c in "XYZ"]
+        aux_dofs = self.settings["auxiliary_dofs_list"].GetStringArray()
+        aux_reactions = self.settings["auxiliary_reaction_list"].GetStringArray()
+        pairs += list(zip(aux_dofs, aux_reactions))
+        for dof, reaction in pairs:
+            _core.VariableUtils.AddDof(part, _core.GetVariable(dof), _core.GetVariable(reaction))
+        if self.pending_fixities is not None:
+            self.pending_fixities.Apply()
+
+    def GetComputingModelPart(self):
+        name = self.settings["computing_sub_model_part_name"].GetString()
+        return resolve_model_part(self.model, f"{self.main_model_part.Name}.{name}") if name else self.main_model_part
+
+    # -- strategy -----------------------------------------------------------------------------
+    def Initialize(self) -> None:
+        self.strategy = self._create_strategy()
+        self.strategy.Initialize()
+
+    def _create_strategy(self):
+        s = self.settings
+        part = self.GetComputingModelPart()
+        linear_solver = _core.CreateLinearSolver(s["linear_solver_settings"])
+        if self.explicit:
+            return _core.ExplicitStrategy(part, _core.ExplicitCentralDifferencesScheme(),
+                                          compute_reactions=s["compute_reactions"].GetBool(),
+                                          reform_dofs_at_each_step=s["reform_dofs_at_each_step"].GetBool(),
+                                          move_mesh=s["move_mesh_flag"].GetBool(), echo_level=self.echo_level)
+        process_info = part.ProcessInfo
+        process_info.SetValue(_core.RAYLEIGH_ALPHA, s["rayleigh_alpha"].GetDouble())
+        process_info.SetValue(_core.RAYLEIGH_BETA, s["rayleigh_beta"].GetDouble())
+        if self.scheme_type == "static" or self.scheme_type == "pseudo_static":
+            scheme = _core.StaticScheme()
+        elif self.scheme_type == "newmark":
+            scheme = _core.BossakScheme(alpha_m=0.0, newmark_beta=s["newmark_beta"].GetDouble())
+        else:
+            # Bossak's beta = (1 - alpha)^2 / 4 follows from alpha_m; newmark_beta is for Newmark only.
+            scheme = _core.BossakScheme(alpha_m=s["damp_factor_m"].GetDouble())
+        kind = s["builder_and_solver_settings"]["type"].GetString()
+        builder = (_core.BlockBuilderAndSolver(linear_solver) if kind == "block"
+                   else _core.EliminationBuilderAndSolver(linear_solver))
+        common = dict(compute_reactions=s["compute_reactions"].GetBool(),
+                      reform_dofs_at_each_step=s["reform_dofs_at_each_step"].GetBool(),
+                      move_mesh=s["move_mesh_flag"].GetBool(), echo_level=self.echo_level)
+        if s["analysis_type"].GetString() == "linear":
+            return _core.LinearStrategy(part, scheme, builder, **common)
+        criteria = self._create_criteria()
+        newton = dict(max_iteration=s["max_iteration"].GetInt(),
+                      use_old_stiffness_in_first_iteration=s["use_old_stiffness_in_first_iteration"].GetBool(),
+                      **common)
+        if s["solving_strategy_settings"]["type"].GetString() == "line_search":
+            newton.pop("use_old_stiffness_in_first_iteration")
+            return _core.LineSearchStrategy(part, scheme, criteria, builder, settings=self._line_search_settings(),
+                                            **newton)
+        return _core.NewtonRaphsonStrategy(part, scheme, criteria, builder, **newton)
+
+    def _line_search_settings(self):
+        """Line-search keys of solving_strategy_settings.advanced_settings (Kratos' names)."""
+        advanced = self.settings["solving_strategy_settings"]["advanced_settings"]
+        settings = _core.LineSearchSettings()
+        for key in advanced.keys():
+            if not hasattr(settings, key):
+                from ..utilities import nearest
+
+                valid = [k for k in dir(settings) if not k.startswith("_")]
+                raise _core.InputError(f"{advanced.Where()}: unknown key '{key}'{nearest(key, valid)}")
+            value = advanced[key]
+            setattr(settings, key, value.GetInt() if key == "max_line_search_iterations" else value.GetDouble())
+        return settings
+
+    def _create_criteria(self):
+        s = self.settings
+        name = s["convergence_criterion"].GetString()
+        displacement = _core.DisplacementCriteria(s["displacement_relative_tolerance"].GetDouble(),
+                                                  s["displacement_absolute_tolerance"].GetDouble())
+        residual = _core.ResidualCriteria(s["residual_relative_tolerance"].GetDouble(),
+                                          s["residual_absolute_tolerance"].GetDouble())
+        criteria = {"displacement_criterion": lambda: displacement,
+                    "residual_criterion": lambda: residual,
+                    "and_criterion": lambda: _core.AndCriteria(residual, displacement),
+                    "or_criterion": lambda: _core.OrCriteria(residual, displacement)}[name]()
+        criteria.SetEchoLevel(self.echo_level)
+        return criteria
+
+    # -- time loop ----------------------------------------------------------------------------
+    def ComputeDeltaTime(self, time: float) -> float:
+        stepping = self.settings["time_stepping"]
+        where = stepping.Where()
+        if stepping.Has("time_step"):
+            return stepping["time_step"].GetDouble()
+        if stepping.Has("time_step_table"):
+            table = stepping["time_step_table"].GetMatrix()
+            import numpy as np
+
+            return float(np.interp(time, table[:, 0], table[:, 1]))
+        if stepping.Has("time_step_intervals"):
+            intervals = stepping["time_step_intervals"]
+            for key in intervals.keys():
+                item = intervals[key]
+                start = item["interval"][0].GetDouble()
+                end_item = item["interval"][1]
+                end = float("inf") if end_item.IsString() and end_item.GetString() == "End" else end_item.GetDouble()
+                if start <= time < end:
+                    return item["time_step"].GetDouble()
+            raise _core.InputError(f"{where}.time_step_intervals: no interval contains time {time}")
+        raise _core.InputError(f"{where}: give time_step, time_step_table or time_step_intervals")
+
+    def AdvanceInTime(self, time: float) -> float:
+        dt = self.ComputeDeltaTime(time)
+        if not dt > 0.0:
+            raise _core.InputError(f"{self.settings['time_stepping'].Where()}: the time step must be positive, got {dt}")
+        new_time = time + dt
+        self.main_model_part.CloneTimeStep(new_time)
+        return new_time
+
+    def InitializeSolutionStep(self) -> None:
+        self.strategy.InitializeSolutionStep()
+
+    def Predict(self) -> None:
+        self.strategy.Predict()
+
+    def SolveSolutionStep(self) -> bool:
+        return self.strategy.SolveSolutionStep()
+
+    def FinalizeSolutionStep(self) -> None:
+        self.strategy.FinalizeSolutionStep()
+
+    def Check(self) -> None:
+        self.strategy.Check()
+
+    def Finalize(self) -> None:
+        self.strategy.Clear()
+
+    def LastIterationCount(self) -> int:
+        return self.strategy.GetIterationNumber()
+
+    def LastIterationHistory(self):
+        return self.strategy.GetIterationHistory()

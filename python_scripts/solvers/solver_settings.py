@@ -1,0 +1,197 @@
+"""Defaults and legacy translation of ``solver_settings`` (spec 2.2-2.5, 2.7, 2.8). The defaults are
+the single source for validation and for the documentation tables."""
+from __future__ import annotations
+
+from .. import _core
+from ..utilities import warn
+
+STRUCTURAL_DEFAULTS = """{
+    "solver_type": "mechanical_solver",
+    "model_part_name": "",
+    "computing_sub_model_part_name": "",
+    "domain_size": -1,
+    "echo_level": 0,
+    "buffer_size": 2,
+    "analysis_type": "non_linear",
+    "time_integration_method": "implicit",
+    "model_import_settings": {
+        "input_type": "mdpa",
+        "input_filename": "",
+        "skip_timer": true,
+        "ignore_variables_not_in_solution_step_data": false,
+        "reorder": false,
+        "reorder_consecutive": false
+    },
+    "material_import_settings": {
+        "materials_filename": ""
+    },
+    "time_stepping": {},
+    "rotation_dofs": false,
+    "volumetric_strain_dofs": false,
+    "strain_dofs": false,
+    "pressure_dofs": false,
+    "displacement_control": false,
+    "use_orthogonal_subscales": false,
+    "reform_dofs_at_each_step": false,
+    "use_old_stiffness_in_first_iteration": false,
+    "compute_reactions": true,
+    "solving_strategy_settings": {
+        "type": "newton_raphson",
+        "advanced_settings": {}
+    },
+    "builder_and_solver_settings": {
+        "type": "block",
+        "advanced_settings": {}
+    },
+    "clear_storage": false,
+    "move_mesh_flag": true,
+    "multi_point_constraints_used": true,
+    "convergence_criterion": "residual_criterion",
+    "displacement_relative_tolerance": 1.0e-4,
+    "displacement_absolute_tolerance": 1.0e-9,
+    "residual_relative_tolerance": 1.0e-4,
+    "residual_absolute_tolerance": 1.0e-9,
+    "max_iteration": 10,
+    "linear_solver_settings": {},
+    "auxiliary_variables_list": [],
+    "auxiliary_dofs_list": [],
+    "auxiliary_reaction_list": [],
+    "scheme_type": "",
+    "damp_factor_m": -0.3,
+    "newmark_beta": 0.25,
+    "rayleigh_alpha": 0.0,
+    "rayleigh_beta": 0.0,
+    "time_step_prediction_level": 0,
+    "delta_time_refresh": 1000,
+    "max_delta_time": 1.0,
+    "fraction_delta_time": 0.333333333333333333333333333333333333,
+    "contact_settings": {},
+    "mpc_contact_settings": {}
+}"""
+
+CONTACT_SETTINGS_DEFAULTS = """{
+    "mortar_type": "",
+    "condn_convergence_criterion": false,
+    "fancy_convergence_criterion": true,
+    "print_convergence_criterion": false,
+    "ensure_contact": false,
+    "frictional_decomposed": true,
+    "compute_dynamic_factor": false,
+    "gidio_debug": false,
+    "adaptative_strategy": false,
+    "split_factor": 10.0,
+    "max_number_splits": 3,
+    "inner_loop_iterations": 5,
+    "inner_loop_adaptive": false,
+    "rotation_relative_tolerance": 1.0e-4,
+    "rotation_absolute_tolerance": 1.0e-9,
+    "rotation_residual_relative_tolerance": 1.0e-4,
+    "rotation_residual_absolute_tolerance": 1.0e-9,
+    "contact_displacement_relative_tolerance": 1.0e-4,
+    "contact_displacement_absolute_tolerance": 1.0e-9,
+    "contact_residual_relative_tolerance": 1.0e-4,
+    "contact_residual_absolute_tolerance": 1.0e-9,
+    "frictional_stick_contact_displacement_relative_tolerance": 1.0e-4,
+    "frictional_stick_contact_displacement_absolute_tolerance": 1.0e-9,
+    "frictional_stick_contact_residual_relative_tolerance": 1.0e-4,
+    "frictional_stick_contact_residual_absolute_tolerance": 1.0e-9,
+    "frictional_slip_contact_displacement_relative_tolerance": 1.0e-4,
+    "frictional_slip_contact_displacement_absolute_tolerance": 1.0e-9,
+    "frictional_slip_contact_residual_relative_tolerance": 1.0e-4,
+    "frictional_slip_contact_residual_absolute_tolerance": 1.0e-9,
+    "ratio_normal_tangent_threshold": 1.0e-4,
+    "silent_strategy": true,
+    "simplified_semi_smooth_newton": false,
+    "rescale_linear_solver": false,
+    "use_mixed_ulm_solver": true,
+    "mixed_ulm_solver_parameters": {
+        "solver_type": "mixed_ulm_linear_solver",
+        "tolerance": 1.0e-6,
+        "max_iteration_number": 200,
+        "echo_level": 0
+    },
+    "fallback_if_dual_lm_not_valid": true,
+    "delta_time_factor_for_contact": 0.5
+}"""
+
+MPC_CONTACT_SETTINGS_DEFAULTS = """{
+    "contact_type": "Frictionless",
+    "simplified_semi_smooth_newton": false,
+    "inner_loop_iterations": 10,
+    "update_each_nl_iteration": false,
+    "enforce_ntn": false
+}"""
+
+# Obsolete keys dropped with a warning (spec 2.3): the solve always happens on the root part.
+DROPPED_KEYS = ["computing_model_part_name", "problem_domain_sub_model_part_list",
+                "processes_sub_model_part_list", "use_computing_model_part", "solution_type"]
+LEGACY_FRICTION_KEYS = {
+    f"frictional_contact_{kind}_{which}_tolerance": [f"frictional_{block}_contact_{kind}_{which}_tolerance"
+                                                     for block in ("stick", "slip")]
+    for kind in ("displacement", "residual") for which in ("relative", "absolute")}
+
+
+def translate_legacy_solver_settings(settings: _core.Parameters) -> None:
+    """Spec 2.3 in place: block_builder, builder_and_solver_settings.use_block_builder,
+    line_search, analysis_type spellings, obsolete computing-part keys."""
+    where = settings.Where()
+    if settings.Has("block_builder"):
+        if settings.Has("builder_and_solver_settings"):
+            raise _core.InputError(f"{where}: 'block_builder' (legacy) and 'builder_and_solver_settings' "
+                                   "are both given; keep builder_and_solver_settings.type")
+        kind = "block" if settings["block_builder"].GetBool() else "elimination"
+        settings.AddValue("builder_and_solver_settings", _core.Parameters(f'{{"type": "{kind}"}}'))
+        settings.RemoveValue("block_builder")
+    if settings.Has("builder_and_solver_settings"):
+        bs = settings["builder_and_solver_settings"]
+        if bs.Has("use_block_builder"):
+            block = bs["use_block_builder"].GetBool()
+            lagrange = bs.Has("use_lagrange_BS") and bs["use_lagrange_BS"].GetBool()
+            kind = ("block_lagrange" if lagrange else "block") if block else "elimination"
+            for key in ("use_block_builder", "use_lagrange_BS"):
+                if bs.Has(key):
+                    bs.RemoveValue(key)
+            if not bs.Has("type"):
+                bs.AddString("type", kind)
+        if not bs.Has("type"):
+            bs.AddString("type", "block")
+    if settings.Has("line_search"):
+        if settings["line_search"].GetBool():
+            settings.AddValue("solving_strategy_settings", _core.Parameters('{"type": "line_search"}'))
+        settings.RemoveValue("line_search")
+    if settings.Has("analysis_type"):
+        legacy = {"Non-Linear": "non_linear", "Linear": "linear"}
+        value = settings["analysis_type"].GetString()
+        if value in legacy:
+            settings["analysis_type"].SetString(legacy[value])
+    for key in DROPPED_KEYS:
+        if settings.Has(key):
+            if key != "solution_type":
+                warn(f"{where}.{key}: obsolete key ignored; the solve runs on the root model part")
+            settings.RemoveValue(key)
+    if settings.Has("contact_settings"):
+        contact = settings["contact_settings"]
+        for old, new_keys in LEGACY_FRICTION_KEYS.items():
+            if contact.Has(old):
+                for new in new_keys:
+                    if not contact.Has(new):
+                        contact.AddValue(new, contact[old])
+                contact.RemoveValue(old)
+
+
+def validate_solver_settings(settings: _core.Parameters) -> None:
+    """Translates legacy keys, then validates against the defaults (unknown keys are errors)."""
+    translate_legacy_solver_settings(settings)
+    settings.RecursivelyValidateAndAssignDefaults(_core.Parameters(STRUCTURAL_DEFAULTS))
+    for key, defaults in (("contact_settings", CONTACT_SETTINGS_DEFAULTS),
+                          ("mpc_contact_settings", MPC_CONTACT_SETTINGS_DEFAULTS)):
+        if settings[key].size() > 0:
+            settings[key].RecursivelyValidateAndAssignDefaults(_core.Parameters(defaults))
+    if not settings["model_part_name"].GetString():
+        raise _core.InputError(f"{settings.Where()}.model_part_name: must name the model part (e.g. \"Structure\")")
+    if settings["domain_size"].GetInt() not in (2, 3):
+        raise _core.InputError(f"{settings.Where()}.domain_size: must be 2 or 3, got {settings['domain_size'].GetInt()}")
+    for key in ("volumetric_strain_dofs", "strain_dofs", "pressure_dofs", "displacement_control",
+                "use_orthogonal_subscales"):
+        if settings[key].GetBool():
+            raise _core.NotImplementedFeatureError(f"{settings.Where()}.{key}: mixed formulations are not implemented")

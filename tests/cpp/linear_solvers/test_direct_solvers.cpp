@@ -1,0 +1,200 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Linear solvers area: the direct solvers (UMFPACK, KLU, CHOLMOD, Eigen SparseLU, scaling and
+// fallback wrappers) reach the manufactured solution of SPD and non-symmetric systems to 1e-10,
+// reuse the symbolic analysis when only values change, and name the equation of a zero pivot.
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <memory>
+
+#include "core/linear_solvers/cholmod_solver.h"
+#include "core/linear_solvers/eigen_sparse_lu_solver.h"
+#include "core/linear_solvers/fallback_solver.h"
+#include "core/linear_solvers/klu_solver.h"
+#include "core/linear_solvers/scaling_solver.h"
+#include "core/linear_solvers/umfpack_solver.h"
+#include "test_matrices.h"
+
+namespace mc {
+namespace {
+
+using testing::ConvectionDiffusion2D;
+using testing::ManufacturedSolution;
+using testing::Poisson2D;
+using testing::RelativeError;
+
+constexpr int kGrid = 100;  // 10 000 unknowns
+
+void ExpectExactSolve(LinearSolver& solver, const SparseMatrix& A) {
+  const Vector exact = ManufacturedSolution(A.rows());
+  const Vector b = A * exact;
+  Vector x;
+  solver.Initialize(A);
+  solver.Solve(A, x, b);
+  EXPECT_LT(RelativeError(x, exact), 1e-10) << solver.Name();
+}
+
+// Same pattern, other values: off-diagonals scaled by 0.9, diagonal raised by 0.5.
+SparseMatrix ChangedValues(const SparseMatrix& A) {
+  SparseMatrix B = A;
+  for (int j = 0; j < B.outerSize(); ++j) {
+    for (SparseMatrix::InnerIterator it(B, j); it; ++it) it.valueRef() = it.row() == j ? it.value() + 0.5 : 0.9 * it.value();
+  }
+  return B;
+}
+
+template <class Solver>
+void ExpectSymbolicReuse(Solver& solver, const SparseMatrix& A) {
+  const Vector exact = ManufacturedSolution(A.rows());
+  Vector x;
+  solver.Initialize(A);
+  solver.Solve(A, x, A * exact);
+  EXPECT_LT(RelativeError(x, exact), 1e-10);
+  const SparseMatrix B = ChangedValues(A);
+  solver.Solve(B, x, B * exact);
+  EXPECT_LT(RelativeError(x, exact), 1e-10) << solver.Name() << " after a value change";
+  EXPECT_EQ(solver.SymbolicAnalysesNumber(), 1) << solver.Name();
+  // A new pattern passed to Solve without Initialize is analysed again, not misused.
+  const SparseMatrix C = Poisson2D(20);
+  const Vector exact_c = ManufacturedSolution(C.rows());
+  solver.Solve(C, x, C * exact_c);
+  EXPECT_LT(RelativeError(x, exact_c), 1e-10);
+  EXPECT_EQ(solver.SymbolicAnalysesNumber(), 2) << solver.Name();
+}
+
+long SingularEquation(LinearSolver& solver, const SparseMatrix& A) {
+  Vector x;
+  const Vector b = Vector::Ones(A.rows());
+  solver.Initialize(A);
+  try {
+    solver.Solve(A, x, b);
+  } catch (const SingularMatrixError& error) {
+    return error.Equation();
+  }
+  ADD_FAILURE() << solver.Name() << " accepted a singular matrix";
+  return -2;
+}
+
+TEST(DirectSolvers, UmfpackSolvesPoissonAndConvectionDiffusion) {
+  UmfpackSolver solver;
+  ExpectExactSolve(solver, Poisson2D(kGrid));
+  ExpectExactSolve(solver, ConvectionDiffusion2D(kGrid));
+}
+
+TEST(DirectSolvers, KluSolvesPoissonAndConvectionDiffusion) {
+  KluSolver solver;
+  ExpectExactSolve(solver, Poisson2D(kGrid));
+  ExpectExactSolve(solver, ConvectionDiffusion2D(kGrid));
+}
+
+TEST(DirectSolvers, CholmodSolvesPoisson) {
+  CholmodSolver solver;
+  ExpectExactSolve(solver, Poisson2D(kGrid));
+}
+
+TEST(DirectSolvers, EigenSparseLUSolvesWithColamdAndMetis) {
+  EigenSparseLUSolver colamd(EigenSparseLUSolver::Ordering::kColamd);
+  ExpectExactSolve(colamd, Poisson2D(kGrid));
+  ExpectExactSolve(colamd, ConvectionDiffusion2D(kGrid));
+  EigenSparseLUSolver metis(EigenSparseLUSolver::Ordering::kMetis);
+  ExpectExactSolve(metis, Poisson2D(kGrid));
+  ExpectExactSolve(metis, ConvectionDiffusion2D(kGrid));
+}
+
+TEST(DirectSolvers, AcceptUncompressedMatrices) {
+  SparseMatrix A = ConvectionDiffusion2D(30);
+  A.uncompress();
+  UmfpackSolver umfpack;
+  ExpectExactSolve(umfpack, A);
+  KluSolver klu;
+  ExpectExactSolve(klu, A);
+  EigenSparseLUSolver sparse_lu;
+  ExpectExactSolve(sparse_lu, A);
+}
+
+TEST(DirectSolvers, SymbolicAnalysisIsReusedWhenOnlyValuesChange) {
+  UmfpackSolver umfpack;
+  ExpectSymbolicReuse(umfpack, ConvectionDiffusion2D(kGrid));
+  KluSolver klu;
+  ExpectSymbolicReuse(klu, ConvectionDiffusion2D(kGrid));
+  CholmodSolver cholmod;
+  ExpectSymbolicReuse(cholmod, Poisson2D(kGrid));
+  EigenSparseLUSolver sparse_lu;
+  ExpectSymbolicReuse(sparse_lu, ConvectionDiffusion2D(kGrid));
+}
+
+TEST(DirectSolvers, ZeroRowAndColumnNamesTheEquation) {
+  constexpr int kZero = 1234;
+  SparseMatrix A = Poisson2D(kGrid);
+  testing::ZeroRowAndColumn(A, kZero);
+  UmfpackSolver umfpack;
+  EXPECT_EQ(SingularEquation(umfpack, A), kZero);
+  KluSolver klu;
+  EXPECT_EQ(SingularEquation(klu, A), kZero);
+  CholmodSolver cholmod;
+  EXPECT_EQ(SingularEquation(cholmod, A), kZero);
+  EigenSparseLUSolver sparse_lu;
+  EXPECT_EQ(SingularEquation(sparse_lu, A), -1);  // Eigen gives no index
+
+  // The same with the zero entries removed from the pattern (structurally singular).
+  A.prune(0.0);
+  UmfpackSolver umfpack_structural;
+  EXPECT_EQ(SingularEquation(umfpack_structural, A), kZero);
+  KluSolver klu_structural;
+  EXPECT_EQ(SingularEquation(klu_structural, A), kZero);
+}
+
+TEST(DirectSolvers, CholmodRejectsIndefiniteAndNonSymmetricMatrices) {
+  // Poisson's eigenvalues lie in (0, 8): shifting by 1 gives an indefinite, regular matrix.
+  SparseMatrix shifted = Poisson2D(30);
+  for (int j = 0; j < shifted.outerSize(); ++j) shifted.coeffRef(j, j) -= 1.0;
+  CholmodSolver cholmod;
+  const long equation = SingularEquation(cholmod, shifted);
+  EXPECT_GE(equation, 0);
+  EXPECT_LT(equation, shifted.rows());
+
+  const SparseMatrix convection = ConvectionDiffusion2D(30);
+  Vector x;
+  cholmod.Initialize(convection);
+  EXPECT_THROW(cholmod.Solve(convection, x, Vector::Ones(convection.rows())), SolutionError);
+}
+
+TEST(DirectSolvers, FallbackSwitchesFromCholmodToUmfpackOnce) {
+  FallbackSolver solver(std::make_unique<CholmodSolver>(), std::make_unique<UmfpackSolver>());
+  EXPECT_EQ(solver.Name(), "cholmod");
+  ExpectExactSolve(solver, Poisson2D(30));
+  EXPECT_FALSE(solver.UsingFallback());
+
+  SparseMatrix shifted = Poisson2D(30);
+  for (int j = 0; j < shifted.outerSize(); ++j) shifted.coeffRef(j, j) -= 1.0;
+  ExpectExactSolve(solver, shifted);
+  EXPECT_TRUE(solver.UsingFallback());
+  EXPECT_EQ(solver.Name(), "umfpack");
+  EXPECT_NE(solver.SwitchReason().find("not positive definite"), std::string::npos) << solver.SwitchReason();
+  // Stays on UMFPACK, which also solves the SPD system.
+  ExpectExactSolve(solver, Poisson2D(30));
+  EXPECT_EQ(solver.Name(), "umfpack");
+}
+
+TEST(DirectSolvers, ScalingSolverSolvesBadlyScaledSystems) {
+  // Rows/columns of very different magnitudes, as with penalty or multiplier blocks: D A D with
+  // the solution D^-1 z, so that the scaled unknowns D x are O(1) and measured relative to them.
+  const SparseMatrix A0 = ConvectionDiffusion2D(kGrid);
+  Vector d(A0.rows());
+  for (int i = 0; i < d.size(); ++i) d[i] = (i % 7 == 0) ? 1e8 : 1.0;
+  const SparseMatrix A = d.asDiagonal() * A0 * d.asDiagonal();
+  const Vector z = ManufacturedSolution(A.rows());
+  const Vector b = d.cwiseProduct(A0 * z);
+  ScalingSolver solver(std::make_unique<UmfpackSolver>());
+  EXPECT_EQ(solver.Name(), "scaling(umfpack)");
+  Vector x;
+  solver.Initialize(A);
+  solver.Solve(A, x, b);
+  EXPECT_LT(RelativeError(d.cwiseProduct(x), z), 1e-10);
+  // S = |diag|^-1/2: 1 / (2 d_i) here, so the scaled matrix has a unit diagonal.
+  EXPECT_DOUBLE_EQ(solver.ScaleFactors()[7], 1.0 / (2.0 * 1e8));
+  EXPECT_DOUBLE_EQ(solver.ScaleFactors()[1], 0.5);
+}
+
+}  // namespace
+}  // namespace mc

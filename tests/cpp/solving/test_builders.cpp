@@ -1,0 +1,257 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Issue 3 (solving): block and elimination builders give the same solution and reactions,
+// reactions balance the loads, the sparsity pattern is built once per DoF set, master-slave
+// constraints give the exact tied solution, singular systems name the free node/variable.
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+
+#include "core/linear_solvers/umfpack_solver.h"
+#include "core/model/master_slave_constraint.h"
+#include "core/solving/block_builder_and_solver.h"
+#include "core/solving/displacement_criteria.h"
+#include "core/solving/elimination_builder_and_solver.h"
+#include "core/solving/linear_strategy.h"
+#include "core/solving/newton_raphson_strategy.h"
+#include "core/solving/residual_based_incremental_update_static_scheme.h"
+#include "core/variables/kernel_variables.h"
+#include "test_elements.h"
+
+namespace mc {
+namespace {
+
+using test::AddLoad;
+using test::AddNode;
+using test::AddSpring;
+
+std::shared_ptr<BuilderAndSolver> MakeBuilder(const std::string& type) {
+  auto solver = std::make_shared<UmfpackSolver>();
+  if (type == "block") return std::make_shared<BlockBuilderAndSolver>(solver);
+  return std::make_shared<EliminationBuilderAndSolver>(solver);
+}
+
+// Chain 1-2-3-4-5 of springs k = 1, 2, 3, 4; node 1 fixed at 0, node 5 prescribed at 0.1,
+// load P = 5 at node 3.
+struct Chain {
+  Model model;
+  ModelPart& mp = test::MakeModelPart(model);
+  Chain() {
+    for (IndexType i = 1; i <= 5; ++i) AddNode(mp, i, static_cast<double>(i), 0.0);
+    for (IndexType i = 1; i <= 4; ++i) AddSpring(mp, i, i, i + 1, static_cast<double>(i));
+    AddLoad(mp, 1, 3, 5.0);
+    mp.GetNode(1).Fix(DISPLACEMENT_X);
+    mp.GetNode(5).Fix(DISPLACEMENT_X);
+    mp.GetNode(5).FastGetSolutionStepValue(DISPLACEMENT_X) = 0.1;
+  }
+};
+
+// The same chain solved densely: free unknowns u2, u3, u4.
+Eigen::Vector3d ChainReference() {
+  const double k[4] = {1, 2, 3, 4};
+  Eigen::Matrix3d K;
+  K << k[0] + k[1], -k[1], 0, -k[1], k[1] + k[2], -k[2], 0, -k[2], k[2] + k[3];
+  const Eigen::Vector3d f(0.0, 5.0, k[3] * 0.1);
+  return K.lu().solve(f);
+}
+
+class BothBuilders : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(BothBuilders, LinearChainMatchesDenseSolutionAndReactionsBalanceLoads) {
+  Chain c;
+  LinearStrategy strategy(c.mp, std::make_shared<ResidualBasedIncrementalUpdateStaticScheme>(), MakeBuilder(GetParam()));
+  ASSERT_TRUE(strategy.Solve());
+  const Eigen::Vector3d ref = ChainReference();
+  for (int i = 0; i < 3; ++i)
+    EXPECT_NEAR(c.mp.GetNode(i + 2).FastGetSolutionStepValue(DISPLACEMENT_X), ref[i], 1e-13);
+  EXPECT_DOUBLE_EQ(c.mp.GetNode(5).FastGetSolutionStepValue(DISPLACEMENT_X), 0.1);
+  // REACTION is the force the support exerts on the structure.
+  const double r1 = c.mp.GetNode(1).FastGetSolutionStepValue(REACTION_X);
+  const double r5 = c.mp.GetNode(5).FastGetSolutionStepValue(REACTION_X);
+  EXPECT_NEAR(r1, -1.0 * ref[0], 1e-12);            // spring 1 stretched by u2 pulls node 1 to +x
+  EXPECT_NEAR(r5, 4.0 * (0.1 - ref[2]), 1e-12);     // support holds node 5 at 0.1
+  EXPECT_NEAR(r1 + r5 + 5.0, 0.0, 1e-12);           // equilibrium of the whole chain
+  EXPECT_DOUBLE_EQ(c.mp.GetNode(3).FastGetSolutionStepValue(REACTION_X), 0.0);
+}
+
+TEST_P(BothBuilders, BarUnderPointLoadReactionOpposesLoad) {
+  Model model;
+  ModelPart& mp = test::MakeModelPart(model);
+  AddNode(mp, 1, 0.0, 0.0);
+  AddNode(mp, 2, 1.0, 0.0);
+  AddSpring(mp, 1, 1, 2, 100.0);
+  AddLoad(mp, 1, 2, 7.0);
+  mp.GetNode(1).Fix(DISPLACEMENT_X);
+  LinearStrategy strategy(mp, std::make_shared<ResidualBasedIncrementalUpdateStaticScheme>(), MakeBuilder(GetParam()));
+  ASSERT_TRUE(strategy.Solve());
+  EXPECT_NEAR(mp.GetNode(2).FastGetSolutionStepValue(DISPLACEMENT_X), 0.07, 1e-15);
+  EXPECT_NEAR(mp.GetNode(1).FastGetSolutionStepValue(REACTION_X), -7.0, 1e-12);
+}
+
+TEST_P(BothBuilders, PatternIsBuiltOncePerDofSet) {
+  Model model;
+  ModelPart& mp = test::MakeModelPart(model);
+  for (IndexType i = 1; i <= 4; ++i) AddNode(mp, i, static_cast<double>(i), 0.0);
+  for (IndexType i = 1; i <= 3; ++i) AddSpring(mp, i, i, i + 1, 1.0, 1.0);
+  auto& load = AddLoad(mp, 1, 4, 0.0);
+  mp.GetNode(1).Fix(DISPLACEMENT_X);
+  auto builder = MakeBuilder(GetParam());
+  NewtonRaphsonStrategy strategy(mp, std::make_shared<ResidualBasedIncrementalUpdateStaticScheme>(),
+                                 std::make_shared<DisplacementCriteria>(1e-10, 1e-14), builder, 30);
+  int iterations = 0;
+  for (int step = 1; step <= 3; ++step) {
+    mp.CloneTimeStep(step);
+    load.SetForce(2.0 * step);
+    ASSERT_TRUE(strategy.Solve());
+    iterations += static_cast<int>(strategy.IterationHistory().size());
+  }
+  EXPECT_GT(iterations, 6);
+  EXPECT_EQ(builder->PatternBuildCount(), 1);
+  const auto& t = builder->GetTimings();
+  EXPECT_GT(t.build, 0.0);
+  EXPECT_GT(t.solve, 0.0);
+  EXPECT_GE(t.sparsity, 0.0);
+
+  strategy.SetReformDofsAtEachStep(true);
+  for (int step = 4; step <= 5; ++step) {
+    mp.CloneTimeStep(step);
+    ASSERT_TRUE(strategy.Solve());
+  }
+  EXPECT_EQ(builder->PatternBuildCount(), 3);
+}
+
+// Two springs 1-2 (k1) and 3-4 (k2), nodes 1 and 3 fixed, u4 = 2 u2 + 0.01, load P at node 2.
+// Energy minimisation gives u2 = (P - 2 k2 c) / (k1 + 4 k2).
+TEST_P(BothBuilders, MasterSlaveConstraintGivesTiedSolution) {
+  Model model;
+  ModelPart& mp = test::MakeModelPart(model);
+  for (IndexType i = 1; i <= 4; ++i) AddNode(mp, i, static_cast<double>(i), 0.0);
+  const double k1 = 10.0, k2 = 3.0, P = 4.0, w = 2.0, offset = 0.01;
+  AddSpring(mp, 1, 1, 2, k1);
+  AddSpring(mp, 2, 3, 4, k2);
+  AddLoad(mp, 1, 2, P);
+  mp.GetNode(1).Fix(DISPLACEMENT_X);
+  mp.GetNode(3).Fix(DISPLACEMENT_X);
+  auto builder = MakeBuilder(GetParam());
+  builder->AddConstraint(std::make_shared<MasterSlaveConstraint>(
+      1, mp.GetNode(4).GetDof(DISPLACEMENT_X), std::vector<Dof*>{&mp.GetNode(2).GetDof(DISPLACEMENT_X)},
+      std::vector<double>{w}, offset));
+  LinearStrategy strategy(mp, std::make_shared<ResidualBasedIncrementalUpdateStaticScheme>(), builder);
+  ASSERT_TRUE(strategy.Solve());
+  const double u2 = (P - w * k2 * offset) / (k1 + w * w * k2);
+  EXPECT_NEAR(mp.GetNode(2).FastGetSolutionStepValue(DISPLACEMENT_X), u2, 1e-14);
+  EXPECT_NEAR(mp.GetNode(4).FastGetSolutionStepValue(DISPLACEMENT_X), w * u2 + offset, 1e-14);
+  const double r1 = mp.GetNode(1).FastGetSolutionStepValue(REACTION_X);
+  const double r3 = mp.GetNode(3).FastGetSolutionStepValue(REACTION_X);
+  EXPECT_NEAR(r1, -k1 * u2, 1e-12);
+  EXPECT_NEAR(r3, -k2 * (w * u2 + offset), 1e-12);
+  EXPECT_EQ(builder->SystemSize(), GetParam() == "block" ? 4u : 1u);
+}
+
+TEST_P(BothBuilders, SingularSystemNamesTheFreeDofs) {
+  Model model;
+  ModelPart& mp = test::MakeModelPart(model);
+  AddNode(mp, 4, 0.0, 0.0, 2);
+  AddNode(mp, 7, 1.0, 0.0, 2);
+  AddSpring(mp, 1, 4, 7, 1.0, 0.0, 2);  // along x: no stiffness in y
+  AddLoad(mp, 1, 7, 1.0);
+  mp.GetNode(4).Fix(DISPLACEMENT_X);
+  LinearStrategy strategy(mp, std::make_shared<ResidualBasedIncrementalUpdateStaticScheme>(), MakeBuilder(GetParam()));
+  try {
+    strategy.Solve();
+    FAIL() << "a singular system was solved";
+  } catch (const SolutionError& e) {
+    EXPECT_STREQ(e.what(), "singular system: no stiffness for DISPLACEMENT_Y of nodes 4, 7 (are they constrained?)");
+  }
+}
+
+TEST_P(BothBuilders, SingularListIsCappedAtTenDofs) {
+  Model model;
+  ModelPart& mp = test::MakeModelPart(model);
+  for (IndexType i = 1; i <= 16; ++i) AddNode(mp, i, static_cast<double>(i), 0.0, 2);
+  for (IndexType i = 1; i <= 15; ++i) AddSpring(mp, i, i, i + 1, 1.0, 0.0, 2);
+  mp.GetNode(1).Fix(DISPLACEMENT_X);
+  LinearStrategy strategy(mp, std::make_shared<ResidualBasedIncrementalUpdateStaticScheme>(), MakeBuilder(GetParam()));
+  try {
+    strategy.Solve();
+    FAIL() << "a singular system was solved";
+  } catch (const SolutionError& e) {
+    EXPECT_STREQ(e.what(),
+                 "singular system: no stiffness for DISPLACEMENT_Y of nodes 1, 2, 3, 4, 5, 6, 7, 8, 9, 10 and 6 "
+                 "more DoFs (are they constrained?)");
+  }
+}
+
+TEST_P(BothBuilders, FloatingStructureIsReportedBySolverPivot) {
+  Model model;
+  ModelPart& mp = test::MakeModelPart(model);
+  AddNode(mp, 1, 0.0, 0.0);
+  AddNode(mp, 2, 1.0, 0.0);
+  AddSpring(mp, 1, 1, 2, 1.0);
+  LinearStrategy strategy(mp, std::make_shared<ResidualBasedIncrementalUpdateStaticScheme>(), MakeBuilder(GetParam()));
+  try {
+    strategy.Solve();
+    FAIL() << "a singular system was solved";
+  } catch (const SolutionError& e) {
+    EXPECT_NE(std::string(e.what()).find("singular system"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("DISPLACEMENT_X of node"), std::string::npos) << e.what();
+  }
+}
+
+TEST_P(BothBuilders, FixedSlaveIsAnInputError) {
+  Model model;
+  ModelPart& mp = test::MakeModelPart(model);
+  AddNode(mp, 1, 0.0, 0.0);
+  AddNode(mp, 2, 1.0, 0.0);
+  AddSpring(mp, 1, 1, 2, 1.0);
+  mp.GetNode(1).Fix(DISPLACEMENT_X);
+  mp.GetNode(2).Fix(DISPLACEMENT_X);
+  auto builder = MakeBuilder(GetParam());
+  builder->AddConstraint(std::make_shared<MasterSlaveConstraint>(
+      9, mp.GetNode(2).GetDof(DISPLACEMENT_X), std::vector<Dof*>{&mp.GetNode(1).GetDof(DISPLACEMENT_X)},
+      std::vector<double>{1.0}));
+  LinearStrategy strategy(mp, std::make_shared<ResidualBasedIncrementalUpdateStaticScheme>(), builder);
+  try {
+    strategy.Solve();
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("constraint 9"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("DISPLACEMENT_X of node 2 is fixed"), std::string::npos) << e.what();
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Builders, BothBuilders, ::testing::Values("block", "elimination"));
+
+TEST(BlockBuilder, DirichletRowsAndColumnsAreZeroedKeepingSymmetry) {
+  Chain c;
+  auto builder = std::make_shared<BlockBuilderAndSolver>(std::make_shared<UmfpackSolver>());
+  ResidualBasedIncrementalUpdateStaticScheme scheme;
+  builder->SetUpDofSet(c.mp, scheme);
+  builder->SetUpSystem();
+  builder->Build(scheme, c.mp);
+  const Eigen::MatrixXd A(builder->SystemMatrix());
+  EXPECT_EQ((A - A.transpose()).norm(), 0.0);
+  EXPECT_DOUBLE_EQ(builder->DirichletScale(), 7.0);  // largest free diagonal: k3 + k4
+  for (int fixed : {0, 4}) {
+    EXPECT_DOUBLE_EQ(A(fixed, fixed), 7.0);
+    EXPECT_DOUBLE_EQ(A.row(fixed).cwiseAbs().sum(), 7.0);
+    EXPECT_DOUBLE_EQ(builder->SystemRhs()[fixed], 0.0);
+  }
+  EXPECT_TRUE(A.selfadjointView<Eigen::Lower>().llt().info() == Eigen::Success);
+}
+
+TEST(EliminationBuilder, FixityChangeRenumbers) {
+  Chain c;
+  auto builder = std::make_shared<EliminationBuilderAndSolver>(std::make_shared<UmfpackSolver>());
+  ResidualBasedIncrementalUpdateStaticScheme scheme;
+  builder->SetUpDofSet(c.mp, scheme);
+  builder->SetUpSystem();
+  builder->Build(scheme, c.mp);
+  EXPECT_EQ(builder->SystemSize(), 3u);
+  c.mp.GetNode(5).Free(DISPLACEMENT_X);
+  builder->Build(scheme, c.mp);
+  EXPECT_EQ(builder->SystemSize(), 4u);
+  EXPECT_EQ(builder->PatternBuildCount(), 2);
+}
+
+}  // namespace
+}  // namespace mc

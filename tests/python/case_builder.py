@@ -1,0 +1,121 @@
+"""Writes small Kratos-format cases (mdpa + ProjectParameters.json + materials.json) for tests."""
+from __future__ import annotations
+
+import json
+import os
+
+import numpy as np
+
+
+def structured_quads(nx: int, ny: int, lx: float, ly: float, order: int = 1):
+    """Nodes and counter-clockwise quadrilaterals (4, 8 or 9 nodes for order 1, 2 ('serendipity') or
+    3 ('lagrange' 9-node)) on [0, lx] x [0, ly]. Returns (coords (n, 2), connectivity list of tuples)."""
+    step = 1 if order == 1 else 2
+    mx, my = nx * step, ny * step
+    ids = np.zeros((mx + 1, my + 1), dtype=int)
+    coords = []
+    for i in range(mx + 1):
+        for j in range(my + 1):
+            if order == 2 and i % 2 == 1 and j % 2 == 1:
+                continue  # serendipity elements have no centre node
+            ids[i, j] = len(coords) + 1
+            coords.append((lx * i / mx, ly * j / my))
+    cells = []
+    for ex in range(nx):
+        for ey in range(ny):
+            i, j = ex * step, ey * step
+            corners = (ids[i, j], ids[i + step, j], ids[i + step, j + step], ids[i, j + step])
+            if order == 1:
+                cells.append(corners)
+            else:
+                mids = (ids[i + 1, j], ids[i + 2, j + 1], ids[i + 1, j + 2], ids[i, j + 1])
+                cells.append(corners + mids + ((ids[i + 1, j + 1],) if order == 3 else ()))
+    return np.array(coords), cells
+
+
+def structured_hexes(nx: int, ny: int, nz: int, lx: float, ly: float, lz: float):
+    ids = np.arange(1, (nx + 1) * (ny + 1) * (nz + 1) + 1).reshape(nx + 1, ny + 1, nz + 1)
+    coords = [(lx * i / nx, ly * j / ny, lz * k / nz) for i in range(nx + 1) for j in range(ny + 1) for k in range(nz + 1)]
+    cells = []
+    for i in range(nx):
+        for j in range(ny):
+            for k in range(nz):
+                cells.append((ids[i, j, k], ids[i + 1, j, k], ids[i + 1, j + 1, k], ids[i, j + 1, k],
+                              ids[i, j, k + 1], ids[i + 1, j, k + 1], ids[i + 1, j + 1, k + 1], ids[i, j + 1, k + 1]))
+    return np.array(coords), cells
+
+
+def write_mdpa(path: str, coords, elements: dict, conditions: dict | None = None, sub_parts: dict | None = None):
+    """elements / conditions: {registered name: [connectivity, ...]} (ids numbered consecutively);
+    sub_parts: {name: {"nodes": [...], "elements": [...], "conditions": [...]}}."""
+    conditions = conditions or {}
+    sub_parts = sub_parts or {}
+    with open(path, "w") as f:
+        f.write("Begin ModelPartData\nEnd ModelPartData\n\nBegin Properties 0\nEnd Properties\n\nBegin Nodes\n")
+        for k, x in enumerate(coords):
+            x = list(x) + [0.0] * (3 - len(x))
+            f.write(f"{k + 1} {x[0]:.16e} {x[1]:.16e} {x[2]:.16e}\n")
+        f.write("End Nodes\n\n")
+        for block, entities in (("Elements", elements), ("Conditions", conditions)):
+            counter = 0
+            for name, cells in entities.items():
+                f.write(f"Begin {block} {name}\n")
+                for cell in cells:
+                    counter += 1
+                    f.write(f"{counter} 0 " + " ".join(str(int(n)) for n in cell) + "\n")
+                f.write(f"End {block}\n\n")
+        for name, content in sub_parts.items():
+            f.write(f"Begin SubModelPart {name}\n")
+            for key, block in (("nodes", "Nodes"), ("elements", "Elements"), ("conditions", "Conditions")):
+                f.write(f"  Begin SubModelPart{block}\n")
+                for i in content.get(key, []):
+                    f.write(f"    {int(i)}\n")
+                f.write(f"  End SubModelPart{block}\n")
+            f.write("End SubModelPart\n\n")
+
+
+def materials(part: str, law: str, young: float, poisson: float, **extra) -> dict:
+    variables = {"YOUNG_MODULUS": young, "POISSON_RATIO": poisson, **extra}
+    return {"properties": [{"model_part_name": part, "properties_id": 1,
+                            "Material": {"constitutive_law": {"name": law}, "Variables": variables, "Tables": {}}}]}
+
+
+def fix_process(part: str, value, constrained=(True, True, True), variable="DISPLACEMENT", interval=(0.0, "End")) -> dict:
+    return {"python_module": "assign_vector_variable_process", "kratos_module": "KratosMultiphysics",
+            "Parameters": {"model_part_name": part, "variable_name": variable, "value": list(value),
+                           "constrained": list(constrained), "interval": list(interval)}}
+
+
+def condition_load_process(part: str, variable: str, value) -> dict:
+    return {"python_module": "assign_vector_variable_to_conditions_process", "kratos_module": "KratosMultiphysics",
+            "Parameters": {"model_part_name": part, "variable_name": variable, "value": list(value),
+                           "interval": [0.0, "End"]}}
+
+
+def project_parameters(name: str, domain_size: int, *, constraints=(), loads=(), solver: dict | None = None,
+                       end_time: float = 1.0, time_step: float = 1.0, outputs: dict | None = None) -> dict:
+    solver_settings = {
+        "solver_type": "Static", "model_part_name": "Structure", "domain_size": domain_size, "echo_level": 0,
+        "analysis_type": "non_linear",
+        "model_import_settings": {"input_type": "mdpa", "input_filename": name},
+        "material_import_settings": {"materials_filename": f"{name}_materials.json"},
+        "time_stepping": {"time_step": time_step},
+        "convergence_criterion": "residual_criterion",
+        "residual_relative_tolerance": 1e-10, "residual_absolute_tolerance": 1e-12, "max_iteration": 20,
+        "linear_solver_settings": {"solver_type": "skyline_lu_factorization"},
+    }
+    solver_settings.update(solver or {})
+    return {"problem_data": {"problem_name": name, "parallel_type": "OpenMP", "echo_level": 0,
+                             "start_time": 0.0, "end_time": end_time},
+            "solver_settings": solver_settings,
+            "processes": {"constraints_process_list": list(constraints), "loads_process_list": list(loads)},
+            "output_processes": outputs or {}}
+
+
+def write_case(folder, name: str, parameters: dict, materials_data: dict) -> str:
+    path = os.path.join(folder, f"{name}_parameters.json")
+    with open(path, "w") as f:
+        json.dump(parameters, f, indent=2)
+    with open(os.path.join(folder, f"{name}_materials.json"), "w") as f:
+        json.dump(materials_data, f, indent=2)
+    return path
