@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <pybind11/numpy.h>
 
+#include <map>
+
 #include "core/model/constitutive_law.h"
 #include "core/model/model.h"
 #include "core/model/registry.h"
@@ -67,6 +69,101 @@ void SetNodalValues(ModelPart& part, const VariableData& var, py::array_t<double
     double* dst = nodes[i]->StepData(step) + offset;
     for (std::size_t k = 0; k < width; ++k) dst[k] = src[i * width + k];
   }
+}
+
+
+/// Non-historical nodal values as (n,) or (n, 3), node-id order.
+py::array_t<double> NodalNonHistoricalValues(const ModelPart& part, const VariableData& var) {
+  const auto& nodes = part.Nodes();
+  const std::size_t n = nodes.size();
+  if (var.Type() == ValueType::Array3) {
+    py::array_t<double> out({py::ssize_t(n), py::ssize_t(3)});
+    auto* d = out.mutable_data();
+    const auto& v3 = static_cast<const Variable<Array3>&>(var);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Array3 value = nodes[i]->GetValue(v3);
+      for (int k = 0; k < 3; ++k) d[3 * i + k] = value[k];
+    }
+    return out;
+  }
+  py::array_t<double> out{py::ssize_t(n)};
+  auto* d = out.mutable_data();
+  for (std::size_t i = 0; i < n; ++i) {
+    switch (var.Type()) {
+      case ValueType::Double: d[i] = nodes[i]->GetValue(static_cast<const Variable<double>&>(var)); break;
+      case ValueType::Int: d[i] = nodes[i]->GetValue(static_cast<const Variable<int>&>(var)); break;
+      case ValueType::Bool: d[i] = nodes[i]->GetValue(static_cast<const Variable<bool>&>(var)); break;
+      default: throw InputError(Concat(var.Name(), " (", ValueTypeName(var.Type()), ") cannot be written per node"));
+    }
+  }
+  return out;
+}
+
+/// Elements or conditions grouped by geometry name: {name: (ids (m,), node ids (m, k))}.
+template <class Container>
+py::dict Connectivity(const Container& entities) {
+  std::map<std::string, std::pair<std::vector<std::int64_t>, std::vector<std::int64_t>>> groups;
+  std::map<std::string, std::size_t> widths;
+  for (const auto* e : entities) {
+    const Geometry& g = e->GetGeometry();
+    auto& [ids, nodes] = groups[g.Name()];
+    widths[g.Name()] = g.PointsNumber();
+    ids.push_back(static_cast<std::int64_t>(e->Id()));
+    for (const Node* node : g.Nodes()) nodes.push_back(static_cast<std::int64_t>(node->Id()));
+  }
+  py::dict out;
+  for (auto& [name, group] : groups) {
+    const py::ssize_t m = py::ssize_t(group.first.size());
+    const py::ssize_t k = py::ssize_t(widths[name]);
+    py::array_t<std::int64_t> ids(m, group.first.data());
+    py::array_t<std::int64_t> conn({m, k}, group.second.data());
+    out[py::str(name)] = py::make_tuple(ids, conn);
+  }
+  return out;
+}
+
+/// Mean over the integration points of each listed entity: (m,) for doubles, (m, 3) for Array3,
+/// (m, w) for vectors (zero-padded to the widest) and (m, 9) for matrices (row-major, padded to 3x3).
+template <class T>
+py::array_t<double> IntegrationPointMeans(const ModelPart& part, const VariableData& var,
+                                          const std::vector<IndexType>& ids, bool conditions) {
+  const ProcessInfo& info = part.GetProcessInfo();
+  std::vector<Vector> means(ids.size());
+  Eigen::Index width = 0;
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    Entity& e = conditions ? static_cast<Entity&>(part.GetCondition(ids[i])) : static_cast<Entity&>(part.GetElement(ids[i]));
+    std::vector<T> values;
+    e.CalculateOnIntegrationPoints(static_cast<const Variable<T>&>(var), values, info);
+    Vector mean;
+    for (const T& v : values) {
+      Vector flat;
+      if constexpr (std::is_same_v<T, double>) {
+        flat = Vector::Constant(1, v);
+      } else if constexpr (std::is_same_v<T, Matrix>) {
+        Matrix padded = Matrix::Zero(3, 3);
+        padded.topLeftCorner(std::min<Eigen::Index>(3, v.rows()), std::min<Eigen::Index>(3, v.cols())) =
+            v.topLeftCorner(std::min<Eigen::Index>(3, v.rows()), std::min<Eigen::Index>(3, v.cols()));
+        flat = Eigen::Map<const Eigen::Matrix<double, 9, 1>>(Matrix(padded.transpose()).data());
+      } else {
+        flat = v;
+      }
+      if (mean.size() < flat.size()) mean.conservativeResizeLike(Vector::Zero(flat.size()));
+      mean.head(flat.size()) += flat / static_cast<double>(values.size());
+    }
+    width = std::max(width, mean.size());
+    means[i] = std::move(mean);
+  }
+  if constexpr (std::is_same_v<T, Array3>) width = 3;
+  if constexpr (std::is_same_v<T, Matrix>) width = 9;
+  const bool scalar = std::is_same_v<T, double>;
+  py::array_t<double> out(scalar ? std::vector<py::ssize_t>{py::ssize_t(ids.size())}
+                                 : std::vector<py::ssize_t>{py::ssize_t(ids.size()), py::ssize_t(width)});
+  auto* d = out.mutable_data();
+  const Eigen::Index stride = scalar ? 1 : width;
+  std::fill(d, d + ids.size() * stride, 0.0);
+  for (std::size_t i = 0; i < ids.size(); ++i)
+    for (Eigen::Index k = 0; k < means[i].size() && k < stride; ++k) d[i * stride + k] = means[i][k];
+  return out;
 }
 
 template <class Container>
@@ -243,6 +340,30 @@ void AddModelToPython(py::module_& m) {
       .def("GetNodalValues", &NodalValues, py::arg("variable"), py::arg("step") = 0,
            "Historical values of every node, shape (n,) or (n, 3), in node-id order.")
       .def("SetNodalValues", &SetNodalValues, py::arg("variable"), py::arg("values"), py::arg("step") = 0)
+      .def("GetNodalNonHistoricalValues", &NodalNonHistoricalValues, py::arg("variable"),
+           "Non-historical values of every node, shape (n,) or (n, 3), in node-id order.")
+      .def("GetNodalFlags", [](const ModelPart& p, const Flag& flag) {
+        py::array_t<bool> out(py::ssize_t(p.NumberOfNodes()));
+        auto* d = out.mutable_data();
+        std::size_t i = 0;
+        for (const Node* n : p.Nodes()) d[i++] = n->Is(flag);
+        return out;
+      }, py::arg("flag"))
+      .def("EntityConnectivity", [](const ModelPart& p, bool conditions) {
+        return conditions ? Connectivity(p.Conditions()) : Connectivity(p.Elements());
+      }, py::arg("conditions") = false,
+         "{geometry name: (entity ids (m,), node ids (m, k))} of the elements (or conditions).")
+      .def("IntegrationPointMeans", [](const ModelPart& p, const VariableData& v, const std::vector<IndexType>& ids,
+                                       bool conditions) {
+        switch (v.Type()) {
+          case ValueType::Double: return IntegrationPointMeans<double>(p, v, ids, conditions);
+          case ValueType::Array3: return IntegrationPointMeans<Array3>(p, v, ids, conditions);
+          case ValueType::Vector: return IntegrationPointMeans<Vector>(p, v, ids, conditions);
+          case ValueType::Matrix: return IntegrationPointMeans<Matrix>(p, v, ids, conditions);
+          default: throw InputError(Concat(v.Name(), " cannot be computed on integration points"));
+        }
+      }, py::arg("variable"), py::arg("entity_ids"), py::arg("conditions") = false,
+         "Mean over the integration points of each listed entity (see the writers).")
       .def("__repr__", [](const ModelPart& p) {
         return Concat("<ModelPart ", p.FullName(), ": ", p.NumberOfNodes(), " nodes, ", p.NumberOfElements(),
                       " elements, ", p.NumberOfConditions(), " conditions>");

@@ -15,7 +15,7 @@ import time as wallclock
 from contextlib import contextmanager
 
 from . import _core
-from .processes import create_process
+from .processes import create_process_lists
 from .project_parameters import read_project_parameters
 from .solvers import create_solver
 from .utilities import warn
@@ -126,20 +126,7 @@ class StructuralMechanicsAnalysis:
         return [*self.processes, *self.output_processes]
 
     def _create_processes(self, block: str):
-        if not self.parameters.Has(block):
-            return []
-        lists = self.parameters[block]
-        created = []
-        # Kratos keeps JSON objects sorted, so lists run in alphabetical order of their names.
-        for name in sorted(lists.keys()):
-            if name.startswith("_"):
-                continue
-            items = lists[name]
-            if not items.IsArray():
-                raise _core.InputError(f"{items.Where()}: a process list must be an array")
-            for i in range(items.size()):
-                created.append(create_process(items[i], self.model))
-        return created
+        return create_process_lists(self.parameters[block], self.model) if self.parameters.Has(block) else []
 
     def _report_non_convergence(self) -> None:
         history = self.solver.LastIterationHistory()

@@ -4,6 +4,7 @@
 #include <suitesparse/umfpack.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cassert>
 #include <vector>
 
@@ -44,12 +45,22 @@ void UmfpackSolver::Solve(const SparseMatrix& A, Vector& x, const Vector& b) {
   const SparseMatrix& M = CompressedView(A, compressed_);
   if (symbolic_ == nullptr || !pattern_.Matches(M)) Initialize(M);
   FreeNumeric();
+  double info[UMFPACK_INFO];
   const int status = umfpack_di_numeric(M.outerIndexPtr(), M.innerIndexPtr(), M.valuePtr(), symbolic_, &numeric_,
-                                        nullptr, nullptr);
+                                        nullptr, info);
   if (status == UMFPACK_WARNING_singular_matrix) {
-    const long column = FirstZeroPivotColumn();
+    const long column = SmallestPivotColumn();
     FreeNumeric();
     throw SingularMatrixError(Concat("UMFPACK: singular matrix, zero pivot at equation ", column), column);
+  }
+  // A structure free to move as a rigid body gives a pivot that is zero up to round-off rather
+  // than exactly zero; its solution would be meaningless, so it is reported as singular too.
+  if (status == UMFPACK_OK && info[UMFPACK_RCOND] < kSingularReciprocalCondition) {
+    const long column = SmallestPivotColumn();
+    FreeNumeric();
+    throw SingularMatrixError(Concat("UMFPACK: numerically singular matrix (reciprocal condition estimate ",
+                                     info[UMFPACK_RCOND], "), smallest pivot at equation ", column),
+                              column);
   }
   if (status != UMFPACK_OK) {
     FreeNumeric();
@@ -62,8 +73,8 @@ void UmfpackSolver::Solve(const SparseMatrix& A, Vector& x, const Vector& b) {
 }
 
 // The diagonal of U in pivot order, with the column permutation Q, gives the original column of
-// the first zero pivot.
-long UmfpackSolver::FirstZeroPivotColumn() const {
+// the smallest pivot (the first zero one when there are exact zeros).
+long UmfpackSolver::SmallestPivotColumn() const {
   int n_row = 0, n_col = 0, nz_diag = 0, lnz = 0, unz = 0, recip = 0;
   if (umfpack_di_get_lunz(&lnz, &unz, &n_row, &n_col, &nz_diag, numeric_) != UMFPACK_OK) return -1;
   std::vector<int> q(n_col);
@@ -72,10 +83,13 @@ long UmfpackSolver::FirstZeroPivotColumn() const {
                              &recip, nullptr, numeric_) != UMFPACK_OK) {
     return -1;
   }
+  if (diagonal.empty()) return -1;
+  std::size_t smallest = 0;
   for (std::size_t k = 0; k < diagonal.size(); ++k) {
     if (diagonal[k] == 0.0) return q[k];
+    if (std::abs(diagonal[k]) < std::abs(diagonal[smallest])) smallest = k;
   }
-  return -1;
+  return q[smallest];
 }
 
 void UmfpackSolver::FreeNumeric() {

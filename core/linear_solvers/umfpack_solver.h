@@ -21,7 +21,9 @@ class UmfpackSolver : public LinearSolver {
   std::string Name() const override { return "umfpack"; }
   bool IsDirect() const override { return true; }
   void Initialize(const SparseMatrix& A) override;
-  /// Throws SingularMatrixError naming the column (unknown) of the first zero pivot.
+  /// Throws SingularMatrixError naming the column (unknown) of the first zero pivot, or of the
+  /// smallest pivot when UMFPACK's reciprocal condition estimate is below
+  /// kSingularReciprocalCondition (singular up to round-off).
   void Solve(const SparseMatrix& A, Vector& x, const Vector& b) override;
   void Clear() override;
 
@@ -29,7 +31,11 @@ class UmfpackSolver : public LinearSolver {
   int SymbolicAnalysesNumber() const noexcept { return symbolic_count_; }
 
  private:
-  long FirstZeroPivotColumn() const;
+  /// Below this, min|U_ii| / max|U_ii| of the row-scaled factorization is round-off: a rigid-body
+  /// mode, not an ill-conditioned but meaningful system.
+  static constexpr double kSingularReciprocalCondition = 1e-15;
+
+  long SmallestPivotColumn() const;
   void FreeNumeric();
 
   void* symbolic_ = nullptr;

@@ -6,6 +6,7 @@ built in a hidden staging folder and moved into place at ``ExecuteFinalize``.
 """
 from __future__ import annotations
 
+import json
 import logging
 import os
 import pathlib
@@ -348,21 +349,19 @@ class GidOutputProcess(VtkOutputProcess):
         results = _core.Parameters()
         if settings.Has("postprocess_parameters") and settings["postprocess_parameters"].Has("result_file_configuration"):
             results = settings["postprocess_parameters"]["result_file_configuration"]
-        vtk = _core.Parameters()
-        vtk.AddString("model_part_name", settings["model_part_name"].GetString() if settings.Has("model_part_name") else "")
-        vtk.AddString("output_path", f"{output_name}_vtk")
+        vtk: dict = {"model_part_name": settings["model_part_name"].GetString() if settings.Has("model_part_name") else "",
+                     "output_path": f"{output_name}_vtk"}
         translation = {"nodal_results": "nodal_solution_step_data_variables",
                        "nodal_nonhistorical_results": "nodal_data_value_variables",
                        "nodal_flags_results": "nodal_flags", "gauss_point_results": "gauss_point_variables_in_elements"}
         for gid_key, vtk_key in translation.items():
             if results.Has(gid_key):
-                vtk.AddStringArray(vtk_key, results[gid_key].GetStringArray())
+                vtk[vtk_key] = results[gid_key].GetStringArray()
         if results.Has("output_control_type"):
-            control = results["output_control_type"].GetString()
-            vtk.AddString("output_control_type", "time" if control.startswith("time") else "step")
+            vtk["output_control_type"] = "time" if results["output_control_type"].GetString().startswith("time") else "step"
         for key in ("output_interval", "output_frequency"):
             if results.Has(key):
-                vtk.AddDouble("output_interval", results[key].GetDouble())
+                vtk["output_interval"] = results[key].GetDouble()
         LOG.warning("gid_output_process: GiD files are not written; writing the same results as VTU/PVD to '%s'",
                     f"{output_name}_vtk")
-        super().__init__(model, vtk)
+        super().__init__(model, _core.Parameters(json.dumps(vtk)))

@@ -8,12 +8,12 @@ registry form ``{"name", "parameters"}``. Dispatch is by (``kratos_module`` with
 """
 from __future__ import annotations
 
-import difflib
 import re
 import sys
 
 from .. import _core
 from ..process import Process
+from ..utilities import nearest
 from .assign_scalar_variable_process import AssignScalarVariableProcess
 from .assign_scalar_variable_to_conditions_process import AssignScalarVariableToConditionsProcess
 from .assign_vector_by_direction_process import AssignVectorByDirectionProcess
@@ -93,10 +93,9 @@ def find_process_class(kratos_module: str | None, python_module: str) -> type[Pr
     if len(set(same_name)) == 1:
         return same_name[0]
     known = sorted({name for _, name in PROCESS_REGISTRY})
-    nearest = difflib.get_close_matches(python_module, known, n=3, cutoff=0.4)
-    hint = f"; did you mean {', '.join(repr(n) for n in nearest)}?" if nearest else ""
     where = f" of module '{kratos_module}'" if kratos_module else ""
-    raise _core.InputError(f"unknown process python_module '{python_module}'{where}{hint} "
+    raise _core.InputError(f"unknown process python_module '{python_module}'{where}"
+                           f"{nearest(python_module, known, cutoff=0.4)} "
                            f"(known: {', '.join(known)})")
 
 

@@ -9,9 +9,9 @@
 """
 from __future__ import annotations
 
-import difflib
 
 from .. import _core
+from ..utilities import nearest
 
 _LEGACY_ROOT_ALIASES = ("computing_domain",)
 
@@ -43,6 +43,4 @@ def resolve_model_part(model, name: str):
                                    "write the full dotted name")
     known = [part.FullName() for part in _all_parts(model)]
     candidates = known + [full.rsplit(".", 1)[-1] for full in known]
-    nearest = difflib.get_close_matches(name, candidates, n=3, cutoff=0.5)
-    hint = f" (did you mean {', '.join(repr(n) for n in dict.fromkeys(nearest))}?)" if nearest else ""
-    raise _core.InputError(f"no model part named '{name}'{hint}")
+    raise _core.InputError(f"no model part named '{name}'{nearest(name, candidates, cutoff=0.5)}")

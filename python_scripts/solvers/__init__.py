@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 from .. import _core
+from ..utilities import nearest
 from .mechanical_solver import MechanicalSolver
 from .solver_settings import validate_solver_settings
 
@@ -17,8 +18,6 @@ def create_solver(model: _core.Model, settings: _core.Parameters, case_dir: str 
     solver_type = settings["solver_type"].GetString()
     kind = SOLVER_TYPES.get(solver_type.lower())
     if kind is None:
-        from ..utilities import nearest
-
         raise _core.InputError(f"{where}.solver_type: unknown solver \"{solver_type}\""
                                f"{nearest(solver_type, ['Static', 'Dynamic'])}; valid: \"Static\", \"Dynamic\"")
     method = settings["time_integration_method"].GetString()

@@ -5,7 +5,8 @@ from __future__ import annotations
 import os
 
 from .. import _core
-from ..utilities import resolve_model_part
+from ..utilities import nearest
+from ..processes.model_part_resolution import resolve_model_part
 
 BASE_VARIABLES = ["DISPLACEMENT", "REACTION", "POSITIVE_FACE_PRESSURE", "NEGATIVE_FACE_PRESSURE",
                   "POINT_LOAD", "LINE_LOAD", "SURFACE_LOAD", "VOLUME_ACCELERATION"]
@@ -52,8 +53,6 @@ class MechanicalSolver:
             return "static"
         scheme = requested or "bossak"
         if scheme not in IMPLICIT_SCHEMES:
-            from ..utilities import nearest
-
             raise _core.InputError(f"{self.settings.Where()}.scheme_type: unknown scheme \"{scheme}\""
                                    f"{nearest(scheme, IMPLICIT_SCHEMES)}")
         if scheme not in ("bossak", "newmark", "pseudo_static"):
@@ -65,8 +64,6 @@ class MechanicalSolver:
         criterion = self.settings["convergence_criterion"].GetString().lower()
         self.settings["convergence_criterion"].SetString(criterion)
         if criterion not in CRITERIA:
-            from ..utilities import nearest
-
             hint = " (contact criteria need contact_settings)" if "contact" in criterion else ""
             raise _core.InputError(f"{self.settings.Where()}.convergence_criterion: unknown criterion "
                                    f"\"{criterion}\"{nearest(criterion, CRITERIA)}{hint}")
@@ -74,8 +71,6 @@ class MechanicalSolver:
                            ("builder_and_solver_settings", ("block", "block_lagrange", "elimination"))):
             kind = self.settings[key]["type"].GetString()
             if kind not in valid:
-                from ..utilities import nearest
-
                 raise _core.InputError(f"{self.settings.Where()}.{key}.type: unknown \"{kind}\"{nearest(kind, valid)}")
         if self.settings["solving_strategy_settings"]["type"].GetString() == "arc_length":
             raise _core.NotImplementedFeatureError(f"{self.settings.Where()}.solving_strategy_settings.type: "
@@ -218,8 +213,6 @@ class MechanicalSolver:
         settings = _core.LineSearchSettings()
         for key in advanced.keys():
             if not hasattr(settings, key):
-                from ..utilities import nearest
-
                 valid = [k for k in dir(settings) if not k.startswith("_")]
                 raise _core.InputError(f"{advanced.Where()}: unknown key '{key}'{nearest(key, valid)}")
             value = advanced[key]

@@ -67,6 +67,7 @@ def test_materials_files_apply(shared_cases, monkeypatch):
             if settings_copy.Has(key):
                 settings_copy.RemoveValue(key)
         validate_solver_settings(settings_copy)
+        settings_copy["convergence_criterion"].SetString("residual_criterion")
         solver = MechanicalSolver(model, settings_copy, dynamic=False, explicit=False)
         solver.ImportModelPart()
         part = solver.main_model_part
