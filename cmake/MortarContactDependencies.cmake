@@ -19,7 +19,7 @@ add_library(mc_build_settings INTERFACE)
 target_compile_features(mc_build_settings INTERFACE cxx_std_20)
 target_include_directories(mc_build_settings INTERFACE
   $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>
-  $<INSTALL_INTERFACE:include>)
+  $<INSTALL_INTERFACE:${MC_INSTALL_INCLUDEDIR}>)
 target_compile_options(mc_build_settings INTERFACE
   $<$<CXX_COMPILER_ID:GNU,Clang>:-Wall -Wextra -Wno-unused-parameter>
   # GCC 12 reports false positives inside std::variant moves (DataValueContainer).

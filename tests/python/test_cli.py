@@ -133,3 +133,13 @@ def test_contact_case_reports_not_implemented(shared_cases):
     result = subprocess.run([sys.executable, "-m", "mortarcontact", "run", case], capture_output=True, text=True,
                             cwd=shared_cases, timeout=300)
     assert_clean_failure(result, 3, "contact")
+
+
+def test_non_convergence_names_step_iteration_and_norms(tmp_path):
+    def edit(params):
+        params["solver_settings"]["max_iteration"] = 1
+        params["solver_settings"]["residual_relative_tolerance"] = 1e-14
+        params["solver_settings"]["residual_absolute_tolerance"] = 1e-20
+    path = square_case(tmp_path, edit=edit)
+    result = run_cli("run", str(path), cwd=tmp_path)
+    assert_clean_failure(result, 4, "step 1", "did not converge", "iteration")
