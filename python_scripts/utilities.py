@@ -2,7 +2,9 @@
 from __future__ import annotations
 
 import difflib
+import os
 import sys
+import tempfile
 
 
 
@@ -14,3 +16,19 @@ def nearest(name: str, candidates, cutoff: float = 0.6) -> str:
     """' (did you mean ...?)' for the closest candidates, or ''."""
     close = list(dict.fromkeys(difflib.get_close_matches(name, list(candidates), n=3, cutoff=cutoff)))
     return f" (did you mean {', '.join(repr(c) for c in close)}?)" if close else ""
+
+
+def write_text_atomically(path: str, text: str) -> None:
+    """Writes ``text`` to a temporary file next to ``path`` and renames it over ``path``, so that a
+    failed run never leaves a half-written file."""
+    folder = os.path.dirname(os.path.abspath(path))
+    os.makedirs(folder, exist_ok=True)
+    handle, temporary = tempfile.mkstemp(prefix=".", suffix=".tmp", dir=folder)
+    try:
+        with os.fdopen(handle, "w") as stream:
+            stream.write(text)
+        os.replace(temporary, path)
+    except BaseException:
+        if os.path.exists(temporary):
+            os.remove(temporary)
+        raise

@@ -230,7 +230,10 @@ void BuilderAndSolver::Assemble(Scheme& scheme, ModelPart& model_part, Mode mode
   const std::int64_t n_all = static_cast<std::int64_t>(dofs_.size());
   const ProcessInfo& info = model_part.GetProcessInfo();
 
-  ForEachActiveEntity(model_part, [&](Entity& e) {
+  // Elements and conditions keep separate per-thread buffers (one instantiation each): their
+  // local systems usually differ in size and a shared buffer would be reallocated at each switch.
+  auto assemble = [&](auto& e) {
+    if (!e.IsActive()) return;
     static thread_local Matrix local_lhs;
     static thread_local Vector local_rhs;
     static thread_local EquationIdVectorType ids;
@@ -269,7 +272,9 @@ void BuilderAndSolver::Assemble(Scheme& scheme, ModelPart& model_part, Mode mode
         values[pos - inner] += local_lhs(i, j);
       }
     }
-  });
+  };
+  ParallelForEachEntity(model_part.Elements(), [&](Element& e) { assemble(e); });
+  ParallelForEachEntity(model_part.Conditions(), [&](Condition& c) { assemble(c); });
 }
 
 void BuilderAndSolver::FinishResidual() {

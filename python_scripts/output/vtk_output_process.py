@@ -21,6 +21,7 @@ from .. import _core
 from ..process import OutputProcess
 from ..processes._bulk import entity_connectivity, integration_point_means, nodal_flags, nodal_values, variable_by_name
 from ..processes.model_part_resolution import resolve_model_part
+from ..utilities import write_text_atomically
 
 LOG = logging.getLogger("mortarcontact")
 
@@ -52,19 +53,6 @@ class _StagedTimeSeriesWriter(meshio.xdmf.TimeSeriesWriter):
         self.h5_filename = str(self.filename.with_suffix(".h5"))
         self.h5_file = h5py.File(self.h5_filename, "w")
         return self
-
-
-def _write_text_atomically(path: str, text: str) -> None:
-    folder = os.path.dirname(os.path.abspath(path))
-    handle, temporary = tempfile.mkstemp(prefix=".", suffix=".tmp", dir=folder)
-    try:
-        with os.fdopen(handle, "w") as stream:
-            stream.write(text)
-        os.replace(temporary, path)
-    except BaseException:
-        if os.path.exists(temporary):
-            os.remove(temporary)
-        raise
 
 
 class _PartWriter:
@@ -137,7 +125,7 @@ class _PartWriter:
         lines += [f'    <DataSet timestep="{time!r}" group="" part="0" file={quoteattr(name)}/>'
                   for time, name in self.pvd_entries]
         lines += ["  </Collection>", "</VTKFile>", ""]
-        _write_text_atomically(os.path.join(self.folder, f"{self.base_name}.pvd"), "\n".join(lines))
+        write_text_atomically(os.path.join(self.folder, f"{self.base_name}.pvd"), "\n".join(lines))
 
     def write_xdmf(self, time: float, mesh: meshio.Mesh) -> None:
         mesh_key = (mesh.points.shape, tuple((block.type, block.data.shape) for block in mesh.cells))

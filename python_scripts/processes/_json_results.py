@@ -8,12 +8,11 @@ component (``<VAR>_X/_Y/_Z``); with ``use_node_coordinates`` the node key is
 from __future__ import annotations
 
 import json
-import os
-import tempfile
 
 import numpy as np
 
 from .. import _core
+from ..utilities import write_text_atomically
 from ._bulk import is_array3, nodal_flags, nodal_values, variable_by_name
 from .model_part_resolution import resolve_model_part
 
@@ -67,18 +66,7 @@ def gauss_point_columns(element, variable_name: str, info) -> dict[str, list[flo
 
 
 def write_json_atomically(path: str, data) -> None:
-    """Writes ``data`` to a temporary file next to ``path`` and renames it over ``path``."""
-    folder = os.path.dirname(os.path.abspath(path))
-    os.makedirs(folder, exist_ok=True)
-    handle, temporary = tempfile.mkstemp(prefix=".", suffix=".tmp", dir=folder)
-    try:
-        with os.fdopen(handle, "w") as stream:
-            json.dump(data, stream, indent=4)
-        os.replace(temporary, path)
-    except BaseException:
-        if os.path.exists(temporary):
-            os.remove(temporary)
-        raise
+    write_text_atomically(path, json.dumps(data, indent=4))
 
 
 class TimeCounter:

@@ -11,7 +11,7 @@ namespace mc {
 namespace {
 
 // Right Cauchy-Green tensor C = I + 2E of a Voigt strain; throws when it is not positive.
-Eigen::Matrix3d RightCauchyGreen(const voigt::Vector6& E, const std::string& law, double& detC) {
+Eigen::Matrix3d RightCauchyGreen(const voigt::Vector6& E, const ConstitutiveLaw& law, double& detC) {
   Eigen::Matrix3d C = Eigen::Matrix3d::Identity();
   for (int a = 0; a < 6; ++a) {
     const int i = voigt::kPairs[a][0], j = voigt::kPairs[a][1];
@@ -23,7 +23,7 @@ Eigen::Matrix3d RightCauchyGreen(const voigt::Vector6& E, const std::string& law
     }
   }
   detC = C.determinant();
-  if (!(detC > 0.0)) throw SolutionError(Concat(law, ": det C = ", detC, " is not positive (inverted material point)"));
+  if (!(detC > 0.0)) throw SolutionError(Concat(law.Name(), ": det C = ", detC, " is not positive (inverted material point)"));
   return C;
 }
 
@@ -33,7 +33,7 @@ void HyperElastic3DLaw::Response3D(const Properties& properties, const voigt::Ve
                                    voigt::Matrix6& C) const {
   const auto [lambda, mu] = Lame(properties);
   double detC = 0.0;
-  const Eigen::Matrix3d Cinv = RightCauchyGreen(E, Name(), detC).inverse();
+  const Eigen::Matrix3d Cinv = RightCauchyGreen(E, *this, detC).inverse();
   const double lnJ = 0.5 * std::log(detC);
   const double beta = mu - lambda * lnJ;
   for (int a = 0; a < 6; ++a) {
@@ -49,7 +49,7 @@ void HyperElastic3DLaw::Response3D(const Properties& properties, const voigt::Ve
 double HyperElastic3DLaw::Energy3D(const Properties& properties, const voigt::Vector6& E) const {
   const auto [lambda, mu] = Lame(properties);
   double detC = 0.0;
-  const Eigen::Matrix3d C = RightCauchyGreen(E, Name(), detC);
+  const Eigen::Matrix3d C = RightCauchyGreen(E, *this, detC);
   const double lnJ = 0.5 * std::log(detC);
   return 0.5 * mu * (C.trace() - 3.0) - mu * lnJ + 0.5 * lambda * lnJ * lnJ;
 }

@@ -87,7 +87,8 @@ void ComputePoint(const Geometry& geometry, int order, int g, const NodalValues&
                   bool axisymmetric, double thickness, auto& k) {
   const auto& points = geometry.IntegrationPoints(order);
   const Matrix& N = geometry.ShapeFunctionsValues(order);
-  const Matrix& dN = geometry.ShapeFunctionsLocalGradients(order)[static_cast<std::size_t>(g)];
+  // A max-size copy: products with the dynamic geometry matrix would need heap temporaries.
+  const Gradients dN = geometry.ShapeFunctionsLocalGradients(order)[static_cast<std::size_t>(g)];
   const auto n = X.rows();
   k.N = N.row(g).transpose();
   Eigen::Matrix3d J0 = Eigen::Matrix3d::Identity();

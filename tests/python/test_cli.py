@@ -143,3 +143,13 @@ def test_non_convergence_names_step_iteration_and_norms(tmp_path):
     path = square_case(tmp_path, edit=edit)
     result = run_cli("run", str(path), cwd=tmp_path)
     assert_clean_failure(result, 4, "step 1", "did not converge", "iteration")
+
+
+def test_element_without_material_names_element_and_properties(tmp_path):
+    path = square_case(tmp_path)
+    materials_file = tmp_path / "square_materials.json"
+    data = json.loads(materials_file.read_text())
+    data["properties"][0]["model_part_name"] = "Structure.bottom"  # a part without elements
+    materials_file.write_text(json.dumps(data))
+    result = run_cli("run", str(path), cwd=tmp_path)
+    assert_clean_failure(result, 2, "element 1", "properties 0", "constitutive law")

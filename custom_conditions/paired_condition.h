@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <memory>
+#include <utility>
+
+#include "core/model/condition.h"
+
+namespace mc {
+
+/// Base of every mortar pair condition (contact, mesh tying): a condition on the nodes of one
+/// slave interface condition that also knows the master interface condition it is paired with.
+/// Its own geometry is the slave geometry; the master geometry is a copy of the master
+/// condition's geometry (same nodes), kept so that integration never chases pointers.
+///
+/// The contact search creates pairs through Registry<Condition>: it looks up the prototype by
+/// name (stem + geometry token, spec 6.2), checks that it is a PairedCondition and calls
+/// CreatePaired. Prototypes are registered with node-less geometries of the right types.
+class PairedCondition : public Condition {
+ public:
+  PairedCondition(IndexType id, Geometry slave_geometry, Properties* properties, Geometry paired_geometry)
+      : Condition(id, std::move(slave_geometry), properties), paired_geometry_(std::move(paired_geometry)) {}
+
+  /// A new pair of the same class on `slave`'s nodes, paired with `master`. Both conditions are
+  /// interface conditions owned by the model part and outlive the pair.
+  virtual std::unique_ptr<PairedCondition> CreatePaired(IndexType id, Condition& slave, Condition& master,
+                                                        Properties* properties) const = 0;
+
+  /// The master geometry (current nodes of the master interface condition).
+  const Geometry& GetPairedGeometry() const noexcept { return paired_geometry_; }
+  Geometry& GetPairedGeometry() noexcept { return paired_geometry_; }
+
+  /// The interface conditions this pair was built from (null for prototypes).
+  Condition* GetParentSlaveCondition() const noexcept { return slave_; }
+  Condition* GetPairedCondition() const noexcept { return master_; }
+  void SetPair(Condition* slave, Condition* master) noexcept {
+    slave_ = slave;
+    master_ = master;
+  }
+
+ private:
+  Geometry paired_geometry_;
+  Condition* slave_ = nullptr;
+  Condition* master_ = nullptr;
+};
+
+}  // namespace mc

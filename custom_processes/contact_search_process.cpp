@@ -1,0 +1,443 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "custom_processes/contact_search_process.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <numeric>
+#include <unordered_map>
+
+#include "core/geometries/reference_element.h"
+#include "core/model/registry.h"
+#include "core/utilities/error.h"
+#include "core/utilities/logger.h"
+#include "core/utilities/string_utilities.h"
+#include "core/variables/kernel_variables.h"
+#include "custom_conditions/paired_condition.h"
+#include "custom_processes/contact_interface_builder.h"
+#include "custom_utilities/contact_search_geometry.h"
+#include "custom_utilities/contact_search_tree.h"
+#include "custom_utilities/contact_variables.h"
+#include "custom_utilities/normal_calculation_utilities.h"
+
+namespace mc {
+
+namespace {
+
+// Accepted spellings -> canonical names (spec 4.3).
+const std::map<std::string, std::string>& SearchTypeNames() {
+  static const std::map<std::string, std::string> names = {
+      {"in_radius", "in_radius"},
+      {"InRadius", "in_radius"},
+      {"in_box", "in_box"},
+      {"InBox", "in_box"},
+      {"in_radius_with_obb", "in_radius_with_obb"},
+      {"InRadiusWithOBB", "in_radius_with_obb"},
+      {"in_box_with_obb", "in_box_with_obb"},
+      {"InBoxWithOBB", "in_box_with_obb"},
+      // An octree of OBBs finds the same pairs as the KD-tree plus the OBB test.
+      {"octree_with_obb", "in_radius_with_obb"},
+      {"OctreeWithOBB", "in_radius_with_obb"},
+  };
+  return names;
+}
+
+const std::map<std::string, std::string>& CheckGapNames() {
+  static const std::map<std::string, std::string> names = {
+      {"no_check", "no_check"},         {"NoCheck", "no_check"},
+      {"direct_check", "direct_check"}, {"DirectCheck", "direct_check"},
+      {"mapping_check", "mapping_check"}, {"MappingCheck", "mapping_check"},
+      {"check_mapping", "mapping_check"},
+  };
+  return names;
+}
+
+std::vector<std::string> Keys(const std::map<std::string, std::string>& map) {
+  std::vector<std::string> keys;
+  for (const auto& [key, value] : map) keys.push_back(key);
+  return keys;
+}
+
+bool ShareNode(const Geometry& a, const Geometry& b) {
+  for (const Node* na : a.Nodes())
+    for (const Node* nb : b.Nodes())
+      if (na == nb) return true;
+  return false;
+}
+
+// "2D2N", "3D3N", "3D3N4N" (spec 6.2).
+std::string GeometryToken(const Geometry& slave, const Geometry& master) {
+  std::string token = Concat(slave.WorkingSpaceDimension(), "D", slave.PointsNumber(), "N");
+  if (master.PointsNumber() != slave.PointsNumber()) token += Concat(master.PointsNumber(), "N");
+  return token;
+}
+
+struct Box {
+  Array3 lo, hi;
+};
+
+Box BoundingBox(const Geometry& geometry, double grow) {
+  Box box{Array3::Constant(std::numeric_limits<double>::max()), Array3::Constant(-std::numeric_limits<double>::max())};
+  for (const Node* node : geometry.Nodes()) {
+    box.lo = box.lo.cwiseMin(node->Coordinates());
+    box.hi = box.hi.cwiseMax(node->Coordinates());
+  }
+  box.lo.array() -= grow;
+  box.hi.array() += grow;
+  return box;
+}
+
+bool Overlap(const Box& a, const Box& b) {
+  return (a.lo.array() <= b.hi.array()).all() && (b.lo.array() <= a.hi.array()).all();
+}
+
+// Per-condition data computed once per search.
+struct FaceData {
+  Condition* condition;
+  Array3 center;
+  Array3 normal;
+  double length;
+  double radius;  // of the ball around the centre holding the nodes
+};
+
+FaceData MakeFaceData(Condition* condition) {
+  const Geometry& geometry = condition->GetGeometry();
+  FaceData data{condition, geometry.Center(), condition->GetValue(NORMAL), InterfaceCharacteristicLength(geometry),
+                0.0};
+  for (const Node* node : geometry.Nodes()) data.radius = std::max(data.radius, (node->Coordinates() - data.center).norm());
+  return data;
+}
+
+ModelPart& ComputingSubPart(ModelPart& root, const std::string& id) {
+  ModelPart& computing =
+      root.HasSubModelPart("ComputingContact") ? root.GetSubModelPart("ComputingContact") : root.CreateSubModelPart("ComputingContact");
+  const std::string name = "ComputingContactSub" + id;
+  return computing.HasSubModelPart(name) ? computing.GetSubModelPart(name) : computing.CreateSubModelPart(name);
+}
+
+}  // namespace
+
+Parameters ContactSearchProcess::GetDefaultParameters() {
+  return Parameters(R"({
+    "simple_search": false,
+    "type_search": "in_radius_with_obb",
+    "check_gap": "check_mapping",
+    "bucket_size": 4,
+    "search_factor": 3.5,
+    "dynamic_search": false,
+    "static_check_movement": false,
+    "consider_gap_threshold": false,
+    "normal_orientation_threshold": 0.1,
+    "debug_mode": false,
+    "allocation_size": 1000,
+    "condition_name": "ALMFrictionlessMortarContactCondition",
+    "final_string": "",
+    "predefined_master_slave": true,
+    "id_name": "0",
+    "pure_slip": false,
+    "active_check_factor": 0.01,
+    "contact_property_id": 0,
+    "bounding_box_factor": 0.1
+  })");
+}
+
+ContactSearchProcess::ContactSearchProcess(ModelPart& root, ModelPart& interface, Parameters settings)
+    : root_(root),
+      interface_(interface),
+      computing_(ComputingSubPart(root, settings.Has("id_name") ? settings["id_name"].GetString() : "0")),
+      settings_(std::move(settings)) {
+  settings_.ValidateAndAssignDefaults(GetDefaultParameters());
+  const std::string type = settings_["type_search"].GetString();
+  if (ToLower(type) == "kdop")
+    throw NotImplementedError(Concat(settings_.Where(), ".type_search: 'kdop' is not implemented (as in Kratos); use ",
+                                     "'in_radius_with_obb'"));
+  const auto& types = SearchTypeNames();
+  if (auto it = types.find(type); it != types.end()) {
+    type_search_ = it->second;
+  } else {
+    type_search_ = "in_radius";
+    Logger::Warning(Concat(settings_.Where(), ".type_search: unknown value '", type, "', using 'in_radius'",
+                           DidYouMean(type, Keys(types))));
+  }
+  const std::string check = settings_["check_gap"].GetString();
+  const auto& checks = CheckGapNames();
+  if (auto it = checks.find(check); it != checks.end()) {
+    check_gap_ = it->second;
+  } else {
+    check_gap_ = "mapping_check";
+    Logger::Warning(Concat(settings_.Where(), ".check_gap: unknown value '", check, "', using 'mapping_check'",
+                           DidYouMean(check, Keys(checks))));
+  }
+  if (!(settings_["search_factor"].GetDouble() > 0.0))
+    throw InputError(Concat(settings_.Where(), ".search_factor: must be positive, got ",
+                            settings_["search_factor"].GetDouble()));
+}
+
+void ContactSearchProcess::ClearMortarConditions() {
+  if (computing_.NumberOfConditions() == 0) return;
+  for (Condition* condition : computing_.Conditions()) condition->Set(TO_ERASE, true);
+  root_.RemoveConditionsFlagged(TO_ERASE);
+}
+
+void ContactSearchProcess::SetInterfaceActive(bool active) {
+  for (Node* node : interface_.Nodes()) node->Set(ACTIVE, active && node->Is(ACTIVE));
+  for (Condition* condition : interface_.Conditions()) condition->Set(ACTIVE, active);
+  for (Condition* condition : computing_.Conditions()) condition->Set(ACTIVE, active);
+}
+
+const PairedCondition& ContactSearchProcess::Prototype(const Geometry& slave, const Geometry& master) {
+  const std::string name =
+      settings_["condition_name"].GetString() + GeometryToken(slave, master) + settings_["final_string"].GetString();
+  const auto& registry = Registry<Condition>::Instance();
+  if (!registry.Has(name)) {
+    std::vector<std::string> paired;
+    for (const std::string& n : registry.Names())
+      if (n.find("Mortar") != std::string::npos) paired.push_back(n);
+    throw NotImplementedError(Concat("contact search of ", interface_.FullName(), ": pair condition '", name,
+                                     "' is not registered", DidYouMean(name, paired)));
+  }
+  const auto* prototype = dynamic_cast<const PairedCondition*>(&registry.Get(name));
+  if (!prototype)
+    throw Error(Concat("condition '", name, "' is registered but is not a PairedCondition"));
+  return *prototype;
+}
+
+void ContactSearchProcess::AssignAutomaticRoles(const std::vector<Condition*>& conditions,
+                                                std::vector<std::vector<std::size_t>>& candidates) {
+  const std::size_t n = conditions.size();
+  // Groups of conditions connected through shared nodes (union-find).
+  std::vector<std::size_t> parent(n);
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](std::size_t i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  std::unordered_map<const Node*, std::size_t> first_owner;
+  for (std::size_t i = 0; i < n; ++i)
+    for (const Node* node : conditions[i]->GetGeometry().Nodes()) {
+      auto [it, inserted] = first_owner.try_emplace(node, i);
+      if (!inserted) parent[find(i)] = find(it->second);
+    }
+  enum Role : char { kUnknown, kSlave, kMaster };
+  std::vector<Role> group_role(n, kUnknown);
+  // Conditions are in id order, so visiting them visits the groups by their lowest id.
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t g = find(i);
+    if (group_role[g] == kUnknown) group_role[g] = kSlave;
+    if (group_role[g] != kSlave) continue;
+    for (std::size_t m : candidates[i]) {
+      const std::size_t gm = find(m);
+      if (gm != g && group_role[gm] == kUnknown) group_role[gm] = kMaster;
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t g = find(i);
+    const bool slave = group_role[g] == kSlave;
+    // Keep masters of other groups, and within a self-contacting group only higher indices so
+    // that each pair is created once.
+    std::vector<std::size_t> kept;
+    if (slave)
+      for (std::size_t m : candidates[i]) {
+        const std::size_t gm = find(m);
+        if ((gm != g && group_role[gm] == kMaster) || (gm == g && m > i)) kept.push_back(m);
+      }
+    candidates[i] = std::move(kept);
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool slave = group_role[find(i)] == kSlave;
+    conditions[i]->Set(SLAVE, slave);
+    conditions[i]->Set(MASTER, !slave);
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t m : candidates[i]) conditions[m]->Set(MASTER, true);
+  }
+  for (Node* node : interface_.Nodes()) {
+    node->Set(SLAVE, false);
+    node->Set(MASTER, false);
+  }
+  for (Condition* condition : conditions)
+    for (Node* node : condition->GetGeometry().Nodes()) {
+      if (condition->Is(SLAVE)) node->Set(SLAVE, true);
+      if (condition->Is(MASTER)) node->Set(MASTER, true);
+    }
+}
+
+ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
+  const auto start = std::chrono::steady_clock::now();
+  ContactSearchStatistics stats;
+  ClearMortarConditions();
+  NormalCalculationUtilities::ComputeNodalNormals(interface_);
+
+  const bool automatic = !settings_["predefined_master_slave"].GetBool() && !roles_assigned_;
+  std::vector<Condition*> all(interface_.Conditions().begin(), interface_.Conditions().end());
+  std::vector<std::size_t> slaves, masters;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    if (automatic || all[i]->Is(SLAVE)) slaves.push_back(i);
+    if (automatic || all[i]->Is(MASTER)) masters.push_back(i);
+  }
+  stats.slave_conditions = slaves.size();
+  stats.master_conditions = masters.size();
+
+  std::vector<FaceData> faces(all.size());
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < all.size(); ++i) faces[i] = MakeFaceData(all[i]);
+
+  std::vector<Array3> centers;
+  centers.reserve(masters.size());
+  double max_master_radius = 0.0;
+  for (std::size_t m : masters) {
+    centers.push_back(faces[m].center);
+    max_master_radius = std::max(max_master_radius, faces[m].radius);
+  }
+  const ContactSearchTree tree(std::move(centers), settings_["bucket_size"].GetInt());
+
+  const double search_factor = settings_["search_factor"].GetDouble();
+  const double threshold = settings_["normal_orientation_threshold"].GetDouble();
+  const double box_factor = settings_["bounding_box_factor"].GetDouble();
+  const bool in_box = type_search_ == "in_box" || type_search_ == "in_box_with_obb";
+  const bool with_obb = type_search_ == "in_radius_with_obb" || type_search_ == "in_box_with_obb";
+  const bool simple = settings_["simple_search"].GetBool();
+  const std::string check = simple ? std::string("no_check") : check_gap_;
+  const bool gap_threshold = settings_["consider_gap_threshold"].GetBool();
+  const double distance_threshold =
+      root_.GetProcessInfo().Has(DISTANCE_THRESHOLD) ? root_.GetProcessInfo().GetValue(DISTANCE_THRESHOLD) : 1e24;
+  const auto allocation = static_cast<std::size_t>(std::max(1, settings_["allocation_size"].GetInt()));
+
+  // candidates[i] for interface condition i (only slaves get any).
+  std::vector<std::vector<std::size_t>> candidates(all.size());
+  double min_radius = std::numeric_limits<double>::max(), max_radius = 0.0;
+  std::size_t truncated = 0;
+#pragma omp parallel reduction(min : min_radius) reduction(max : max_radius) reduction(+ : truncated)
+  {
+    std::vector<std::size_t> found;
+#pragma omp for schedule(dynamic, 64)
+    for (std::size_t k = 0; k < slaves.size(); ++k) {
+      const std::size_t s = slaves[k];
+      const FaceData& slave = faces[s];
+      const Geometry& slave_geometry = slave.condition->GetGeometry();
+      const double radius = search_factor * slave.length;
+      min_radius = std::min(min_radius, radius);
+      max_radius = std::max(max_radius, radius);
+      Box slave_box;
+      if (in_box) {
+        slave_box = BoundingBox(slave_geometry, radius);
+        tree.RadiusSearch(slave.center, slave.radius + radius * std::sqrt(3.0) + max_master_radius, found);
+      } else {
+        tree.RadiusSearch(slave.center, radius, found);
+      }
+      OrientedBox slave_obb;
+      if (with_obb) slave_obb = BuildOrientedBox(slave_geometry, slave.normal, box_factor * slave.length);
+      std::vector<std::size_t>& kept = candidates[s];
+      for (std::size_t f : found) {
+        const std::size_t m = masters[f];
+        if (m == s) continue;
+        const FaceData& master = faces[m];
+        const Geometry& master_geometry = master.condition->GetGeometry();
+        if (slave.normal.dot(master.normal) >= -threshold) continue;
+        if (ShareNode(slave_geometry, master_geometry)) continue;
+        if (in_box && !Overlap(slave_box, BoundingBox(master_geometry, 0.0))) continue;
+        if (with_obb &&
+            !Intersect(slave_obb, BuildOrientedBox(master_geometry, master.normal, box_factor * master.length)))
+          continue;
+        const double tolerance = 1e-6 * std::min(slave.length, master.length);
+        if (check == "mapping_check" && !(ProjectedOverlap(slave_geometry, slave.normal, master_geometry) > tolerance))
+          continue;
+        if (check == "direct_check" && !(ProjectedOverlap(master_geometry, master.normal, slave_geometry) > tolerance))
+          continue;
+        if (gap_threshold && std::abs((master.center - slave.center).dot(slave.normal)) > distance_threshold) continue;
+        kept.push_back(m);
+      }
+      std::sort(kept.begin(), kept.end());
+      if (kept.size() > allocation) {
+        kept.resize(allocation);
+        ++truncated;
+      }
+    }
+  }
+  if (truncated > 0)
+    Logger::Warning(Concat("contact search of ", interface_.FullName(), ": ", truncated,
+                           " slave conditions had more candidates than max_number_results ", allocation,
+                           "; the extra ones were dropped"));
+  if (automatic) {
+    AssignAutomaticRoles(all, candidates);
+    roles_assigned_ = true;
+    stats.slave_conditions = stats.master_conditions = 0;
+    for (const Condition* condition : all) {
+      stats.slave_conditions += condition->Is(SLAVE) ? 1 : 0;
+      stats.master_conditions += condition->Is(MASTER) ? 1 : 0;
+    }
+  }
+
+  // Pair conditions, created serially with consecutive ids after the largest in the model.
+  std::vector<std::pair<Condition*, Condition*>> pairs;
+  for (std::size_t s = 0; s < all.size(); ++s)
+    for (std::size_t m : candidates[s]) pairs.emplace_back(all[s], all[m]);
+  IndexType next_id = 1;
+  if (root_.NumberOfConditions() > 0) next_id = root_.Conditions()[root_.NumberOfConditions() - 1]->Id() + 1;
+  const int property_id = settings_["contact_property_id"].GetInt();
+  Properties* pair_properties = property_id > 0 ? &root_.GetProperties(property_id) : nullptr;
+  for (const auto& [slave, master] : pairs) {
+    const PairedCondition& prototype = Prototype(slave->GetGeometry(), master->GetGeometry());
+    Properties* properties = pair_properties ? pair_properties : slave->pGetProperties();
+    std::unique_ptr<PairedCondition> pair = prototype.CreatePaired(next_id++, *slave, *master, properties);
+    pair->Set(SLAVE, true);
+    computing_.AddCondition(std::unique_ptr<Condition>(std::move(pair)));
+  }
+  stats.pairs = pairs.size();
+  stats.min_search_radius = slaves.empty() ? 0.0 : min_radius;
+  stats.max_search_radius = max_radius;
+
+  PredictActiveSet(pairs, stats);
+
+  if (pairs.empty() && stats.slave_conditions > 0) {
+    Logger::Warning(Concat(
+        "contact search of ", interface_.FullName(), ": no master condition found for any of the ",
+        stats.slave_conditions, " slave conditions (search radius = search_factor ", search_factor,
+        " x slave size = ", stats.min_search_radius, " .. ", stats.max_search_radius, ", type_search ", type_search_,
+        ", check_gap ", check, "). If the surfaces should touch, increase search_parameters.search_factor "
+        "(or check assume_master_slave and the distance between the surfaces)"));
+  }
+  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return stats;
+}
+
+void ContactSearchProcess::PredictActiveSet(const std::vector<std::pair<Condition*, Condition*>>& pairs,
+                                            ContactSearchStatistics& stats) {
+  std::unordered_map<Node*, std::vector<Condition*>> masters_of;
+  for (const auto& [slave, master] : pairs)
+    for (Node* node : slave->GetGeometry().Nodes()) masters_of[node].push_back(master);
+  const double factor = settings_["active_check_factor"].GetDouble();
+  for (Node* node : interface_.Nodes()) {
+    if (!node->Is(SLAVE)) continue;
+    auto it = masters_of.find(node);
+    if (it == masters_of.end()) {
+      node->Set(ISOLATED, true);
+      node->Set(ACTIVE, false);
+      ++stats.isolated_nodes;
+      continue;
+    }
+    node->Set(ISOLATED, false);
+    const Array3 normal = NormalCalculationUtilities::GetNodalNormal(*node);
+    const Array3& x = node->Coordinates();
+    double gap = std::numeric_limits<double>::max();
+    for (Condition* master : it->second) {
+      const Geometry& geometry = master->GetGeometry();
+      const Array3 master_normal = master->GetValue(NORMAL);
+      const double denominator = normal.dot(master_normal);
+      if (std::abs(denominator) < 1e-12) continue;
+      const double t = (geometry.Center() - x).dot(master_normal) / denominator;
+      Array3 local;
+      if (!geometry.PointLocalCoordinates(Array3(x + t * normal), local) || !geometry.IsInsideLocal(local, 1e-6))
+        continue;
+      if (std::abs(t) < std::abs(gap)) gap = t;
+    }
+    if (gap == std::numeric_limits<double>::max()) continue;
+    node->SetValue(NORMAL_GAP, gap);
+    if (gap < factor * ContactInterfaceBuilder::GetNodalH(*node)) node->Set(ACTIVE, true);
+  }
+  for (Node* node : interface_.Nodes()) stats.active_nodes += (node->Is(SLAVE) && node->Is(ACTIVE)) ? 1 : 0;
+}
+
+}  // namespace mc

@@ -1,0 +1,95 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/model/model_part.h"
+#include "core/parameters/parameters.h"
+
+namespace mc {
+
+class PairedCondition;
+
+/// What one search found (also used for timings).
+struct ContactSearchStatistics {
+  std::size_t slave_conditions = 0;
+  std::size_t master_conditions = 0;
+  std::size_t pairs = 0;
+  std::size_t active_nodes = 0;
+  std::size_t isolated_nodes = 0;
+  double min_search_radius = 0.0;
+  double max_search_radius = 0.0;
+  double seconds = 0.0;
+};
+
+/// Contact search of one interface slot (spec 4.3): pairs every slave condition of
+/// `Contact.ContactSub<k>` with the master conditions facing it and creates one pair condition
+/// per (slave, master) in `ComputingContact.ComputingContactSub<k>`.
+///
+/// Per slave condition s (size L_s, centre c_s, unit normal n_s), in parallel:
+///  1. candidates from a KD-tree over the master centres: within r = search_factor * L_s of
+///     c_s (`in_radius*`), or whose bounding box meets s's box grown by r (`in_box*`);
+///  2. drop masters sharing a node with s and those not facing it: n_s . n_m >= -threshold
+///     (normal_orientation_threshold);
+///  3. `*_with_obb`: drop masters whose oriented box (grown by bounding_box_factor * L) does not
+///     meet s's (separating-axis test) — removes far-but-in-radius faces;
+///  4. check_gap: `mapping_check` (default, also "check_mapping") keeps m when its projection
+///     on s's plane overlaps s; `direct_check` projects s on m's plane; `no_check` keeps all;
+///     with consider_gap_threshold, masters farther than DISTANCE_THRESHOLD are dropped.
+/// Then slave nodes without any pair are flagged ISOLATED (and inactive), and a slave node is
+/// predicted ACTIVE when its normal gap (along its nodal normal to a paired master, stored in
+/// NORMAL_GAP) is below active_check_factor * NODAL_H. An active node is never deactivated
+/// here: from the first solve on the active set belongs to the strategy.
+///
+/// Pair names: condition_name + geometry token (+ final_string), e.g.
+/// "ALMFrictionlessMortarContactCondition" + "3D3N4N"; the prototype must be a
+/// PairedCondition registered in Registry<Condition>.
+///
+/// Without predefined roles (no assume_master_slave) the first search assigns them: the
+/// connected groups of interface conditions are visited in id order; a group not yet master
+/// becomes slave and the groups of the masters it finds become master (a self-contacting
+/// group keeps both roles, pairing each condition only with higher ids).
+class ContactSearchProcess {
+ public:
+  ContactSearchProcess(ModelPart& root, ModelPart& interface, Parameters settings);
+
+  /// Forwarded search keys (spec 4.3) plus: condition_name, final_string, id_name,
+  /// predefined_master_slave, pure_slip, active_check_factor, contact_property_id (0: the
+  /// slave condition's property), bounding_box_factor.
+  static Parameters GetDefaultParameters();
+
+  /// Clears this slot's pairs, searches, creates the pairs and predicts the active set.
+  ContactSearchStatistics UpdateMortarConditions();
+  /// Removes this slot's pair conditions.
+  void ClearMortarConditions();
+  /// Sets ACTIVE on the interface nodes and conditions and on the pairs (outside the
+  /// process interval they are all inactive).
+  void SetInterfaceActive(bool active);
+
+  ModelPart& InterfacePart() const noexcept { return interface_; }
+  ModelPart& ComputingPart() const noexcept { return computing_; }
+  const Parameters& Settings() const noexcept { return settings_; }
+
+  /// Canonical search type and gap check names ("in_radius_with_obb", "mapping_check", ...).
+  const std::string& SearchType() const noexcept { return type_search_; }
+  const std::string& CheckGap() const noexcept { return check_gap_; }
+
+ private:
+  struct Candidate;
+  void AssignAutomaticRoles(const std::vector<Condition*>& conditions,
+                            std::vector<std::vector<std::size_t>>& candidates);
+  void PredictActiveSet(const std::vector<std::pair<Condition*, Condition*>>& pairs, ContactSearchStatistics& stats);
+  const PairedCondition& Prototype(const Geometry& slave, const Geometry& master);
+
+  ModelPart& root_;
+  ModelPart& interface_;
+  ModelPart& computing_;
+  Parameters settings_;
+  std::string type_search_;
+  std::string check_gap_;
+  bool roles_assigned_ = false;
+};
+
+}  // namespace mc

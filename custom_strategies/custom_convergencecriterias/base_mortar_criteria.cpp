@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "custom_strategies/custom_convergencecriterias/base_mortar_criteria.h"
+
+#include "core/model/model_part.h"
+#include "core/utilities/logger.h"
+#include "core/variables/kernel_variables.h"
+#include "custom_strategies/custom_convergencecriterias/contact_criteria_utilities.h"
+#include "custom_utilities/contact_variables.h"
+
+namespace mc {
+
+namespace {
+
+/// Zeroes the weighted gap (and slip) of the contact nodes and asks the updater to integrate
+/// them again at the current coordinates.
+void RecomputeWeightedGap(ModelPart& model_part, ModelPart& contact_part, MortarUpdater& updater) {
+  const bool has_slip = contact_part.HasNodalSolutionStepVariable(WEIGHTED_SLIP);
+  for (Node* p_node : contact_part.Nodes()) {
+    Node& node = *p_node;
+    node.FastGetSolutionStepValue(WEIGHTED_GAP) = 0.0;
+    if (has_slip) node.FastGetSolutionStepValue(WEIGHTED_SLIP).setZero();
+  }
+  updater.ComputeWeightedGap(model_part);
+}
+
+}  // namespace
+
+std::string BaseMortarConvergenceCriteria::DefaultParametersJson(const std::string& name) {
+  return Concat(R"({
+      "name"                        : ")",
+                name, R"(",
+      "compute_dynamic_factor"      : false,
+      "gidio_debug"                 : false,
+      "pure_slip"                   : false,
+      "print_convergence_criterion" : false
+  })");
+}
+
+BaseMortarConvergenceCriteria::BaseMortarConvergenceCriteria(Parameters settings, const std::string& name) {
+  settings.ValidateAndAssignDefaults(Parameters(DefaultParametersJson(name)));
+  compute_dynamic_factor_ = settings["compute_dynamic_factor"].GetBool();
+  pure_slip_ = settings["pure_slip"].GetBool();
+  print_ = settings["print_convergence_criterion"].GetBool();
+}
+
+bool BaseMortarConvergenceCriteria::PreCriteria(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A,
+                                                const Vector& dx, const Vector& b) {
+  ModelPart* contact = FindContactModelPart(model_part);
+  if (!contact || !updater_) return true;
+  const ProcessInfo& info = model_part.GetProcessInfo();
+  if (info.GetValue(CONSIDER_NORMAL_VARIATION) != 0) updater_->UpdateNormals(model_part);
+  const bool dynamic = model_part.HasNodalSolutionStepVariable(VELOCITY);
+  const bool adapt_penalty = info.GetValue(ADAPT_PENALTY);
+  if ((adapt_penalty || dynamic) && contact->HasNodalSolutionStepVariable(WEIGHTED_GAP))
+    RecomputeWeightedGap(model_part, *contact, *updater_);
+  if (dynamic && compute_dynamic_factor_) updater_->UpdateDynamicFactor(model_part);
+  if (adapt_penalty) updater_->AdaptPenalty(model_part);
+  return true;
+}
+
+bool BaseMortarConvergenceCriteria::PostCriteria(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A,
+                                                 const Vector& dx, const Vector& b) {
+  ModelPart* contact = FindContactModelPart(model_part);
+  ProcessInfo& info = model_part.GetProcessInfo();
+  changed_.clear();
+  if (!contact) {
+    info.SetValue(ACTIVE_SET_CONVERGED, true);
+    return true;
+  }
+  if (contact->HasNodalSolutionStepVariable(WEIGHTED_GAP) && updater_) {
+    if (contact->GetBufferSize() > 1)
+      for (Node* node : contact->Nodes())
+        node->FastGetSolutionStepValue(WEIGHTED_GAP, 1) = node->FastGetSolutionStepValue(WEIGHTED_GAP);
+    RecomputeWeightedGap(model_part, *contact, *updater_);
+  }
+  if (model_part.Is(INTERACTION) || info.GetValue(NL_ITERATION_NUMBER) == 1) UpdateActiveSet(*contact, &changed_);
+  const bool converged = changed_.empty();
+  info.SetValue(ACTIVE_SET_CONVERGED, converged);
+  if (echo_level_ >= 1 && print_)
+    Logger::Info(Concat(Name(), ": ", changed_.size(), " slave node(s) changed state"));
+  return converged;
+}
+
+std::vector<CriterionValue> BaseMortarConvergenceCriteria::LastValues() const {
+  return {{"active set changes", static_cast<double>(changed_.size()), 0.0}};
+}
+
+}  // namespace mc

@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "core/parameters/parameters.h"
+#include "core/solving/convergence_criteria.h"
+#include "custom_strategies/custom_convergencecriterias/mortar_updater.h"
+#include "custom_utilities/active_set_utilities.h"
+
+namespace mc {
+
+/// "base_mortar_criteria": keeps the mortar quantities of the "Contact" sub-model-part in step
+/// with the iterate and runs the active-set update of the derived class.
+///
+///  - PreCriteria (before each build): nodal normals when ProcessInfo[CONSIDER_NORMAL_VARIATION]
+///    is not 0; weighted gap when ProcessInfo[ADAPT_PENALTY] is set or the problem is dynamic
+///    (VELOCITY is historical); dynamic factor (`compute_dynamic_factor`, dynamic problems) and
+///    adapted penalty, all through the MortarUpdater.
+///  - PostCriteria (after each update): WEIGHTED_GAP is copied to history step 1, zeroed and
+///    recomputed at the updated coordinates, then UpdateActiveSet of the derived class runs if
+///    the computing model part Is(INTERACTION) (full semi-smooth Newton) or at iteration 1
+///    (simplified semi-smooth Newton, the set is frozen afterwards). Converged when no node
+///    changed; the answer is also stored in ProcessInfo[ACTIVE_SET_CONVERGED].
+///
+/// Settings: `compute_dynamic_factor` (false), `gidio_debug` (false: accepted; per-iteration
+/// dumps are not written by this version), `pure_slip` (false, frictional only),
+/// `print_convergence_criterion` (false).
+class BaseMortarConvergenceCriteria : public ConvergenceCriteria {
+ public:
+  static std::string DefaultParametersJson(const std::string& name);
+  /// `name` is the Name() of the concrete class (the default of the "name" key).
+  BaseMortarConvergenceCriteria(Parameters settings, const std::string& name);
+  explicit BaseMortarConvergenceCriteria(Parameters settings = Parameters())
+      : BaseMortarConvergenceCriteria(std::move(settings), "base_mortar_criteria") {}
+
+  std::string Name() const override { return "base_mortar_criteria"; }
+  bool PreCriteria(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A, const Vector& dx,
+                   const Vector& b) override;
+  bool PostCriteria(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A, const Vector& dx,
+                    const Vector& b) override;
+  /// {"active set changes", number of nodes that changed at the last check, 0}.
+  std::vector<CriterionValue> LastValues() const override;
+
+  void SetMortarUpdater(std::shared_ptr<MortarUpdater> updater) noexcept { updater_ = std::move(updater); }
+  const std::shared_ptr<MortarUpdater>& GetMortarUpdater() const noexcept { return updater_; }
+  /// Ids of the slave nodes that changed state at the last evaluation of the set.
+  const ActiveSetUtilities::ChangedNodes& LastChangedNodes() const noexcept { return changed_; }
+  std::size_t LastChangeCount() const noexcept { return changed_.size(); }
+  bool ComputeDynamicFactor() const noexcept { return compute_dynamic_factor_; }
+  bool PureSlip() const noexcept { return pure_slip_; }
+  bool PrintConvergenceCriterion() const noexcept { return print_; }
+
+ protected:
+  /// The NCP update of the derived formulation on the contact sub-model-part; returns the
+  /// number of nodes that changed. The base class has no active set.
+  virtual std::size_t UpdateActiveSet(ModelPart& contact_part, ActiveSetUtilities::ChangedNodes* changed) {
+    if (changed) changed->clear();
+    return 0;
+  }
+
+ private:
+  std::shared_ptr<MortarUpdater> updater_;
+  ActiveSetUtilities::ChangedNodes changed_;
+  bool compute_dynamic_factor_ = false;
+  bool pure_slip_ = false;
+  bool print_ = false;
+};
+
+}  // namespace mc

@@ -1,0 +1,23 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include "custom_strategies/custom_convergencecriterias/base_mortar_criteria.h"
+
+namespace mc {
+
+/// "penalty_frictionless_mortar_criteria": Active set of the penalty formulation: active when the weighted gap is negative.
+/// Converged when no slave node changed state (see BaseMortarConvergenceCriteria for when the
+/// set is evaluated). Settings as the base class.
+class PenaltyFrictionlessMortarConvergenceCriteria : public BaseMortarConvergenceCriteria {
+ public:
+  explicit PenaltyFrictionlessMortarConvergenceCriteria(Parameters settings = Parameters())
+      : BaseMortarConvergenceCriteria(std::move(settings), "penalty_frictionless_mortar_criteria") {}
+  std::string Name() const override { return "penalty_frictionless_mortar_criteria"; }
+
+ protected:
+  std::size_t UpdateActiveSet(ModelPart& contact_part, ActiveSetUtilities::ChangedNodes* changed) override {
+    return ActiveSetUtilities::ComputePenaltyFrictionlessActiveSet(contact_part, changed);
+  }
+};
+
+}  // namespace mc

@@ -1,0 +1,131 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/parameters/parameters.h"
+#include "core/solving/newton_raphson_strategy.h"
+#include "custom_strategies/custom_convergencecriterias/mortar_updater.h"
+
+namespace mc {
+
+/// Settings of the contact Newton strategy (Kratos' keys and defaults, copied by the solver
+/// from `contact_settings`).
+struct ContactStrategySettings {
+  bool adaptative_strategy = false;  ///< split the step when it does not converge
+  double split_factor = 10.0;        ///< DELTA_TIME divisor per split level
+  int max_number_splits = 3;         ///< split levels tried before giving up
+  int inner_loop_iterations = 5;     ///< active-set passes of the simplified semi-smooth Newton
+};
+
+/// "newton_raphson_contact_strategy": Newton-Raphson for mortar contact, i.e. the semi-smooth
+/// Newton method of thesis Algorithm 2, with the active-set update done by the mortar criterion
+/// (BaseMortarConvergenceCriteria::PostCriteria) inside a MortarAndConvergenceCriteria.
+///
+///  - Full semi-smooth Newton when the computing model part Is(INTERACTION): one Newton loop
+///    in which the active set is updated after every iteration.
+///  - Simplified semi-smooth Newton otherwise: up to `inner_loop_iterations` passes, each a
+///    complete Newton loop (the active set is updated after its first iteration, then frozen),
+///    followed by an active-set check with NL_ITERATION_NUMBER = 1; done when the set no longer
+///    changes. ProcessInfo[INNER_LOOP_ITERATION] holds the pass.
+///  - Predict: zeroes WEIGHTED_GAP on the "Contact" nodes, asks the MortarUpdater to integrate
+///    it at the coordinates of the last converged step, then moves the mesh to X0 + DISPLACEMENT.
+///    The scheme's predictor is not called (as in Kratos: it can break dynamic contact).
+///  - With `adaptative_strategy`: a step that does not converge (or inverts an element: the
+///    Jacobian determinant of every solid element is checked after each update) is restarted
+///    from its initial state and marched in DELTA_TIME / split_factor^s sub-steps, s = 1 ..
+///    max_number_splits. Each sub-step clones the time step, runs the processes' initialize
+///    callback, InitializeSolutionStep, Predict and the Newton loop; all but the last also run
+///    FinalizeSolutionStep and the processes' finalize callback (the analysis finalizes the last
+///    one). STEP and DELTA_TIME are restored afterwards. If the last split level fails too, a
+///    SolutionError is thrown.
+///  - A step that does not converge logs (and keeps in FailureReport) why: inverted element,
+///    the slave nodes whose state keeps switching (per-node flip counts over the step), or the
+///    last criterion values.
+class ResidualBasedNewtonRaphsonContactStrategy : public NewtonRaphsonStrategy {
+ public:
+  /// Callbacks run around the sub-steps of the adaptive splitting (from Python: the
+  /// processes' ExecuteInitializeSolutionStep / ExecuteFinalizeSolutionStep and the output).
+  struct SubStepCallbacks {
+    std::function<void()> initialize_solution_step;
+    std::function<void()> finalize_solution_step;
+  };
+
+  static std::string DefaultParametersJson();
+  /// Validates the strategy keys (`name`, `adaptative_strategy`, `split_factor`,
+  /// `max_number_splits`, `inner_loop_iterations`).
+  static ContactStrategySettings ReadSettings(Parameters settings);
+
+  ResidualBasedNewtonRaphsonContactStrategy(ModelPart& model_part, std::shared_ptr<Scheme> scheme,
+                                            std::shared_ptr<ConvergenceCriteria> criteria,
+                                            std::shared_ptr<BuilderAndSolver> builder_and_solver,
+                                            ContactStrategySettings settings = {}, int max_iteration = 10,
+                                            bool compute_reactions = true, bool reform_dofs_at_each_step = false,
+                                            bool move_mesh_flag = true);
+
+  std::string Name() const override { return "newton_raphson_contact_strategy"; }
+  void InitializeSolutionStep() override;
+  void Predict() override;
+  bool SolveSolutionStep() override;
+
+  const ContactStrategySettings& Settings() const noexcept { return settings_; }
+  void SetMortarUpdater(std::shared_ptr<MortarUpdater> updater) noexcept { updater_ = std::move(updater); }
+  void SetSubStepCallbacks(SubStepCallbacks callbacks) { callbacks_ = std::move(callbacks); }
+
+  /// How many times each slave node changed state during the current (last) step.
+  const std::map<IndexType, int>& ActiveSetFlipCounts() const noexcept { return flips_; }
+  /// Why the last step failed ("" if it converged).
+  const std::string& FailureReport() const noexcept { return failure_; }
+  /// Active-set passes of the last step (1 in full semi-smooth Newton).
+  int InnerLoopIterations() const noexcept { return passes_; }
+  /// Split level that made the last step converge (0: no split needed).
+  int SplitLevelUsed() const noexcept { return split_level_; }
+
+ protected:
+  /// Base iteration, plus the active-set flip bookkeeping and the inverted-element guard.
+  bool NewtonIteration(int iteration) override;
+
+ private:
+  /// Newton loop of one pass; false when it did not converge or an element got inverted.
+  bool RunNewtonLoop();
+  /// Full or simplified semi-smooth Newton, per the INTERACTION flag.
+  bool SolveWithActiveSet();
+  bool AdaptiveStep();
+  /// ACTIVE flag of every slave node of the contact part, in container order.
+  std::vector<char> ActiveStates() const;
+  /// Adds one flip to every slave node whose state differs from `before`; returns how many.
+  std::size_t CountFlips(const std::vector<char>& before);
+  void SaveStepStart();
+  void RestoreStepStart();
+  /// Id of an element with a negative Jacobian determinant at an integration point, or 0.
+  IndexType FindInvertedElement() const;
+  std::string DescribeFailure() const;
+
+  ContactStrategySettings settings_;
+  std::shared_ptr<MortarUpdater> updater_;
+  SubStepCallbacks callbacks_;
+  std::map<IndexType, int> flips_;
+  std::size_t last_changes_ = 0;
+  IndexType inverted_element_ = 0;
+  std::string failure_;
+  int passes_ = 0;
+  int split_level_ = 0;
+  bool in_sub_step_ = false;
+
+  // State at the start of the step, for the adaptive splitting.
+  struct NodeStart {
+    Node* node;
+    std::vector<double> history;
+    bool active;
+  };
+  std::vector<NodeStart> start_;
+  double start_time_ = 0.0;
+  double start_delta_time_ = 0.0;
+  int start_step_ = 0;
+};
+
+}  // namespace mc

@@ -1,0 +1,301 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "custom_utilities/exact_mortar_integration_utility.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+#include "core/geometries/geometry_type.h"
+#include "core/geometries/quadrature.h"
+#include "core/geometries/reference_element.h"
+#include "core/utilities/error.h"
+#include "custom_utilities/mortar_autodiff.h"
+
+namespace mc {
+namespace {
+
+using mortar_detail::ValueOf;
+
+// Relative geometric epsilon, scaled by ZERO_TOLERANCE_FACTOR and the slave size.
+constexpr double kRelativeTolerance = 1e-12;
+
+template <class T>
+T Cross2(const Eigen::Matrix<T, 2, 1>& a, const Eigen::Matrix<T, 2, 1>& b) {
+  return a(0) * b(1) - a(1) * b(0);
+}
+
+/// Local coordinates of the point where the line p + t d meets the linear geometry x
+/// (line in 2D, triangle or quadrilateral in 3D). Newton on (xi, t); linear geometries
+/// converge in one step. One extra step after convergence settles the AutoDiff derivatives.
+template <class T, int TDim, int TNodes>
+Eigen::Matrix<T, TDim - 1, 1> ProjectAlong(const Eigen::Matrix<T, TNodes, TDim>& x,
+                                          const Eigen::Matrix<T, TDim, 1>& p,
+                                          const Eigen::Matrix<T, TDim, 1>& d) {
+  using SF = MortarShapeFunctions<TNodes>;
+  using Local = Eigen::Matrix<T, TDim - 1, 1>;
+  if constexpr (TDim == 2) {
+    const Eigen::Matrix<T, 2, 1> m = 0.5 * (x.row(0) + x.row(1)).transpose();
+    const Eigen::Matrix<T, 2, 1> b = 0.5 * (x.row(1) - x.row(0)).transpose();
+    const Eigen::Matrix<T, 2, 1> r = p - m;
+    const T det = Cross2<T>(d, b);
+    Local xi;
+    const double scale = std::sqrt(ValueOf(b.squaredNorm()) * ValueOf(d.squaredNorm()));
+    if (std::abs(ValueOf(det)) > 1e-12 * scale) {
+      xi(0) = Cross2<T>(d, r) / det;
+    } else {  // direction parallel to the line: orthogonal projection
+      xi(0) = r.dot(b) / b.squaredNorm();
+    }
+    return xi;
+  } else {
+    Local xi = SF::template Center<T>();
+    T t = T(0.0);
+    const bool linear = TNodes == 3;
+    bool converged = false;
+    for (int it = 0; it < 30; ++it) {
+      const auto n = SF::template N<T>(xi);
+      const auto dn = SF::template DN<T>(xi);
+      const Eigen::Matrix<T, 3, 1> a = x.transpose() * dn.col(0);
+      const Eigen::Matrix<T, 3, 1> b = x.transpose() * dn.col(1);
+      const Eigen::Matrix<T, 3, 1> c = -d;
+      const Eigen::Matrix<T, 3, 1> rhs = p + t * d - x.transpose() * n;
+      const Eigen::Matrix<T, 3, 1> bc = b.cross(c);
+      const T det = a.dot(bc);
+      if (std::abs(ValueOf(det)) <= 1e-300) break;
+      const T s0 = rhs.dot(bc) / det;
+      const T s1 = a.dot(rhs.cross(c)) / det;
+      const T s2 = a.dot(b.cross(rhs)) / det;
+      xi(0) += s0;
+      xi(1) += s1;
+      t += s2;
+      if (linear || converged) break;
+      converged = std::abs(ValueOf(s0)) + std::abs(ValueOf(s1)) < 1e-14;
+    }
+    return xi;
+  }
+}
+
+template <class T, int TDim, int TNodes>
+Eigen::Matrix<T, TDim, 1> Interpolate(const Eigen::Matrix<T, TNodes, TDim>& values,
+                                      const Eigen::Matrix<T, TNodes, 1>& n) {
+  return values.transpose() * n;
+}
+
+void CheckSettings(const MortarIntegrationSettings& settings) {
+  if (settings.consider_tessellation)
+    throw NotImplementedError(
+        "mortar integration: consider_tessellation = true (Delaunay tessellation of the clipped "
+        "polygons) is not implemented; use false (fan triangulation)");
+  if (settings.integration_order < Quadrature::kMinOrder ||
+      settings.integration_order > Quadrature::kMaxOrder)
+    throw InputError(Concat("mortar integration: integration_order = ", settings.integration_order,
+                            " is outside the supported range ", Quadrature::kMinOrder, "..",
+                            Quadrature::kMaxOrder));
+}
+
+}  // namespace
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+template <class T>
+Eigen::Matrix<T, TDim, 1> ExactMortarIntegrationUtility<TDim, TNumNodes, TNumNodesMaster>::
+    SlaveConditionNormal(const SlaveMatrix<T>& x) {
+  using std::sqrt;
+  if constexpr (TDim == 2) {
+    const Eigen::Matrix<T, 2, 1> t = (x.row(1) - x.row(0)).transpose();
+    const T length = sqrt(t.squaredNorm());
+    return Eigen::Matrix<T, 2, 1>(t(1) / length, -t(0) / length);
+  } else {
+    using SF = MortarShapeFunctions<TNumNodes>;
+    const auto dn = SF::template DN<T>(SF::template Center<T>());
+    const Eigen::Matrix<T, 3, 1> a = x.transpose() * dn.col(0);
+    const Eigen::Matrix<T, 3, 1> b = x.transpose() * dn.col(1);
+    const Eigen::Matrix<T, 3, 1> n = a.cross(b);
+    return n / sqrt(n.squaredNorm());
+  }
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+template <class T>
+bool ExactMortarIntegrationUtility<TDim, TNumNodes, TNumNodesMaster>::Compute(
+    const SlaveMatrix<T>& x1, const MasterMatrix<T>& x2, const SlaveMatrix<T>& normals,
+    const MortarIntegrationSettings& settings, Points<T>& result) {
+  using std::sqrt;
+  using SF1 = MortarShapeFunctions<TNumNodes>;
+  using Vec = Eigen::Matrix<T, TDim, 1>;
+  CheckSettings(settings);
+  result.size = 0;
+  result.area = T(0.0);
+  const double eps = kRelativeTolerance * settings.zero_tolerance_factor;
+
+  // Master local coordinates of the slave point at slave_local: projection along the
+  // interpolated slave nodal normal.
+  auto add_point = [&](const Eigen::Matrix<T, TDim - 1, 1>& slave_local, const T& weight) {
+    assert(result.size < Points<T>::kMaxPoints);
+    auto& point = result.points[result.size++];
+    point.slave_local = slave_local;
+    const Eigen::Matrix<T, TNumNodes, 1> n1 = SF1::template N<T>(slave_local);
+    const Vec x_gp = Interpolate<T, TDim, TNumNodes>(x1, n1);
+    const Vec n_gp = Interpolate<T, TDim, TNumNodes>(normals, n1);
+    point.master_local = ProjectAlong<T, TDim, TNumNodesMaster>(x2, x_gp, n_gp);
+    point.weight = weight;
+    result.area += weight;
+  };
+
+  if constexpr (TDim == 2) {
+    const Vec e = (x1.row(1) - x1.row(0)).transpose();
+    const Vec c = 0.5 * (x1.row(0) + x1.row(1)).transpose();
+    const T length2 = e.squaredNorm();
+    const T length = sqrt(length2);
+    T s[2];
+    for (int l = 0; l < 2; ++l) s[l] = 2.0 * (x2.row(l).transpose() - c).dot(e) / length2;
+    const bool ordered = ValueOf(s[0]) <= ValueOf(s[1]);
+    const T& s_lo = ordered ? s[0] : s[1];
+    const T& s_hi = ordered ? s[1] : s[0];
+    const T lo = ValueOf(s_lo) > -1.0 ? s_lo : T(-1.0);
+    const T hi = ValueOf(s_hi) < 1.0 ? s_hi : T(1.0);
+    if (!(ValueOf(hi - lo) > 2.0 * eps)) return false;
+    const auto& rule = ReferenceElement::Get(GeometryType::Line2D2)
+                           .IntegrationPoints(settings.integration_order);
+    const T half = 0.5 * (hi - lo);
+    const T mid = 0.5 * (hi + lo);
+    for (const auto& gp : rule) {
+      Eigen::Matrix<T, 1, 1> xi;
+      xi(0) = mid + half * gp.local(0);
+      add_point(xi, gp.weight * half * 0.5 * length);
+    }
+    return true;
+  } else {
+    // Slave mean plane and its in-plane basis.
+    const Vec n = SlaveConditionNormal<T>(x1);
+    Vec c = Vec::Zero();
+    for (int i = 0; i < TNumNodes; ++i) c += x1.row(i).transpose();
+    c /= static_cast<double>(TNumNodes);
+    Vec t1 = (x1.row(1) - x1.row(0)).transpose();
+    t1 -= t1.dot(n) * n;
+    t1 /= sqrt(t1.squaredNorm());
+    const Vec t2 = n.cross(t1);
+
+    using P2 = Eigen::Matrix<T, 2, 1>;
+    constexpr int kCapacity = 2 * (TNumNodes + TNumNodesMaster) + 4;
+    std::array<P2, kCapacity> poly, next;
+    std::array<P2, TNumNodes> slave;
+    int n_poly = 0;
+
+    auto to_plane = [&](const Vec& x) {
+      const Vec r = x - c;
+      return P2(r.dot(t1), r.dot(t2));
+    };
+    auto signed_area = [](const auto& pts, int count) {
+      T a = T(0.0);
+      for (int k = 0; k < count; ++k) a += Cross2<T>(pts[k], pts[(k + 1) % count]);
+      return T(0.5 * a);
+    };
+
+    for (int i = 0; i < TNumNodes; ++i) slave[i] = to_plane(x1.row(i).transpose());
+    const T slave_area = signed_area(slave, TNumNodes);
+    if (ValueOf(slave_area) < 0.0) std::reverse(slave.begin(), slave.end());
+    const double area_scale = std::abs(ValueOf(slave_area));
+    const double eps_len = eps * std::sqrt(area_scale);
+
+    for (int l = 0; l < TNumNodesMaster; ++l) poly[n_poly++] = to_plane(x2.row(l).transpose());
+    const T master_area = signed_area(poly, n_poly);
+    if (std::abs(ValueOf(master_area)) <= eps * area_scale) return false;
+    if (ValueOf(master_area) < 0.0) std::reverse(poly.begin(), poly.begin() + n_poly);
+
+    // Sutherland-Hodgman: clip the master polygon by every edge of the convex slave polygon.
+    std::array<T, kCapacity> dist;
+    for (int i = 0; i < TNumNodes && n_poly > 0; ++i) {
+      const P2& a = slave[i];
+      const P2 e = slave[(i + 1) % TNumNodes] - a;
+      const double edge = std::sqrt(ValueOf(e.squaredNorm()));
+      for (int k = 0; k < n_poly; ++k) dist[k] = Cross2<T>(e, P2(poly[k] - a));
+      auto inside = [&](int k) { return ValueOf(dist[k]) >= -eps_len * edge; };
+      int n_next = 0;
+      for (int k = 0; k < n_poly; ++k) {
+        const int prev = (k + n_poly - 1) % n_poly;
+        const bool in_cur = inside(k);
+        const bool in_prev = inside(prev);
+        if (in_cur != in_prev) {
+          assert(n_next < kCapacity);
+          const T s = dist[prev] / (dist[prev] - dist[k]);
+          next[n_next++] = poly[prev] + s * (poly[k] - poly[prev]);
+        }
+        if (in_cur) {
+          assert(n_next < kCapacity);
+          next[n_next++] = poly[k];
+        }
+      }
+      std::copy(next.begin(), next.begin() + n_next, poly.begin());
+      n_poly = n_next;
+    }
+
+    // Merge near-duplicate vertices (coincident edges and corners).
+    int n_clean = 0;
+    for (int k = 0; k < n_poly; ++k) {
+      if (n_clean > 0 && ValueOf((poly[k] - next[n_clean - 1]).norm()) <= eps_len * 1e2) continue;
+      next[n_clean++] = poly[k];
+    }
+    while (n_clean > 1 && ValueOf((next[n_clean - 1] - next[0]).norm()) <= eps_len * 1e2) --n_clean;
+    if (n_clean < 3) return false;
+    std::copy(next.begin(), next.begin() + n_clean, poly.begin());
+    n_poly = n_clean;
+    if (!(ValueOf(signed_area(poly, n_poly)) > eps * area_scale)) return false;
+
+    // Start at the vertex of smallest angle about the centroid (Kratos' order).
+    double cx = 0.0, cy = 0.0;
+    for (int k = 0; k < n_poly; ++k) {
+      cx += ValueOf(poly[k](0));
+      cy += ValueOf(poly[k](1));
+    }
+    cx /= n_poly;
+    cy /= n_poly;
+    int start = 0;
+    double best = 10.0;
+    for (int k = 0; k < n_poly; ++k) {
+      const double angle = std::atan2(ValueOf(poly[k](1)) - cy, ValueOf(poly[k](0)) - cx);
+      if (angle < best - 1e-12) {
+        best = angle;
+        start = k;
+      }
+    }
+
+    const auto& rule = ReferenceElement::Get(GeometryType::Triangle2D3)
+                           .IntegrationPoints(settings.integration_order);
+    const P2& v0 = poly[start];
+    for (int k = 1; k + 1 < n_poly; ++k) {
+      const P2& va = poly[(start + k) % n_poly];
+      const P2& vb = poly[(start + k + 1) % n_poly];
+      const T sub_area = 0.5 * Cross2<T>(P2(va - v0), P2(vb - v0));
+      if (!(ValueOf(sub_area) > 0.0)) continue;
+      for (const auto& gp : rule) {
+        const double a = gp.local(0), b = gp.local(1);
+        const P2 q = (1.0 - a - b) * v0 + a * va + b * vb;
+        const Vec x = c + q(0) * t1 + q(1) * t2;
+        const Eigen::Matrix<T, 2, 1> slave_local = ProjectAlong<T, 3, TNumNodes>(x1, x, n);
+        add_point(slave_local, 2.0 * gp.weight * sub_area);
+      }
+    }
+    return result.size > 0;
+  }
+}
+
+#define MC_INSTANTIATE_EXACT(D, N1, N2, T)                                                    \
+  template bool ExactMortarIntegrationUtility<D, N1, N2>::Compute<T>(                         \
+      const ExactMortarIntegrationUtility<D, N1, N2>::SlaveMatrix<T>&,                        \
+      const ExactMortarIntegrationUtility<D, N1, N2>::MasterMatrix<T>&,                       \
+      const ExactMortarIntegrationUtility<D, N1, N2>::SlaveMatrix<T>&,                        \
+      const MortarIntegrationSettings&, ExactMortarIntegrationUtility<D, N1, N2>::Points<T>&); \
+  template Eigen::Matrix<T, D, 1> ExactMortarIntegrationUtility<D, N1, N2>::SlaveConditionNormal<T>( \
+      const ExactMortarIntegrationUtility<D, N1, N2>::SlaveMatrix<T>&);
+
+#define MC_INSTANTIATE_EXACT_BOTH(D, N1, N2)                           \
+  using AutoDiff##D##N1##N2 = mortar_detail::PairAutoDiff<D, N1, N2>; \
+  MC_INSTANTIATE_EXACT(D, N1, N2, double)                              \
+  MC_INSTANTIATE_EXACT(D, N1, N2, AutoDiff##D##N1##N2)
+
+MC_INSTANTIATE_EXACT_BOTH(2, 2, 2)
+MC_INSTANTIATE_EXACT_BOTH(3, 3, 3)
+MC_INSTANTIATE_EXACT_BOTH(3, 3, 4)
+MC_INSTANTIATE_EXACT_BOTH(3, 4, 3)
+MC_INSTANTIATE_EXACT_BOTH(3, 4, 4)
+
+}  // namespace mc

@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "custom_utilities/normal_calculation_utilities.h"
+
+#include <unordered_map>
+#include <vector>
+
+#include "core/geometries/reference_element.h"
+#include "core/variables/kernel_variables.h"
+
+namespace mc {
+
+void NormalCalculationUtilities::ComputeConditionsNormals(ModelPart& part) {
+  const std::size_t n = part.NumberOfConditions();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    Condition& condition = *part.Conditions()[i];
+    const Geometry& geometry = condition.GetGeometry();
+    condition.SetValue(NORMAL, geometry.UnitNormal(geometry.Reference().LocalCenter()));
+  }
+}
+
+void NormalCalculationUtilities::ComputeNodalNormals(ModelPart& part) {
+  // Conditions are few per node: accumulate serially in a map keyed by node to stay simple
+  // and deterministic; the per-condition normals (the costly part) are computed in parallel.
+  ComputeConditionsNormals(part);
+  std::unordered_map<Node*, Array3> sums;
+  sums.reserve(part.NumberOfNodes());
+  for (Condition* condition : part.Conditions()) {
+    const Geometry& geometry = condition->GetGeometry();
+    const Array3 weighted = geometry.DomainSize() * condition->GetValue(NORMAL);
+    for (Node* node : geometry.Nodes()) {
+      auto [it, inserted] = sums.try_emplace(node, Array3::Zero());
+      it->second += weighted;
+    }
+  }
+  for (auto& [node, sum] : sums) {
+    const double norm = sum.norm();
+    SetNodalNormal(*node, norm > 0.0 ? Array3(sum / norm) : Array3::Zero());
+  }
+}
+
+Array3 NormalCalculationUtilities::GetNodalNormal(const Node& node) {
+  if (node.HasSolutionStepValue(NORMAL)) return node.FastGetSolutionStepValue(NORMAL);
+  return node.GetValue(NORMAL);
+}
+
+void NormalCalculationUtilities::SetNodalNormal(Node& node, const Array3& normal) {
+  if (node.HasSolutionStepValue(NORMAL))
+    node.FastGetSolutionStepValue(NORMAL) = normal;
+  else
+    node.SetValue(NORMAL, normal);
+}
+
+}  // namespace mc

@@ -1,0 +1,194 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Issue 3 (part 1): contact interface set-up — Contact/ContactSub<k> parts, INTERFACE/SLAVE/
+// MASTER flags, interface conditions generated from element faces with outward normals, the
+// interface property, NODAL_H, averaged nodal normals and the normal checks.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "contact_search_test_utilities.h"
+#include "core/model/model.h"
+#include "core/utilities/error.h"
+#include "core/variables/kernel_variables.h"
+#include "custom_processes/contact_interface_builder.h"
+#include "custom_utilities/normal_calculation_utilities.h"
+
+namespace mc {
+namespace {
+
+std::set<IndexType> FlaggedNodes(const ModelPart& part, const Flag& flag) {
+  std::set<IndexType> ids;
+  for (const Node* node : part.Nodes())
+    if (node->Is(flag)) ids.insert(node->Id());
+  return ids;
+}
+
+double NodalH(const ModelPart& part, IndexType id) { return part.GetNode(id).FastGetSolutionStepValue(NODAL_H); }
+
+TEST(ContactInterface, Patch2DGeneratesOutwardFacesAndFlags) {
+  Model model;
+  ModelPart& root = test::ReadCase(model, "ALM_frictionless_contact_test_2D/hyper_simple_patch_test.mdpa");
+  ContactInterfaceSettings settings;
+  settings.parts = {"Contact_Part"};
+  settings.slave_parts = {"Parts_Parts_Auto2"};
+  ModelPart& sub = ContactInterfaceBuilder(root).Build(settings);
+
+  EXPECT_EQ(sub.FullName(), "Structure.Contact.ContactSub0");
+  EXPECT_TRUE(root.HasSubModelPart("ComputingContact.ComputingContactSub0"));
+  EXPECT_EQ(sub.NumberOfNodes(), 4u);
+  ASSERT_EQ(sub.NumberOfConditions(), 2u);
+  EXPECT_EQ(FlaggedNodes(sub, SLAVE), (std::set<IndexType>{3, 4}));
+  EXPECT_EQ(FlaggedNodes(sub, MASTER), (std::set<IndexType>{5, 6}));
+  EXPECT_EQ(FlaggedNodes(sub, INTERFACE), (std::set<IndexType>{3, 4, 5, 6}));
+  for (const Condition* condition : sub.Conditions()) {
+    EXPECT_EQ(condition->Info(), "LineCondition2D2N");
+    EXPECT_TRUE(condition->Is(INTERFACE));
+    const Array3 n = condition->GetValue(NORMAL);
+    // Lower body (slave) top face points up, upper body (master) bottom face points down.
+    if (condition->Is(SLAVE)) {
+      EXPECT_NEAR((n - Array3(0, 1, 0)).norm(), 0.0, 1e-14);
+      EXPECT_EQ(condition->GetGeometry()[0].Id(), 3u);  // element 1 order 1-2-3-4: edge 3-4
+    } else {
+      EXPECT_TRUE(condition->Is(MASTER));
+      EXPECT_NEAR((n - Array3(0, -1, 0)).norm(), 0.0, 1e-14);
+    }
+    EXPECT_EQ(condition->pGetProperties()->Id(), 100u);
+  }
+  for (IndexType id : {3, 4})
+    EXPECT_NEAR((NormalCalculationUtilities::GetNodalNormal(root.GetNode(id)) - Array3(0, 1, 0)).norm(), 0.0, 1e-14);
+  for (IndexType id : {5, 6})
+    EXPECT_NEAR((NormalCalculationUtilities::GetNodalNormal(root.GetNode(id)) - Array3(0, -1, 0)).norm(), 0.0, 1e-14);
+  // Lower square of side 1; upper element 1 x 0.999 (from y = 1.001 to 2).
+  EXPECT_DOUBLE_EQ(NodalH(root, 3), 1.0);
+  EXPECT_DOUBLE_EQ(NodalH(root, 4), 1.0);
+  EXPECT_NEAR(NodalH(root, 5), 0.999, 1e-12);
+  EXPECT_NEAR(NodalH(root, 6), 0.999, 1e-12);
+  EXPECT_TRUE(root.GetProperties(100).Has(FRICTION_COEFFICIENT));
+  EXPECT_EQ(root.GetProperties(100).GetValue(FRICTION_COEFFICIENT), 0.0);
+  // Rebuilding reuses the existing interface.
+  EXPECT_EQ(&ContactInterfaceBuilder(root).Build(settings), &sub);
+  EXPECT_EQ(sub.NumberOfConditions(), 2u);
+}
+
+TEST(ContactInterface, Patch3DAutomaticRolesAndNormals) {
+  Model model;
+  ModelPart& root =
+      test::ReadCase(model, "ALM_frictionless_contact_test_3D/3D_contact_simplest_patch_matching_test.mdpa");
+  ContactInterfaceSettings settings;
+  settings.parts = {"Structure.Contact_Part"};
+  settings.property_id = 7;
+  settings.friction_coefficient = 0.3;
+  ModelPart& sub = ContactInterfaceBuilder(root).Build(settings);
+  EXPECT_EQ(sub.NumberOfNodes(), 8u);
+  ASSERT_EQ(sub.NumberOfConditions(), 2u);
+  for (const Condition* condition : sub.Conditions()) {
+    EXPECT_EQ(condition->Info(), "SurfaceCondition3D4N");
+    EXPECT_TRUE(condition->Is(SLAVE) && condition->Is(MASTER));  // the search decides
+    const Array3 n = condition->GetValue(NORMAL);
+    const double z = condition->GetGeometry().Center().z();
+    // Lower block top (z = 1) points up, upper block bottom (z = 0.99999) points down.
+    EXPECT_NEAR((n - Array3(0, 0, z > 0.999995 ? 1.0 : -1.0)).norm(), 0.0, 1e-14);
+    EXPECT_EQ(condition->pGetProperties()->Id(), 7u);
+  }
+  EXPECT_EQ(root.GetProperties(7).GetValue(FRICTION_COEFFICIENT), 0.3);
+  for (const Node* node : sub.Nodes()) {
+    const double expected = node->Z() > 0.999995 ? 1.0 : -1.0;
+    EXPECT_NEAR((NormalCalculationUtilities::GetNodalNormal(*node) - Array3(0, 0, expected)).norm(), 0.0, 1e-14);
+    EXPECT_DOUBLE_EQ(node->FastGetSolutionStepValue(NODAL_H), 1.0);
+  }
+}
+
+TEST(ContactInterface, TriQuadFacesOfTetrahedraAndHexahedron) {
+  Model model;
+  ModelPart& root =
+      test::ReadCase(model, "ALM_frictionless_contact_test_3D/3D_contact_simplest_patch_matching_triquad_test.mdpa");
+  ContactInterfaceSettings settings;
+  settings.parts = {"DISPLACEMENT_Displacement_Auto3"};
+  settings.slave_parts = {"Parts_Parts_Auto2"};
+  ModelPart& sub = ContactInterfaceBuilder(root).Build(settings);
+  std::size_t triangles = 0, quads = 0;
+  double slave_area = 0.0, master_area = 0.0;
+  for (const Condition* condition : sub.Conditions()) {
+    const Array3 n = condition->GetValue(NORMAL);
+    if (condition->Is(SLAVE)) {
+      ++triangles;
+      EXPECT_EQ(condition->Info(), "SurfaceCondition3D3N");
+      slave_area += condition->GetGeometry().DomainSize();
+    } else {
+      ++quads;
+      EXPECT_EQ(condition->Info(), "SurfaceCondition3D4N");
+      master_area += condition->GetGeometry().DomainSize();
+    }
+    // Every slave normal is opposite to every master normal on this flat interface.
+    EXPECT_NEAR(std::abs(n.z()), 1.0, 1e-12);
+  }
+  EXPECT_EQ(quads, 1u);
+  EXPECT_GT(triangles, 1u);
+  EXPECT_NEAR(slave_area, master_area, 1e-9);
+  for (const Condition* condition : sub.Conditions())
+    for (const Condition* other : sub.Conditions())
+      if (condition->Is(SLAVE) && other->Is(MASTER)) {
+        EXPECT_NEAR(condition->GetValue(NORMAL).dot(other->GetValue(NORMAL)), -1.0, 1e-12);
+      }
+}
+
+TEST(ContactInterface, UnknownPartSuggestsNearestName) {
+  Model model;
+  ModelPart& root = test::ReadCase(model, "ALM_frictionless_contact_test_2D/hyper_simple_patch_test.mdpa");
+  ContactInterfaceSettings settings;
+  settings.parts = {"Contact_Prt"};
+  try {
+    ContactInterfaceBuilder(root).Build(settings);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("Contact_Part"), std::string::npos) << e.what();
+  }
+}
+
+TEST(ContactInterface, InvertedMdpaConditionIsAnError) {
+  Model model;
+  ModelPart& root = test::ReadCase(model, "ALM_frictionless_contact_test_2D/hyper_simple_patch_test.mdpa");
+  ModelPart& part = root.CreateSubModelPart("Given");
+  part.CreateNewCondition("LineCondition2D2N", 1, {4, 3}, &root.GetOrCreateProperties(0));  // points into element 1
+  part.CreateNewCondition("LineCondition2D2N", 2, {5, 6}, &root.GetOrCreateProperties(0));
+  ContactInterfaceSettings settings;
+  settings.parts = {"Given"};
+  settings.slave_parts = {"Parts_Parts_Auto2"};
+  try {
+    ContactInterfaceBuilder(root).Build(settings);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("condition 1 (nodes 4 3) points into element 1"), std::string::npos) << message;
+  }
+}
+
+TEST(ContactInterface, SidesNormalsPointingTheSameWayIsAnError) {
+  // Two surfaces without elements, both oriented downwards.
+  test::RegisterTestPairs();
+  Model model;
+  ModelPart& root = model.CreateModelPart("Structure");
+  root.CreateNewNode(1, 0, 0, 0);
+  root.CreateNewNode(2, 1, 0, 0);
+  root.CreateNewNode(3, 0, 0.001, 0);
+  root.CreateNewNode(4, 1, 0.001, 0);
+  ModelPart& lower = root.CreateSubModelPart("Lower");
+  ModelPart& upper = root.CreateSubModelPart("Upper");
+  lower.CreateNewCondition("LineCondition2D2N", 1, {1, 2}, &root.GetOrCreateProperties(0));
+  upper.CreateNewCondition("LineCondition2D2N", 2, {3, 4}, &root.GetOrCreateProperties(0));
+  ContactInterfaceSettings settings;
+  settings.parts = {"Lower", "Upper"};
+  settings.slave_parts = {"Lower"};
+  try {
+    ContactInterfaceBuilder(root).Build(settings);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("pointing the same way"), std::string::npos) << message;
+    EXPECT_NE(message.find("slave condition 1 (nodes 1 2)"), std::string::npos) << message;
+    EXPECT_NE(message.find("Lower"), std::string::npos) << message;
+  }
+}
+
+}  // namespace
+}  // namespace mc
