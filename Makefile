@@ -3,9 +3,10 @@ PYTHON ?= python3
 JOBS ?= $(shell nproc)
 BUILD_DIR := build/cmake
 DEBS := g++ cmake ninja-build ccache pkg-config libeigen3-dev libsuitesparse-dev libmetis-dev \
-        nlohmann-json3-dev libnanoflann-dev libhdf5-dev libgtest-dev libmuparser-dev
+        nlohmann-json3-dev libnanoflann-dev libhdf5-dev libgtest-dev libmuparser-dev \
+        libglu1-mesa libxcursor1 libxft2 libxinerama1
 PY_BUILD := scikit-build-core pybind11 ninja cmake
-PY_RUN := numpy scipy meshio h5py rich pytest sympy matplotlib
+PY_RUN := numpy scipy meshio h5py rich pytest sympy matplotlib gmsh
 
 .PHONY: all deps install demo test test-cpp test-python bench clean
 

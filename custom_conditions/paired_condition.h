@@ -38,6 +38,10 @@ class PairedCondition : public Condition {
     master_ = master;
   }
 
+  /// Explicit (RHS-only) update of nodal mortar quantities, e.g. the contact conditions add
+  /// their weighted gap to WEIGHTED_GAP. Thread-safe across pairs; default: nothing.
+  virtual void AddExplicitContribution(const ProcessInfo& info) {}
+
  private:
   Geometry paired_geometry_;
   Condition* slave_ = nullptr;

@@ -63,7 +63,7 @@ ModelPart& ContactInterfaceBuilder::ResolvePart(ModelPart& root, const std::stri
   std::vector<std::string> names;
   for (ModelPart* part : parts) {
     if (part->Name() == relative) matches.push_back(part);
-    names.push_back(part->FullName());
+    names.push_back(part->FullName().substr(prefix.size()));
   }
   if (matches.size() == 1) return *matches.front();
   if (matches.size() > 1)
@@ -135,8 +135,12 @@ ModelPart& ContactInterfaceBuilder::Build(const ContactInterfaceSettings& settin
 
   // Roles (spec 4.1: the listed parts are the slave side).
   std::unordered_set<const Node*> slave_nodes;
-  for (const std::string& part_name : settings.slave_parts)
-    for (const Node* node : ResolvePart(root_, part_name).Nodes()) slave_nodes.insert(node);
+  for (const std::string& part_name : settings.slave_parts) {
+    const ModelPart& slave_part = ResolvePart(root_, part_name);
+    for (const Node* node : slave_part.Nodes()) slave_nodes.insert(node);
+    for (const Condition* condition : slave_part.Conditions())
+      for (const Node* node : condition->GetGeometry().Nodes()) slave_nodes.insert(node);
+  }
   const bool automatic = settings.slave_parts.empty();
   for (Node* node : sub.Nodes()) {
     node->Set(INTERFACE, true);
@@ -172,6 +176,7 @@ void ContactInterfaceBuilder::AddPart(ModelPart& sub, ModelPart& part, Propertie
   for (Condition* condition : part.Conditions()) {
     if (!IsInterfaceGeometry(condition->GetGeometry())) continue;
     sub.AddCondition(condition);
+    for (Node* node : condition->GetGeometry().Nodes()) sub.AddNode(node);
     has_interface_conditions = true;
   }
   if (has_interface_conditions) return;

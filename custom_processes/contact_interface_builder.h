@@ -48,7 +48,8 @@ class ContactInterfaceBuilder {
   static Properties& InterfaceProperties(ModelPart& root, const std::string& slot);
 
   /// NODAL_H of every node of `part`: the smallest distance to another node of an element of
-  /// `root` holding it (Kratos' nodal length). Historical when the model has NODAL_H.
+  /// `root` holding it (Kratos' nodal length); for nodes in no element, the shortest edge of
+  /// the part's faces holding them. Historical when the model has NODAL_H.
   static void ComputeNodalH(ModelPart& root, ModelPart& part);
   static double GetNodalH(const Node& node);
 

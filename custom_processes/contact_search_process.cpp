@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <mutex>
+#include <set>
 #include <numeric>
 #include <unordered_map>
 
@@ -187,7 +189,12 @@ void ContactSearchProcess::SetInterfaceActive(bool active) {
   for (Condition* condition : computing_.Conditions()) condition->Set(ACTIVE, active);
 }
 
-const PairedCondition& ContactSearchProcess::Prototype(const Geometry& slave, const Geometry& master) {
+const PairedCondition& ContactSearchProcess::Prototype(const Geometry& slave, const Geometry& master,
+                                                       const std::string** interned) {
+  // Entities refer to their registered name by pointer: keep one copy per name for the
+  // program's lifetime.
+  static std::mutex mutex;
+  static std::set<std::string> names;
   const std::string name =
       settings_["condition_name"].GetString() + GeometryToken(slave, master) + settings_["final_string"].GetString();
   const auto& registry = Registry<Condition>::Instance();
@@ -201,6 +208,10 @@ const PairedCondition& ContactSearchProcess::Prototype(const Geometry& slave, co
   const auto* prototype = dynamic_cast<const PairedCondition*>(&registry.Get(name));
   if (!prototype)
     throw Error(Concat("condition '", name, "' is registered but is not a PairedCondition"));
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    *interned = &*names.insert(name).first;
+  }
   return *prototype;
 }
 
@@ -325,7 +336,7 @@ ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
         slave_box = BoundingBox(slave_geometry, radius);
         tree.RadiusSearch(slave.center, slave.radius + radius * std::sqrt(3.0) + max_master_radius, found);
       } else {
-        tree.RadiusSearch(slave.center, radius, found);
+        tree.RadiusSearch(slave.center, radius + max_master_radius, found);
       }
       OrientedBox slave_obb;
       if (with_obb) slave_obb = BuildOrientedBox(slave_geometry, slave.normal, box_factor * slave.length);
@@ -334,6 +345,8 @@ ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
         const std::size_t m = masters[f];
         if (m == s) continue;
         const FaceData& master = faces[m];
+        // In radius: the search ball meets the ball around the master's nodes.
+        if (!in_box && (master.center - slave.center).norm() - master.radius > radius) continue;
         const Geometry& master_geometry = master.condition->GetGeometry();
         if (slave.normal.dot(master.normal) >= -threshold) continue;
         if (ShareNode(slave_geometry, master_geometry)) continue;
@@ -379,9 +392,11 @@ ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
   const int property_id = settings_["contact_property_id"].GetInt();
   Properties* pair_properties = property_id > 0 ? &root_.GetProperties(property_id) : nullptr;
   for (const auto& [slave, master] : pairs) {
-    const PairedCondition& prototype = Prototype(slave->GetGeometry(), master->GetGeometry());
+    const std::string* name = nullptr;
+    const PairedCondition& prototype = Prototype(slave->GetGeometry(), master->GetGeometry(), &name);
     Properties* properties = pair_properties ? pair_properties : slave->pGetProperties();
     std::unique_ptr<PairedCondition> pair = prototype.CreatePaired(next_id++, *slave, *master, properties);
+    pair->SetRegisteredName(name);
     pair->Set(SLAVE, true);
     computing_.AddCondition(std::unique_ptr<Condition>(std::move(pair)));
   }

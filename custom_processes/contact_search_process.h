@@ -29,8 +29,9 @@ struct ContactSearchStatistics {
 /// per (slave, master) in `ComputingContact.ComputingContactSub<k>`.
 ///
 /// Per slave condition s (size L_s, centre c_s, unit normal n_s), in parallel:
-///  1. candidates from a KD-tree over the master centres: within r = search_factor * L_s of
-///     c_s (`in_radius*`), or whose bounding box meets s's box grown by r (`in_box*`);
+///  1. candidates from a KD-tree over the master centres: masters whose bounding ball (centre,
+///     farthest node) meets the ball of radius r = search_factor * L_s around c_s
+///     (`in_radius*`), or whose bounding box meets s's box grown by r (`in_box*`);
 ///  2. drop masters sharing a node with s and those not facing it: n_s . n_m >= -threshold
 ///     (normal_orientation_threshold);
 ///  3. `*_with_obb`: drop masters whose oriented box (grown by bounding_box_factor * L) does not
@@ -81,7 +82,8 @@ class ContactSearchProcess {
   void AssignAutomaticRoles(const std::vector<Condition*>& conditions,
                             std::vector<std::vector<std::size_t>>& candidates);
   void PredictActiveSet(const std::vector<std::pair<Condition*, Condition*>>& pairs, ContactSearchStatistics& stats);
-  const PairedCondition& Prototype(const Geometry& slave, const Geometry& master);
+  /// The registered prototype of the pair name for these geometries, and its interned name.
+  const PairedCondition& Prototype(const Geometry& slave, const Geometry& master, const std::string** interned);
 
   ModelPart& root_;
   ModelPart& interface_;

@@ -36,6 +36,9 @@ PYBIND11_MODULE(_core, m) {
   mc::python::AddSolvingToPython(m);
   mc::python::AddStructuralToPython(m);
   mc::python::AddUtilitiesToPython(m);
+  mc::python::AddContactConditionsToPython(m);
+  mc::python::AddContactProcessesToPython(m);
+  mc::python::AddContactStrategiesToPython(m);
   mc::python::ExportRegisteredNames(m);
   m.def("ExportRegisteredNames", [m]() mutable { mc::python::ExportRegisteredNames(m); },
         "Re-exports registered variables and flags as module attributes (after loading a plugin).");

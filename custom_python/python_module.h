@@ -23,6 +23,9 @@ void AddLinearSolversToPython(py::module_& m);
 void AddSolvingToPython(py::module_& m);
 void AddStructuralToPython(py::module_& m);
 void AddUtilitiesToPython(py::module_& m);
+void AddContactProcessesToPython(py::module_& m);
+void AddContactConditionsToPython(py::module_& m);
+void AddContactStrategiesToPython(py::module_& m);
 void ExportRegisteredNames(py::module_& m);
 
 /// A Python value for a value of any variable type.

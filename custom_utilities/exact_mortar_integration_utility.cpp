@@ -236,6 +236,9 @@ bool ExactMortarIntegrationUtility<TDim, TNumNodes, TNumNodesMaster>::Compute(
     }
     while (n_clean > 1 && ValueOf((next[n_clean - 1] - next[0]).norm()) <= eps_len * 1e2) --n_clean;
     if (n_clean < 3) return false;
+    if (n_clean > TNumNodes + TNumNodesMaster)
+      throw Error(Concat("mortar integration: clipped polygon with ", n_clean,
+                         " vertices (non-convex slave or master condition?)"));
     std::copy(next.begin(), next.begin() + n_clean, poly.begin());
     n_poly = n_clean;
     if (!(ValueOf(signed_area(poly, n_poly)) > eps * area_scale)) return false;

@@ -16,6 +16,7 @@ from ._core import InputError, NotImplementedFeatureError, SolutionError, Error 
 __version__ = "0.1.0"
 
 _core.RegisterStructuralMechanics()
+_core.RegisterContactConditions()
 _core.ExportRegisteredNames()
 globals().update({name: getattr(_core, name) for name in _core.VariableNames() + _core.FlagNames()})
 

@@ -60,6 +60,8 @@ class StructuralMechanicsAnalysis:
         self.output_processes = self._create_processes("output_processes")
         for process in self._all_processes():
             process.ExecuteInitialize()
+        if hasattr(self.solver, "set_sub_step_callbacks"):
+            self.solver.set_sub_step_callbacks(self._initialize_processes_step, self._finalize_processes_step)
         self.solver.Initialize()
         self.Check()
         for process in self._all_processes():
@@ -96,12 +98,18 @@ class StructuralMechanicsAnalysis:
     def InitializeSolutionStep(self) -> None:
         if self.echo_level >= 1 and not self.progress:
             print(f"STEP {self.step}  TIME {self.time:.6g}")
-        for process in self._all_processes():
-            process.ExecuteInitializeSolutionStep()
+        self._initialize_processes_step()
         self.solver.InitializeSolutionStep()
 
     def FinalizeSolutionStep(self) -> None:
         self.solver.FinalizeSolutionStep()
+        self._finalize_processes_step()
+
+    def _initialize_processes_step(self) -> None:
+        for process in self._all_processes():
+            process.ExecuteInitializeSolutionStep()
+
+    def _finalize_processes_step(self) -> None:
         for process in self._all_processes():
             process.ExecuteFinalizeSolutionStep()
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "custom_strategies/custom_strategies/residualbased_newton_raphson_contact_strategy.h"
 
+#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 
@@ -140,8 +141,21 @@ bool ResidualBasedNewtonRaphsonContactStrategy::SolveWithActiveSet() {
   return false;
 }
 
+bool ResidualBasedNewtonRaphsonContactStrategy::TrySolveWithActiveSet() {
+  solver_error_.clear();
+  if (!settings_.adaptative_strategy) return SolveWithActiveSet();
+  // A diverging iterate can make the system singular: with splitting on, that is one more
+  // reason to split, not the end of the analysis.
+  try {
+    return SolveWithActiveSet();
+  } catch (const SolutionError& e) {
+    solver_error_ = e.what();
+    return false;
+  }
+}
+
 bool ResidualBasedNewtonRaphsonContactStrategy::SolveSolutionStep() {
-  bool converged = SolveWithActiveSet();
+  bool converged = TrySolveWithActiveSet();
   if (!converged && settings_.adaptative_strategy && !in_sub_step_) converged = AdaptiveStep();
   failure_ = converged ? std::string() : DescribeFailure();
   if (!converged) Logger::Warning(failure_);
@@ -176,7 +190,7 @@ bool ResidualBasedNewtonRaphsonContactStrategy::AdaptiveStep() {
       if (callbacks_.initialize_solution_step) callbacks_.initialize_solution_step();
       InitializeSolutionStep();
       Predict();
-      ok = SolveWithActiveSet();
+      ok = TrySolveWithActiveSet();
       if (ok && !last) {
         FinalizeSolutionStep();
         if (callbacks_.finalize_solution_step) callbacks_.finalize_solution_step();
@@ -253,13 +267,17 @@ IndexType ResidualBasedNewtonRaphsonContactStrategy::FindInvertedElement() const
 std::string ResidualBasedNewtonRaphsonContactStrategy::DescribeFailure() const {
   const ProcessInfo& info = model_part_.GetProcessInfo();
   std::string message = Concat(Name(), ": step ", info.GetValue(STEP), " (time ", info.GetValue(TIME), ")");
+  if (!solver_error_.empty()) return Concat(message, ": ", solver_error_);
   if (inverted_element_ != 0)
     return Concat(message, ": element ", inverted_element_,
                   " is inverted (non-positive Jacobian determinant) after the update");
   const bool simplified = !model_part_.Is(INTERACTION);
   if (last_changes_ > 0) {
-    // The nodes that switched most often are the ones that keep the set from settling.
-    std::vector<std::pair<IndexType, int>> nodes(flips_.begin(), flips_.end());
+    // The nodes that switched more than once keep the set from settling; most frequent first.
+    std::vector<std::pair<IndexType, int>> nodes;
+    for (const auto& [id, count] : flips_)
+      if (count > 1) nodes.emplace_back(id, count);
+    if (nodes.empty()) nodes.assign(flips_.begin(), flips_.end());
     std::stable_sort(nodes.begin(), nodes.end(), [](const auto& a, const auto& b) { return a.second > b.second; });
     std::string list;
     const std::size_t shown = std::min<std::size_t>(nodes.size(), 10);

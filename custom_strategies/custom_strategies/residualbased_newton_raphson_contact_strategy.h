@@ -94,6 +94,9 @@ class ResidualBasedNewtonRaphsonContactStrategy : public NewtonRaphsonStrategy {
   bool RunNewtonLoop();
   /// Full or simplified semi-smooth Newton, per the INTERACTION flag.
   bool SolveWithActiveSet();
+  /// SolveWithActiveSet; with the adaptive strategy a SolutionError (singular system of a
+  /// diverging iterate) counts as non-convergence.
+  bool TrySolveWithActiveSet();
   bool AdaptiveStep();
   /// ACTIVE flag of every slave node of the contact part, in container order.
   std::vector<char> ActiveStates() const;
@@ -112,6 +115,7 @@ class ResidualBasedNewtonRaphsonContactStrategy : public NewtonRaphsonStrategy {
   std::size_t last_changes_ = 0;
   IndexType inverted_element_ = 0;
   std::string failure_;
+  std::string solver_error_;
   int passes_ = 0;
   int split_level_ = 0;
   bool in_sub_step_ = false;

@@ -20,7 +20,6 @@ from .assign_vector_by_direction_process import AssignVectorByDirectionProcess
 from .assign_vector_by_direction_to_condition_process import AssignVectorByDirectionToConditionProcess
 from .assign_vector_variable_process import AssignVectorVariableProcess
 from .assign_vector_variable_to_conditions_process import AssignVectorVariableToConditionsProcess
-from .contact_placeholders import PENDING_CONTACT_PROCESSES, pending_process_class
 from .from_json_check_result_process import CheckResultError, FromJsonCheckResultProcess
 from .json_output_process import JsonOutputProcess
 from .model_part_resolution import resolve_model_part
@@ -39,7 +38,10 @@ PROCESS_REGISTRY: dict[tuple[str, str], type[Process]] = {
     (KERNEL, "from_json_check_result_process"): FromJsonCheckResultProcess,
     (KERNEL, "json_output_process"): JsonOutputProcess,
 }
-PROCESS_REGISTRY.update({(CONTACT, name): pending_process_class(name) for name in PENDING_CONTACT_PROCESSES})
+
+from ..contact import register_contact_processes  # noqa: E402
+
+register_contact_processes(PROCESS_REGISTRY)
 
 
 def _register_outputs() -> None:

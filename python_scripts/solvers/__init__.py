@@ -3,6 +3,7 @@ from __future__ import annotations
 
 from .. import _core
 from ..utilities import nearest
+from .contact_mechanical_solver import ContactMechanicalSolver
 from .mechanical_solver import MechanicalSolver
 from .solver_settings import validate_solver_settings
 
@@ -24,12 +25,11 @@ def create_solver(model: _core.Model, settings: _core.Parameters, case_dir: str 
     if kind == "dynamic" and method not in ("implicit", "explicit"):
         raise _core.InputError(f"{where}.time_integration_method: expected \"implicit\" or \"explicit\", got \"{method}\"")
     contact = settings["contact_settings"]
+    solver_class = MechanicalSolver
     if contact.size() > 0 and contact["mortar_type"].GetString():
-        raise _core.NotImplementedFeatureError(
-            f"{where}.contact_settings.mortar_type: \"{contact['mortar_type'].GetString()}\" — mortar contact "
-            "solvers are not implemented yet (frictionless contact arrives with issue 3)")
+        solver_class = ContactMechanicalSolver
     if settings["mpc_contact_settings"].size() > 0:
         raise _core.NotImplementedFeatureError(
             f"{where}.mpc_contact_settings: multipoint-constraint contact solvers are not implemented yet")
-    return MechanicalSolver(model, settings, dynamic=(kind == "dynamic"),
-                            explicit=(kind == "dynamic" and method == "explicit"), case_dir=case_dir)
+    return solver_class(model, settings, dynamic=(kind == "dynamic"),
+                        explicit=(kind == "dynamic" and method == "explicit"), case_dir=case_dir)

@@ -179,16 +179,7 @@ class MechanicalSolver:
                                           compute_reactions=s["compute_reactions"].GetBool(),
                                           reform_dofs_at_each_step=s["reform_dofs_at_each_step"].GetBool(),
                                           move_mesh=s["move_mesh_flag"].GetBool(), echo_level=self.echo_level)
-        process_info = part.ProcessInfo
-        process_info.SetValue(_core.RAYLEIGH_ALPHA, s["rayleigh_alpha"].GetDouble())
-        process_info.SetValue(_core.RAYLEIGH_BETA, s["rayleigh_beta"].GetDouble())
-        if self.scheme_type == "static" or self.scheme_type == "pseudo_static":
-            scheme = _core.StaticScheme()
-        elif self.scheme_type == "newmark":
-            scheme = _core.BossakScheme(alpha_m=0.0, newmark_beta=s["newmark_beta"].GetDouble())
-        else:
-            # Bossak's beta = (1 - alpha)^2 / 4 follows from alpha_m; newmark_beta is for Newmark only.
-            scheme = _core.BossakScheme(alpha_m=s["damp_factor_m"].GetDouble())
+        scheme = self._create_scheme(part)
         kind = s["builder_and_solver_settings"]["type"].GetString()
         builder = (_core.BlockBuilderAndSolver(linear_solver) if kind == "block"
                    else _core.EliminationBuilderAndSolver(linear_solver))
@@ -206,6 +197,20 @@ class MechanicalSolver:
             return _core.LineSearchStrategy(part, scheme, criteria, builder, settings=self._line_search_settings(),
                                             **newton)
         return _core.NewtonRaphsonStrategy(part, scheme, criteria, builder, **newton)
+
+    def _create_scheme(self, part):
+        s = self.settings
+        process_info = part.ProcessInfo
+        process_info.SetValue(_core.RAYLEIGH_ALPHA, s["rayleigh_alpha"].GetDouble())
+        process_info.SetValue(_core.RAYLEIGH_BETA, s["rayleigh_beta"].GetDouble())
+        if self.scheme_type == "static" or self.scheme_type == "pseudo_static":
+            scheme = _core.StaticScheme()
+        elif self.scheme_type == "newmark":
+            scheme = _core.BossakScheme(alpha_m=0.0, newmark_beta=s["newmark_beta"].GetDouble())
+        else:
+            # Bossak's beta = (1 - alpha)^2 / 4 follows from alpha_m; newmark_beta is for Newmark only.
+            scheme = _core.BossakScheme(alpha_m=s["damp_factor_m"].GetDouble())
+        return scheme
 
     def _line_search_settings(self):
         """Line-search keys of solving_strategy_settings.advanced_settings (Kratos' names)."""

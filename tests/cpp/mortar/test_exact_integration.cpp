@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -39,18 +40,6 @@ void ExpectRows(const std::vector<std::array<double, 3>>& got,
   ASSERT_EQ(got.size(), expected.size());
   for (size_t r = 0; r < got.size(); ++r)
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[r][c], expected[r][c], kTol) << "row " << r << " col " << c;
-}
-
-// Same rows in any order.
-void ExpectRowSet(std::vector<std::array<double, 3>> got, std::vector<std::array<double, 3>> expected) {
-  auto less = [](const auto& a, const auto& b) {
-    for (int c = 0; c < 3; ++c)
-      if (std::abs(a[c] - b[c]) > 1e-9) return a[c] < b[c];
-    return false;
-  };
-  std::sort(got.begin(), got.end(), less);
-  std::sort(expected.begin(), expected.end(), less);
-  ExpectRows(got, expected);
 }
 
 template <int N1, int N2>

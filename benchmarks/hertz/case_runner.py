@@ -1,0 +1,171 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
+"""Issue 4: runs one Hertz case with Kratos or mortarcontact and writes raw results as JSON.
+
+Executed in a subprocess by run_kratos.py and compare.py, with the Python of the code under test
+(Kratos: the benchmark's own virtual environment; mortarcontact: the project's Python), so only
+the standard library is imported here besides that code. Both codes expose the same Kratos-like
+Python API (Model, analysis stage, nodes with Id / X0 / GetSolutionStepValue), so one script
+serves both.
+
+    python case_runner.py --code kratos CASE_DIR OUT.json
+
+Recorded: wall time of the analysis (Initialize + solution loop + Finalize, imports excluded)
+and of its set-up, time and Newton iterations per step (Kratos: ProcessInfo NL_ITERATION_NUMBER
+after each step; mortarcontact: the stage's step log), convergence per step, peak resident memory
+of the process (getrusage), and at the end: per slave node the initial coordinates,
+LAGRANGE_MULTIPLIER_CONTACT_PRESSURE (historical), AUGMENTED_NORMAL_CONTACT_PRESSURE
+(non-historical), WEIGHTED_GAP and the ACTIVE flag; the sums of REACTION over the clamped bottom
+and the pushed top. A failure is recorded as status "not available" (not implemented) or
+"failed" with the message, and the script exits 0 so that the harness can report it.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import resource
+import sys
+import time
+import traceback
+
+
+def _peak_rss_mb() -> float:
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
+
+
+def _extract(model, get_variable, dim: int, flag_active) -> dict:
+    root = model.GetModelPart("Structure")
+    axis = dim - 1
+
+    def value(node, name, historical=True):
+        try:
+            var = get_variable(name)
+            return float(node.GetSolutionStepValue(var) if historical else node.GetValue(var))
+        except Exception:  # variable absent in this code or on this node
+            return None
+
+    slave = []
+    for node in root.GetSubModelPart("Contact_slave").Nodes:
+        slave.append({"id": node.Id, "x": node.X0, "y": node.Y0, "z": node.Z0,
+                      "lm": value(node, "LAGRANGE_MULTIPLIER_CONTACT_PRESSURE"),
+                      "augmented": value(node, "AUGMENTED_NORMAL_CONTACT_PRESSURE", historical=False),
+                      "weighted_gap": value(node, "WEIGHTED_GAP"),
+                      "active": bool(node.Is(flag_active)) if flag_active is not None else None})
+    reactions = {}
+    component = "REACTION_" + "XYZ"[axis]
+    for part in ("DISPLACEMENT_bottom", "DISPLACEMENT_top"):
+        total = 0.0
+        for node in root.GetSubModelPart(part).Nodes:
+            total += value(node, component) or 0.0
+        reactions[part] = total
+    displacement = "DISPLACEMENT_" + "XYZ"[axis]
+    top = [value(node, displacement) for node in root.GetSubModelPart("DISPLACEMENT_top").Nodes]
+    info = {}
+    for name in ("SCALE_FACTOR", "INITIAL_PENALTY"):
+        try:
+            info[name] = float(root.ProcessInfo[get_variable(name)])
+        except Exception:  # not set by this code
+            info[name] = None
+    return {"slave": slave, "reactions": reactions, "top_displacement": top[0] if top else None,
+            "nodes": root.NumberOfNodes(), "process_info": info}
+
+
+def run_kratos(parameters_text: str, dim: int, record: dict):
+    import KratosMultiphysics as KM
+    import KratosMultiphysics.ContactStructuralMechanicsApplication  # noqa: F401 (registers the contact solver)
+    import KratosMultiphysics.LinearSolversApplication  # noqa: F401 (sparse_lu)
+    from KratosMultiphysics.StructuralMechanicsApplication.structural_mechanics_analysis import (
+        StructuralMechanicsAnalysis)
+
+    KM.Logger.GetDefaultOutput().SetSeverity(KM.Logger.Severity.WARNING)
+
+    class Instrumented(StructuralMechanicsAnalysis):
+        def InitializeSolutionStep(self):
+            self._step_start = time.perf_counter()
+            super().InitializeSolutionStep()
+
+        def Initialize(self):
+            super().Initialize()
+            solver = self._GetSolver()
+            solve = solver.SolveSolutionStep
+
+            def solve_and_record():
+                self._converged = bool(solve())
+                return self._converged
+
+            solver.SolveSolutionStep = solve_and_record
+
+        def FinalizeSolutionStep(self):
+            super().FinalizeSolutionStep()
+            info = self._GetSolver().GetComputingModelPart().ProcessInfo
+            record["steps"].append({"time": info[KM.TIME], "iterations": info[KM.NL_ITERATION_NUMBER],
+                                    "converged": getattr(self, "_converged", None),
+                                    "seconds": time.perf_counter() - self._step_start})
+
+    model = KM.Model()
+    analysis = Instrumented(model, KM.Parameters(parameters_text))
+    started = time.perf_counter()
+    analysis.Initialize()
+    record["setup_seconds"] = time.perf_counter() - started
+    analysis.RunSolutionLoop()
+    analysis.Finalize()
+    record["analysis_seconds"] = time.perf_counter() - started
+    record.update(_extract(model, KM.KratosGlobals.GetVariable, dim, KM.ACTIVE))
+
+
+def run_mortarcontact(parameters_path: str, dim: int, record: dict):
+    import mortarcontact as mc
+    from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
+    from mortarcontact.project_parameters import read_project_parameters
+
+    parameters = read_project_parameters(parameters_path)
+    model = mc.Model()
+    started = time.perf_counter()
+    analysis = StructuralMechanicsAnalysis(model, parameters, progress=False, stop_on_non_convergence=False,
+                                           case_dir=os.path.dirname(parameters_path))
+    analysis.Initialize()
+    record["setup_seconds"] = time.perf_counter() - started
+    analysis.RunSolutionLoop()
+    analysis.Finalize()
+    record["analysis_seconds"] = time.perf_counter() - started
+    for step, t, iterations, converged, seconds in analysis.step_log:
+        record["steps"].append({"time": t, "iterations": iterations, "converged": converged, "seconds": seconds})
+    record.update(_extract(model, mc.GetVariable, dim, getattr(mc, "ACTIVE", None)))
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(description="Runs one Hertz case and writes raw results (JSON).")
+    parser.add_argument("--code", choices=("kratos", "mortarcontact"), required=True)
+    parser.add_argument("case_dir")
+    parser.add_argument("output")
+    args = parser.parse_args(argv)
+    output = os.path.abspath(args.output)
+    case_dir = os.path.abspath(args.case_dir)
+    os.chdir(case_dir)  # relative paths inside the case resolve from its folder, as in Kratos
+    parameters_path = os.path.join(case_dir, "ProjectParameters.json")
+    with open(parameters_path) as f:
+        parameters_text = f.read()
+    dim = json.loads(parameters_text)["solver_settings"]["domain_size"]
+    record = {"code": args.code, "case": os.path.basename(case_dir), "status": "ok", "steps": []}
+    process_started = time.perf_counter()
+    try:
+        if args.code == "kratos":
+            run_kratos(parameters_text, dim, record)
+        else:
+            run_mortarcontact(parameters_path, dim, record)
+    except Exception as error:  # reported, not raised: the harness tabulates it
+        name = type(error).__name__
+        not_available = "NotImplemented" in name or "not implemented" in str(error).lower()
+        record["status"] = "not available" if not_available else "failed"
+        record["error"] = f"{name}: {error}"
+        record["traceback"] = traceback.format_exc()
+    record["process_seconds"] = time.perf_counter() - process_started
+    record["peak_rss_mb"] = _peak_rss_mb()
+    with open(output, "w") as f:
+        json.dump(record, f, indent=1)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

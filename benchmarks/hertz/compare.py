@@ -1,0 +1,134 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
+"""Issue 4: mortarcontact against Kratos 10.4 on the same Hertz case files, side by side.
+
+For each case the two codes run alternately (mortarcontact, Kratos, mortarcontact, ...), each run
+in a fresh subprocess with the same OMP_NUM_THREADS: mortarcontact through its analysis stage
+(what ``python -m mortarcontact run`` executes), Kratos in the benchmark's own venv. Reported:
+medians of the analysis time, the ratio ours / Kratos, Newton iterations per load step, peak
+resident memory and both codes' errors against Hertz. Writes benchmarks/hertz/results.md and
+benchmarks/hertz/time_vs_dofs.png (log-log, time against DoFs, both codes).
+
+A code that cannot run a case (mortarcontact before contact is implemented: "not implemented")
+is reported as "not available"; its later repetitions are skipped.
+
+    python benchmarks/hertz/compare.py                                  # hertz2d_2k, hertz3d_15k, 3 runs
+    python benchmarks/hertz/compare.py --cases all --repeat 5
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+import harness  # noqa: E402
+
+CODES = ("mortarcontact", "kratos")
+
+
+def _cell(summary: dict, key: str, fmt: str = "{:.2f}") -> str:
+    return fmt.format(summary[key]) if summary.get("status") == "ok" else summary.get("status", "n/a")
+
+
+def _errors(summary: dict) -> str:
+    if summary.get("status") != "ok" or not summary.get("hertz"):
+        return "n/a"
+    h = summary["hertz"]
+    return f"{harness.fmt_pct(h['peak_pressure_error'])} / {harness.fmt_pct(h['half_width_fit_error'])}"
+
+
+def table(rows) -> str:
+    lines = ["| case | DoFs | time ours [s] | time Kratos [s] | ours / Kratos | Newton its ours | Newton its Kratos "
+             "| peak RSS ours / Kratos [MB] | Hertz p / a error ours | Hertz p / a error Kratos |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
+    for name, hertz, s in rows:
+        ours, kratos = s["mortarcontact"], s["kratos"]
+        both = ours.get("status") == "ok" and kratos.get("status") == "ok"
+        ratio = f"{ours['analysis_seconds'] / kratos['analysis_seconds']:.2f}" if both else "n/a"
+        its = {c: (", ".join(map(str, s[c]["iterations"])) if s[c].get("status") == "ok" else "n/a") for c in CODES}
+        rss = " / ".join(_cell(s[c], "peak_rss_mb", "{:.0f}") for c in CODES)
+        lines.append(f"| {name} | {hertz['counts']['dofs']} | {_cell(ours, 'analysis_seconds')} "
+                     f"| {_cell(kratos, 'analysis_seconds')} | {ratio} | {its['mortarcontact']} | {its['kratos']} "
+                     f"| {rss} | {_errors(ours)} | {_errors(kratos)} |")
+    return "\n".join(lines)
+
+
+def plot(rows, path: str) -> bool:
+    try:
+        import matplotlib
+
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        return False
+    fig, ax = plt.subplots(figsize=(6, 4.5))
+    for code, marker in (("mortarcontact", "o"), ("kratos", "s")):
+        for family, style in (("hertz2d", "-"), ("hertz3d", "--")):
+            points = sorted((h["counts"]["dofs"], s[code]["analysis_seconds"]) for name, h, s in rows
+                            if name.startswith(family) and s[code].get("status") == "ok")
+            if points:
+                ax.loglog(*zip(*points), marker=marker, linestyle=style, label=f"{code} {family[-2:]}")
+    ax.set_xlabel("DoFs")
+    ax.set_ylabel("analysis time [s]")
+    ax.set_title("Hertz cases, 4 load steps")
+    ax.grid(True, which="both", alpha=0.3)
+    if ax.get_legend_handles_labels()[0]:
+        ax.legend()
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    return True
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--cases", default="hertz2d_2k,hertz3d_15k", help="comma-separated case names or 'all'")
+    parser.add_argument("--repeat", type=int, default=3, help="alternating runs per code and case (medians)")
+    parser.add_argument("--threads", type=int, default=1, help="OMP_NUM_THREADS of both codes")
+    parser.add_argument("--cases-dir", default=os.path.join(harness.HERE, "cases"))
+    parser.add_argument("--output", default=os.path.join(harness.HERE, "results.md"))
+    parser.add_argument("--plot", default=os.path.join(harness.HERE, "time_vs_dofs.png"))
+    args = parser.parse_args(argv)
+    names = harness.generate_cases.all_case_names() if args.cases == "all" else args.cases.split(",")
+    pythons = {"mortarcontact": sys.executable, "kratos": harness.kratos_python()}
+    rows = []
+    for name in names:
+        folder = harness.ensure_case(name, args.cases_dir)
+        hertz = harness.load_hertz(folder)
+        records = {c: [] for c in CODES}
+        for i in range(args.repeat):
+            for code in CODES:
+                if records[code] and records[code][0].get("status") != "ok":
+                    continue  # a code that cannot run the case is not retried
+                out = os.path.join(harness.RESULTS_DIR, f"{name}_{code}_{i}.json")
+                records[code].append(harness.run_once(code, folder, out, args.threads, pythons[code]))
+        summary = {c: harness.summarize(records[c], hertz) for c in CODES}
+        with open(os.path.join(harness.RESULTS_DIR, f"{name}_compare.json"), "w") as f:
+            json.dump(summary, f, indent=1)
+        rows.append((name, hertz, summary))
+        print(table(rows[-1:]).splitlines()[-1], flush=True)
+    notes = []
+    for name, _, s in rows:
+        for code in CODES:
+            if s[code].get("status") != "ok":
+                notes.append(f"- {name}, {code}: {s[code].get('status')}: {s[code].get('error', '').strip()[:300]}")
+    has_plot = plot(rows, args.plot)
+    text = ("# Hertz benchmarks: mortarcontact against Kratos 10.4\n\n"
+            "Generated by `benchmarks/hertz/compare.py`: same case files, alternating runs, medians of "
+            f"{args.repeat} runs of the analysis time (read, set-up, 4 load steps; imports excluded). Hertz errors: "
+            "peak nodal pressure / fitted half-width against Hertz theory for the computed force "
+            "(see results_kratos.md for the definitions).\n\n"
+            f"Machine: {harness.machine_line(args.threads)}.\n\n" + table(rows) + "\n"
+            + ("\n" + "\n".join(notes) + "\n" if notes else "")
+            + (f"\n![time against DoFs]({os.path.basename(args.plot)})\n" if has_plot else ""))
+    with open(args.output, "w") as f:
+        f.write(text)
+    print(f"wrote {args.output}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,445 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
+"""Issue 4 (benchmarks against Kratos): scalable Hertz contact cases in the Kratos input format.
+
+Two families, meshed with gmsh, written as mdpa + ProjectParameters.json + materials.json that
+both Kratos 10.4 and mortarcontact read unchanged:
+
+- ``hertz2d``: plane-strain cylinder of radius R (its lower half, full model) pressed onto an
+  elastic block [-W, W] x [-H, 0]; linear triangles (SmallDisplacementElement2D3N) refined
+  around the contact point. A half model is not used: with the slave and master interfaces both
+  ending on the symmetry line inside the contact zone, Kratos' multipliers of the first slave
+  nodes oscillate and grow with refinement (2.7 p0 at 30k DoFs) while the reaction stays right.
+- ``hertz3d``: sphere of radius R (the lower half, quarter model x, y >= 0) pressed onto an
+  elastic block [0, W]^2 x [-H, 0]; linear tetrahedra (SmallDisplacementElement3D4N).
+
+Both bodies are linear elastic (same E, nu), small displacements. In 3D the symmetry planes carry
+rollers (u_x = 0 on x = 0, u_y = 0 on y = 0); in 2D u_x = 0 on the cylinder top. The block bottom
+is clamped and the flat top of the curved body is pushed down by delta * t in 4 load steps
+(t = 0.25 ... 1). Frictionless ALM
+(``ALMContactFrictionless`` / ``alm_contact_process``), the curved body is the slave.
+The interface sub-model-parts hold nodes only (the contact process builds the faces): the part of
+the arc / cap with |x| (or r) <= 4 a and the part of the block top with |x| (or r) <= 5 a, a being
+the target contact half-width / radius.
+
+Hertz theory (two identical bodies: 1/E* = 2 (1 - nu^2) / E), for the total force P of the full
+model (per unit thickness in 2D):
+    2D line contact:  a = sqrt(4 P R / (pi E*)),        p0 = 2 P / (pi a)
+    3D point contact: a = (3 P R / (4 E*))^(1/3),       p0 = 3 P / (2 pi a^2),  delta = a^2 / R
+In 2D the approach delta depends on the bodies' size (no closed form), and in 3D the Hertz delta
+is the approach of points far from the contact, not of the finite bodies' boundaries: the
+applied displacement is therefore an estimate that gives a/R close to the target, and the
+checks compare the computed peak pressure and half-width with Hertz for the computed force
+(the block-bottom reaction, times 4 for the 3D symmetry). ``hertz.json`` next to each case
+holds the geometry, the material, the target values and the relations.
+
+    python benchmarks/hertz/generate_cases.py                    # all sizes -> benchmarks/hertz/cases
+    python benchmarks/hertz/generate_cases.py --cases hertz2d_2k,hertz3d_15k --out /tmp/cases
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import os
+import sys
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+DEFAULT_OUT = os.path.join(HERE, "cases")
+
+RADIUS = 1.0
+YOUNG = 1000.0
+POISSON = 0.3
+TARGET_A_OVER_R = 0.1
+LOAD_STEPS = 4
+
+# Mesh size h(d) = scale * min(H_MAX, H_CONTACT + GRADING * max(0, d - D_FINE)) at distance d
+# from the initial contact point; ``scale`` per size label (DoFs approximately as labelled).
+GEOMETRY = {
+    2: {"block_width": 2.0, "block_height": 2.0, "h_contact": 0.01, "grading": 0.3, "d_fine": 0.16,
+        "h_max": 0.25},
+    3: {"block_width": 1.5, "block_height": 1.5, "h_contact": 0.0135, "grading": 0.3, "d_fine": 0.15,
+        "h_max": 0.3},
+}
+SIZES = {
+    "hertz2d": {"2k": 1.38, "8k": 0.69, "30k": 0.356, "100k": 0.195, "250k": 0.123},
+    "hertz3d": {"15k": 0.836, "50k": 0.524, "150k": 0.343, "600k": 0.2},
+}
+
+
+# -- Hertz theory -----------------------------------------------------------------------------
+def effective_modulus(young: float = YOUNG, poisson: float = POISSON) -> float:
+    """E* of two bodies of the same material: 1/E* = 2 (1 - nu^2) / E."""
+    return young / (2.0 * (1.0 - poisson ** 2))
+
+
+def hertz_2d(force: float, radius: float, e_star: float) -> dict:
+    """Line contact of a cylinder on a flat, force per unit thickness."""
+    a = math.sqrt(4.0 * force * radius / (math.pi * e_star))
+    return {"force": force, "half_width": a, "peak_pressure": 2.0 * force / (math.pi * a)}
+
+
+def hertz_3d(force: float, radius: float, e_star: float) -> dict:
+    """Point contact of a sphere on a flat."""
+    a = (3.0 * force * radius / (4.0 * e_star)) ** (1.0 / 3.0)
+    return {"force": force, "half_width": a, "peak_pressure": 3.0 * force / (2.0 * math.pi * a * a),
+            "approach": a * a / radius}
+
+
+def force_for_half_width(dim: int, a: float, radius: float, e_star: float) -> float:
+    return math.pi * a * a * e_star / (4.0 * radius) if dim == 2 else 4.0 * e_star * a ** 3 / (3.0 * radius)
+
+
+def applied_displacement(dim: int, radius: float, block_height: float) -> float:
+    """Estimate of the top displacement that gives the target a. 2D: the approach of a cylinder's
+    centre line to its contact plus that of a layer of depth H, each (1 - nu^2) P / (pi E)
+    (2 ln(4 R / a) - 1) and (2 ln(2 H / a) - 1); 3D: Hertz a^2 / R less the Boussinesq
+    displacement (3 - 2 nu) P / (4 pi G d) still left at the depth R and H of the boundaries.
+    Only a/R near the target matters: the checks use the computed force."""
+    e_star = effective_modulus()
+    a = TARGET_A_OVER_R * radius
+    force = force_for_half_width(dim, a, radius, e_star)
+    if dim == 2:
+        c = (1.0 - POISSON ** 2) * force / (math.pi * YOUNG)
+        return c * ((2.0 * math.log(4.0 * radius / a) - 1.0) + (2.0 * math.log(2.0 * block_height / a) - 1.0))
+    shear = YOUNG / (2.0 * (1.0 + POISSON))
+    left = (3.0 - 2.0 * POISSON) * force / (4.0 * math.pi * shear) * (1.0 / radius + 1.0 / block_height)
+    return a * a / radius - left
+
+
+# -- meshing ----------------------------------------------------------------------------------
+def _size_callback(dim: int, scale: float):
+    g = GEOMETRY[dim]
+
+    def size(_entity_dim, _tag, x, y, z, _lc):
+        d = math.sqrt(x * x + y * y + z * z) if dim == 3 else math.sqrt(x * x + y * y)
+        return scale * min(g["h_max"], g["h_contact"] + g["grading"] * max(0.0, d - g["d_fine"]))
+
+    return size
+
+
+def _mesh_body(gmsh, dim: int, scale: float, build) -> tuple[np.ndarray, np.ndarray]:
+    """Meshes one body in a fresh gmsh model; returns (coords (n, 3), connectivity (m, dim+1))
+    with 0-based local node indices, elements positively oriented."""
+    gmsh.model.add("body")
+    build()
+    gmsh.option.setNumber("Mesh.MeshSizeFromPoints", 0)
+    gmsh.option.setNumber("Mesh.MeshSizeFromCurvature", 0)
+    gmsh.option.setNumber("Mesh.MeshSizeExtendFromBoundary", 0)
+    gmsh.option.setNumber("Mesh.Algorithm", 6)
+    gmsh.option.setNumber("Mesh.Algorithm3D", 1)
+    gmsh.option.setNumber("Mesh.Optimize", 1)
+    gmsh.model.mesh.setSizeCallback(_size_callback(dim, scale))
+    gmsh.model.mesh.generate(dim)
+    tags, coords, _ = gmsh.model.mesh.getNodes()
+    coords = np.asarray(coords).reshape(-1, 3)
+    element_type = 2 if dim == 2 else 4
+    _, node_tags = gmsh.model.mesh.getElementsByType(element_type)
+    gmsh.model.remove()
+    cells = np.asarray(node_tags, dtype=np.int64).reshape(-1, dim + 1)
+    used = np.unique(cells)
+    index = np.full(int(tags.max()) + 1, -1, dtype=np.int64)
+    index[np.asarray(tags, dtype=np.int64)] = np.arange(len(tags))
+    local = np.full(int(tags.max()) + 1, -1, dtype=np.int64)
+    local[used] = np.arange(len(used))
+    xyz = coords[index[used]]
+    cells = local[cells]
+    if dim == 2:
+        p = xyz[cells]
+        e1, e2 = p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]
+        signed = e1[:, 0] * e2[:, 1] - e1[:, 1] * e2[:, 0]
+        flip = signed < 0.0
+        cells[flip] = cells[flip][:, [0, 2, 1]]
+    else:
+        p = xyz[cells]
+        signed = np.einsum("ij,ij->i", np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), p[:, 3] - p[:, 0])
+        flip = signed < 0.0
+        cells[flip] = cells[flip][:, [0, 2, 1, 3]]
+    return xyz, cells
+
+
+def mesh_2d(scale: float):
+    import gmsh
+
+    g = GEOMETRY[2]
+    r, w, h = RADIUS, g["block_width"], g["block_height"]
+
+    def cylinder():
+        geo = gmsh.model.geo
+        left, bottom, right = geo.addPoint(-r, r, 0), geo.addPoint(0, 0, 0), geo.addPoint(r, r, 0)
+        centre = geo.addPoint(0, r, 0)
+        arcs = [geo.addCircleArc(left, centre, bottom), geo.addCircleArc(bottom, centre, right)]
+        loop = geo.addCurveLoop(arcs + [geo.addLine(right, left)])
+        geo.addPlaneSurface([loop])
+        geo.synchronize()
+
+    def block():
+        gmsh.model.occ.addRectangle(-w, -h, 0, 2.0 * w, h)
+        gmsh.model.occ.synchronize()
+
+    return _mesh_bodies(gmsh, 2, scale, cylinder, block)
+
+
+def mesh_3d(scale: float):
+    import gmsh
+
+    g = GEOMETRY[3]
+    r, w, h = RADIUS, g["block_width"], g["block_height"]
+
+    def sphere():
+        occ = gmsh.model.occ
+        occ.intersect([(3, occ.addSphere(0, 0, r, r))], [(3, occ.addBox(0, 0, 0, r, r, r))])
+        occ.synchronize()
+
+    def block():
+        gmsh.model.occ.addBox(0, 0, -h, w, w, h)
+        gmsh.model.occ.synchronize()
+
+    return _mesh_bodies(gmsh, 3, scale, sphere, block)
+
+
+def _mesh_bodies(gmsh, dim: int, scale: float, *builders):
+    gmsh.initialize(["-noenv"], readConfigFiles=False)
+    try:
+        gmsh.option.setNumber("General.Terminal", 0)
+        gmsh.option.setNumber("General.NumThreads", 1)
+        return [_mesh_body(gmsh, dim, scale, build) for build in builders]
+    finally:
+        gmsh.finalize()
+
+
+def _boundary_faces(cells: np.ndarray) -> set:
+    """Faces (sorted node tuples) that belong to exactly one element."""
+    k = cells.shape[1]
+    faces = np.concatenate([np.delete(cells, i, axis=1) for i in range(k)])
+    faces = np.sort(faces, axis=1)
+    unique, counts = np.unique(faces, axis=0, return_counts=True)
+    return {tuple(f) for f in unique[counts == 1]}
+
+
+def interface_faces(cells: np.ndarray, interface: np.ndarray) -> int:
+    """Number of element faces whose nodes all lie in ``interface`` (what a contact process builds
+    from a node-only interface part); raises if one of them is not on the boundary, which would
+    make the generated interface wrong."""
+    flags = np.zeros(int(cells.max()) + 1, dtype=bool)
+    flags[interface] = True
+    k = cells.shape[1]
+    faces = np.concatenate([np.delete(cells, i, axis=1) for i in range(k)])
+    faces = np.unique(np.sort(faces[flags[faces].all(axis=1)], axis=1), axis=0)
+    boundary = _boundary_faces(cells)
+    inner = [tuple(f) for f in faces if tuple(f) not in boundary]
+    if inner:
+        raise RuntimeError(f"{len(inner)} interior faces have all their nodes on the interface, e.g. {inner[0]}")
+    return len(faces)
+
+
+# -- writing ----------------------------------------------------------------------------------
+def build_case(family: str, label: str) -> dict:
+    """Meshes a case and returns everything needed to write it (no files)."""
+    dim = 2 if family == "hertz2d" else 3
+    scale = SIZES[family][label]
+    g = GEOMETRY[dim]
+    (xc, cc), (xb, cb) = (mesh_2d if dim == 2 else mesh_3d)(scale)
+    tol = 1e-9 * RADIUS
+    a = TARGET_A_OVER_R * RADIUS
+    top_axis = dim - 1  # y in 2D, z in 3D
+    centre = np.zeros(3)
+    centre[top_axis] = RADIUS
+
+    def radial(x):  # distance from the loading axis
+        return np.abs(x[:, 0]) if dim == 2 else np.hypot(x[:, 0], x[:, 1])
+
+    on_curve = np.abs(np.linalg.norm(xc - centre, axis=1) - RADIUS) < 1e-7 * RADIUS
+    slave = np.flatnonzero(on_curve & (xc[:, top_axis] < RADIUS - tol) & (radial(xc) <= 4.0 * a))
+    master = np.flatnonzero((np.abs(xb[:, top_axis]) < tol) & (radial(xb) <= 5.0 * a))
+    nc = len(xc)
+    coords = np.vstack([xc, xb])
+    parts = {
+        "Parts_cylinder" if dim == 2 else "Parts_sphere": {"nodes": np.arange(nc), "elements": "curved"},
+        "Parts_block": {"nodes": nc + np.arange(len(xb)), "elements": "block"},
+        "DISPLACEMENT_top": {"nodes": np.flatnonzero(np.abs(xc[:, top_axis] - RADIUS) < tol)},
+        "DISPLACEMENT_bottom": {"nodes": nc + np.flatnonzero(np.abs(xb[:, top_axis] + g["block_height"]) < tol)},
+    }
+    if dim == 3:
+        parts["DISPLACEMENT_sym_x"] = {"nodes": np.flatnonzero(np.abs(coords[:, 0]) < tol)}
+        parts["DISPLACEMENT_sym_y"] = {"nodes": np.flatnonzero(np.abs(coords[:, 1]) < tol)}
+    parts["Contact_slave"] = {"nodes": slave}
+    parts["Contact_master"] = {"nodes": nc + master}
+    slave_faces = interface_faces(cc, slave)
+    master_faces = interface_faces(cb, master)
+    for name in parts:
+        if len(parts[name]["nodes"]) == 0:
+            raise RuntimeError(f"{family}_{label}: sub-model-part {name} is empty")
+    return {"family": family, "label": label, "dim": dim, "scale": scale, "coords": coords,
+            "curved_cells": cc, "block_cells": cb + nc, "parts": parts,
+            "slave_faces": slave_faces, "master_faces": master_faces}
+
+
+def write_mdpa(path: str, case: dict) -> None:
+    dim = case["dim"]
+    element = "SmallDisplacementElement2D3N" if dim == 2 else "SmallDisplacementElement3D4N"
+    n_curved = len(case["curved_cells"])
+    ranges = {"curved": np.arange(1, n_curved + 1),
+              "block": n_curved + np.arange(1, len(case["block_cells"]) + 1)}
+    with open(path, "w") as f:
+        f.write(f"// {case['family']}_{case['label']}: generated by benchmarks/hertz/generate_cases.py\n")
+        f.write("Begin ModelPartData\nEnd ModelPartData\n\nBegin Properties 0\nEnd Properties\n\n")
+        f.write("Begin Nodes\n")
+        ids = np.arange(1, len(case["coords"]) + 1)
+        np.savetxt(f, np.column_stack([ids, case["coords"]]), fmt=["%d", "%.16e", "%.16e", "%.16e"])
+        f.write("End Nodes\n\n")
+        for key, cells in (("curved", case["curved_cells"]), ("block", case["block_cells"])):
+            f.write(f"Begin Elements {element}\n")
+            table = np.column_stack([ranges[key], np.zeros(len(cells), dtype=np.int64), cells + 1])
+            np.savetxt(f, table, fmt="%d")
+            f.write("End Elements\n\n")
+        for name, content in case["parts"].items():
+            f.write(f"Begin SubModelPart {name}\n  Begin SubModelPartNodes\n")
+            np.savetxt(f, np.asarray(content["nodes"]) + 1, fmt="    %d")
+            f.write("  End SubModelPartNodes\n  Begin SubModelPartElements\n")
+            if "elements" in content:
+                np.savetxt(f, ranges[content["elements"]], fmt="    %d")
+            f.write("  End SubModelPartElements\n  Begin SubModelPartConditions\n  End SubModelPartConditions\n")
+            f.write("End SubModelPart\n\n")
+
+
+def _assign(part: str, constrained: list, value: list) -> dict:
+    return {"python_module": "assign_vector_variable_process", "kratos_module": "KratosMultiphysics",
+            "process_name": "AssignVectorVariableProcess",
+            "Parameters": {"model_part_name": f"Structure.{part}", "variable_name": "DISPLACEMENT",
+                           "interval": [0.0, "End"], "constrained": constrained, "value": value}}
+
+
+def project_parameters(name: str, dim: int, delta: float, linear_solver: str) -> dict:
+    axis = dim - 1
+    top_value: list = [0.0, 0.0, 0.0]
+    top_value[axis] = f"-{delta!r}*t"
+    top_fix = [dim == 2, False, False]  # 2D: u_x = 0 on the top removes the cylinder's rigid sliding
+    top_fix[axis] = True
+    constraints = []
+    if dim == 3:
+        constraints += [_assign("DISPLACEMENT_sym_x", [True, False, False], [0.0, 0.0, 0.0]),
+                        _assign("DISPLACEMENT_sym_y", [False, True, False], [0.0, 0.0, 0.0])]
+    constraints += [_assign("DISPLACEMENT_bottom", [True, True, True], [0.0, 0.0, 0.0]),
+                    _assign("DISPLACEMENT_top", top_fix, top_value)]
+    body = "Contact_slave"
+    return {
+        "problem_data": {"problem_name": name, "parallel_type": "OpenMP", "echo_level": 0,
+                         "start_time": 0.0, "end_time": 1.0},
+        "solver_settings": {
+            "model_part_name": "Structure", "domain_size": dim, "solver_type": "Static", "echo_level": 0,
+            "analysis_type": "non_linear",
+            "model_import_settings": {"input_type": "mdpa", "input_filename": name},
+            "material_import_settings": {"materials_filename": f"{name}_materials.json"},
+            "contact_settings": {"mortar_type": "ALMContactFrictionless"},
+            "time_stepping": {"time_step": 1.0 / LOAD_STEPS},
+            "block_builder": True, "line_search": False, "compute_reactions": True,
+            "convergence_criterion": "contact_residual_criterion",
+            "displacement_relative_tolerance": 1e-4, "displacement_absolute_tolerance": 1e-9,
+            "residual_relative_tolerance": 1e-4, "residual_absolute_tolerance": 1e-9,
+            "max_iteration": 30,
+            "linear_solver_settings": {"solver_type": linear_solver},
+        },
+        "processes": {
+            "constraints_process_list": constraints,
+            "loads_process_list": [],
+            "contact_process_list": [{
+                "python_module": "alm_contact_process",
+                "kratos_module": "KratosMultiphysics.ContactStructuralMechanicsApplication",
+                "process_name": "ALMContactProcess",
+                "Parameters": {"model_part_name": "Structure", "contact_type": "Frictionless",
+                               "contact_model_part": {"0": [body, "Contact_master"]},
+                               "assume_master_slave": {"0": [body]}},
+            }],
+        },
+        "output_processes": {},
+    }
+
+
+def materials(dim: int) -> dict:
+    law = "LinearElasticPlaneStrain2DLaw" if dim == 2 else "LinearElastic3DLaw"
+    variables = {"YOUNG_MODULUS": YOUNG, "POISSON_RATIO": POISSON, "DENSITY": 1.0}
+    if dim == 2:
+        variables["THICKNESS"] = 1.0
+    curved = "Parts_cylinder" if dim == 2 else "Parts_sphere"
+    return {"properties": [
+        {"model_part_name": f"Structure.{part}", "properties_id": pid,
+         "Material": {"name": part, "constitutive_law": {"name": law}, "Variables": dict(variables), "Tables": {}}}
+        for pid, part in ((1, curved), (2, "Parts_block"))]}
+
+
+def hertz_reference(case: dict, delta: float) -> dict:
+    dim = case["dim"]
+    g = GEOMETRY[dim]
+    e_star = effective_modulus()
+    a = TARGET_A_OVER_R * RADIUS
+    force = force_for_half_width(dim, a, RADIUS, e_star)
+    target = hertz_2d(force, RADIUS, e_star) if dim == 2 else hertz_3d(force, RADIUS, e_star)
+    n_nodes = len(case["coords"])
+    n_slave = len(case["parts"]["Contact_slave"]["nodes"])
+    return {
+        "case": f"{case['family']}_{case['label']}", "dimension": dim,
+        "model": "full model, plane strain" if dim == 2 else "quarter model (x >= 0, y >= 0)",
+        "symmetry_factor": 1 if dim == 2 else 4,
+        "radius": RADIUS, "block_width": g["block_width"], "block_height": g["block_height"],
+        "young_modulus": YOUNG, "poisson_ratio": POISSON, "effective_modulus": e_star,
+        "applied_displacement": delta, "load_steps": LOAD_STEPS, "mesh_scale": case["scale"],
+        "h_contact": case["scale"] * g["h_contact"],
+        "target": dict(target, a_over_r=target["half_width"] / RADIUS),
+        "relations": ("a = sqrt(4 P R / (pi E*)), p0 = 2 P / (pi a), P per unit thickness" if dim == 2 else
+                      "a = (3 P R / (4 E*))^(1/3), p0 = 3 P / (2 pi a^2), delta = a^2 / R"),
+        "force_from": "sum of REACTION over Structure.DISPLACEMENT_bottom (vertical component) x symmetry_factor",
+        "counts": {"nodes": n_nodes, "elements": len(case["curved_cells"]) + len(case["block_cells"]),
+                   "curved_elements": len(case["curved_cells"]), "block_elements": len(case["block_cells"]),
+                   "slave_nodes": n_slave, "master_nodes": len(case["parts"]["Contact_master"]["nodes"]),
+                   "slave_faces": case["slave_faces"], "master_faces": case["master_faces"],
+                   "dofs": dim * n_nodes + n_slave},
+    }
+
+
+def write_case(family: str, label: str, out_dir: str = DEFAULT_OUT,
+               linear_solver: str = "LinearSolversApplication.sparse_lu") -> str:
+    """Generates one case into ``out_dir/<family>_<label>/`` and returns that folder."""
+    name = f"{family}_{label}"
+    folder = os.path.join(out_dir, name)
+    os.makedirs(folder, exist_ok=True)
+    case = build_case(family, label)
+    dim = case["dim"]
+    delta = applied_displacement(dim, RADIUS, GEOMETRY[dim]["block_height"])
+    write_mdpa(os.path.join(folder, f"{name}.mdpa"), case)
+    for file, content in ((f"{name}_materials.json", materials(dim)),
+                          ("ProjectParameters.json", project_parameters(name, dim, delta, linear_solver)),
+                          ("hertz.json", hertz_reference(case, delta))):
+        with open(os.path.join(folder, file), "w") as f:
+            json.dump(content, f, indent=2)
+            f.write("\n")
+    return folder
+
+
+def all_case_names() -> list[str]:
+    return [f"{family}_{label}" for family, labels in SIZES.items() for label in labels]
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--cases", default="all", help="comma-separated names (e.g. hertz2d_2k,hertz3d_15k) or 'all'")
+    parser.add_argument("--out", default=DEFAULT_OUT, help="output folder (default benchmarks/hertz/cases)")
+    parser.add_argument("--linear-solver", default="LinearSolversApplication.sparse_lu")
+    args = parser.parse_args(argv)
+    names = all_case_names() if args.cases == "all" else args.cases.split(",")
+    for name in names:
+        family, _, label = name.partition("_")
+        if family not in SIZES or label not in SIZES[family]:
+            parser.error(f"unknown case {name!r}; known: {', '.join(all_case_names())}")
+        folder = write_case(family, label, args.out, args.linear_solver)
+        with open(os.path.join(folder, "hertz.json")) as f:
+            counts = json.load(f)["counts"]
+        print(f"{name}: {counts['nodes']} nodes, {counts['elements']} elements, {counts['dofs']} DoFs, "
+              f"{counts['slave_nodes']} slave / {counts['master_nodes']} master nodes -> {folder}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

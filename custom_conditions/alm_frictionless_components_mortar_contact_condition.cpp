@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "custom_conditions/alm_frictionless_components_mortar_contact_condition.h"
+
+#include "custom_conditions/generated/frictionless_mortar_kernels.h"
+#include "custom_utilities/contact_variables.h"
+
+namespace mc {
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+std::unique_ptr<Condition> ALMFrictionlessComponentsMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::Create(IndexType id, Geometry::NodesArray nodes,
+                                                                  Properties* properties) const {
+  return std::make_unique<ALMFrictionlessComponentsMortarContactCondition>(id, Geometry(this->GetGeometry().Type(), std::move(nodes)), properties,
+                                                 this->GetPairedGeometry());
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+std::unique_ptr<PairedCondition> ALMFrictionlessComponentsMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::CreatePaired(IndexType id, Condition& slave, Condition& master,
+                                                                               Properties* properties) const {
+  auto pair = std::make_unique<ALMFrictionlessComponentsMortarContactCondition>(id, slave.GetGeometry(), properties, master.GetGeometry());
+  pair->SetPair(&slave, &master);
+  return pair;
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+const Variable<double>& ALMFrictionlessComponentsMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::MultiplierVariable(int c) const {
+  static const Variable<double>* const components[3] = {&VECTOR_LAGRANGE_MULTIPLIER_X, &VECTOR_LAGRANGE_MULTIPLIER_Y,
+                                                         &VECTOR_LAGRANGE_MULTIPLIER_Z};
+  return *components[c];
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+void ALMFrictionlessComponentsMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::GatherMultipliers(Data& data) const {
+  const Geometry& slave = this->GetGeometry();
+  for (int j = 0; j < TNumNodes; ++j)
+    data.vector_multiplier.row(j) =
+        slave[j].FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER).template head<TDim>().transpose();
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+void ALMFrictionlessComponentsMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::AddRHS(const Data& data, Vector& rhs) const {
+  generated::ALMFrictionlessComponentsRHS(data, rhs);
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+void ALMFrictionlessComponentsMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::AddLHS(const Data& data, Matrix& lhs) const {
+  generated::ALMFrictionlessComponentsLHS(data, lhs);
+}
+
+template class ALMFrictionlessComponentsMortarContactCondition<2, 2, 2>;
+template class ALMFrictionlessComponentsMortarContactCondition<3, 3, 3>;
+template class ALMFrictionlessComponentsMortarContactCondition<3, 4, 4>;
+template class ALMFrictionlessComponentsMortarContactCondition<3, 3, 4>;
+template class ALMFrictionlessComponentsMortarContactCondition<3, 4, 3>;
+
+}  // namespace mc

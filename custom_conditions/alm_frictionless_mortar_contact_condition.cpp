@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "custom_conditions/alm_frictionless_mortar_contact_condition.h"
+
+#include "custom_conditions/generated/frictionless_mortar_kernels.h"
+#include "custom_utilities/contact_variables.h"
+
+namespace mc {
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+std::unique_ptr<Condition> ALMFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::Create(IndexType id, Geometry::NodesArray nodes,
+                                                                  Properties* properties) const {
+  return std::make_unique<ALMFrictionlessMortarContactCondition>(id, Geometry(this->GetGeometry().Type(), std::move(nodes)), properties,
+                                                 this->GetPairedGeometry());
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+std::unique_ptr<PairedCondition> ALMFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::CreatePaired(IndexType id, Condition& slave, Condition& master,
+                                                                               Properties* properties) const {
+  auto pair = std::make_unique<ALMFrictionlessMortarContactCondition>(id, slave.GetGeometry(), properties, master.GetGeometry());
+  pair->SetPair(&slave, &master);
+  return pair;
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+const Variable<double>& ALMFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::MultiplierVariable(int) const {
+  return LAGRANGE_MULTIPLIER_CONTACT_PRESSURE;
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+void ALMFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::GatherMultipliers(Data& data) const {
+  const Geometry& slave = this->GetGeometry();
+  for (int j = 0; j < TNumNodes; ++j)
+    data.normal_pressure(j) = slave[j].FastGetSolutionStepValue(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE);
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+void ALMFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::AddRHS(const Data& data, Vector& rhs) const {
+  generated::ALMFrictionlessRHS(data, rhs);
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+void ALMFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::AddLHS(const Data& data, Matrix& lhs) const {
+  generated::ALMFrictionlessLHS(data, lhs);
+}
+
+template class ALMFrictionlessMortarContactCondition<2, 2, 2>;
+template class ALMFrictionlessMortarContactCondition<3, 3, 3>;
+template class ALMFrictionlessMortarContactCondition<3, 4, 4>;
+template class ALMFrictionlessMortarContactCondition<3, 3, 4>;
+template class ALMFrictionlessMortarContactCondition<3, 4, 3>;
+
+}  // namespace mc

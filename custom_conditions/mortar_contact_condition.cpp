@@ -1,0 +1,190 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "custom_conditions/mortar_contact_condition.h"
+
+#include <atomic>
+
+#include "core/utilities/error.h"
+#include "core/variables/kernel_variables.h"
+#include "custom_utilities/contact_variables.h"
+#include "custom_utilities/normal_calculation_utilities.h"
+
+namespace mc {
+
+namespace {
+
+const Variable<double>* const kDisplacement[3] = {&DISPLACEMENT_X, &DISPLACEMENT_Y, &DISPLACEMENT_Z};
+
+// The kinematics object holds the derivative arrays (a few kB): one per thread, reused by
+// every pair of that thread.
+template <class TKinematics>
+TKinematics& ThreadKinematics() {
+  thread_local TKinematics kinematics;
+  return kinematics;
+}
+
+void AtomicAdd(double& target, double value) { std::atomic_ref<double>(target).fetch_add(value); }
+
+}  // namespace
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+std::string MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::GeometryToken() {
+  return TNumNodes == TNumNodesMaster ? Concat(TDim, "D", TNumNodes, "N")
+                                      : Concat(TDim, "D", TNumNodes, "N", TNumNodesMaster, "N");
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+std::string MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::Info() const {
+  return Stem() + GeometryToken();
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+const Variable<double>& MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::MultiplierVariable(int) const {
+  throw Error(Concat(Info(), " has no multiplier DoFs"));
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+void MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::GetDofList(DofsVectorType& dofs,
+                                                                          const ProcessInfo&) const {
+  const Geometry& slave = GetGeometry();
+  const Geometry& master = GetPairedGeometry();
+  const int multipliers = MultiplierComponents();
+  dofs.resize(LocalSize());
+  std::size_t i = 0;
+  for (int l = 0; l < TNumNodesMaster; ++l)
+    for (int c = 0; c < TDim; ++c) dofs[i++] = &master[l].GetDof(*kDisplacement[c]);
+  for (int s = 0; s < TNumNodes; ++s)
+    for (int c = 0; c < TDim; ++c) dofs[i++] = &slave[s].GetDof(*kDisplacement[c]);
+  for (int s = 0; s < TNumNodes; ++s)
+    for (int c = 0; c < multipliers; ++c) dofs[i++] = &slave[s].GetDof(MultiplierVariable(c));
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+void MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::CalculateLocalSystem(Matrix& lhs, Vector& rhs,
+                                                                                    const ProcessInfo& info) {
+  CalculateAll(&lhs, &rhs, info);
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+void MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::CalculateLeftHandSide(Matrix& lhs,
+                                                                                     const ProcessInfo& info) {
+  CalculateAll(&lhs, nullptr, info);
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+void MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::CalculateRightHandSide(Vector& rhs,
+                                                                                      const ProcessInfo& info) {
+  CalculateAll(nullptr, &rhs, info);
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+MortarIntegrationSettings MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::IntegrationSettings(
+    const ProcessInfo& info) const {
+  MortarIntegrationSettings settings;
+  if (HasProperties()) {
+    const Properties& properties = GetProperties();
+    if (properties.Has(INTEGRATION_ORDER_CONTACT)) settings.integration_order = properties.GetValue(INTEGRATION_ORDER_CONTACT);
+    if (properties.Has(CONSIDER_TESSELLATION)) settings.consider_tessellation = properties.GetValue(CONSIDER_TESSELLATION);
+  }
+  if (info.Has(ZERO_TOLERANCE_FACTOR)) settings.zero_tolerance_factor = info.GetValue(ZERO_TOLERANCE_FACTOR);
+  return settings;
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+void MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::GatherKinematicsInput(
+    typename Kinematics::SlaveMatrix& x1, typename Kinematics::MasterMatrix& x2,
+    typename Kinematics::SlaveMatrix& n1) const {
+  const Geometry& slave = GetGeometry();
+  const Geometry& master = GetPairedGeometry();
+  for (int i = 0; i < TNumNodes; ++i) {
+    x1.row(i) = slave[i].Coordinates().template head<TDim>().transpose();
+    n1.row(i) = NormalCalculationUtilities::GetNodalNormal(slave[i]).template head<TDim>().transpose();
+  }
+  for (int l = 0; l < TNumNodesMaster; ++l) x2.row(l) = master[l].Coordinates().template head<TDim>().transpose();
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+void MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::FillData(Data& data, const ProcessInfo& info) const {
+  data.scale_factor = info.Has(SCALE_FACTOR) ? info.GetValue(SCALE_FACTOR) : 1.0;
+  if (!(data.scale_factor > 0.0))
+    throw InputError(Concat("condition ", Id(), " (", Info(), "): SCALE_FACTOR = ", data.scale_factor,
+                            " must be positive"));
+  const Geometry& slave = GetGeometry();
+  for (int j = 0; j < TNumNodes; ++j) {
+    const Node& node = slave[j];
+    const double eps = node.Has(INITIAL_PENALTY) ? node.GetValue(INITIAL_PENALTY) : info.GetValue(INITIAL_PENALTY);
+    if (!(eps > 0.0))
+      throw InputError(Concat("condition ", Id(), " (", Info(), "), slave node ", node.Id(), ": INITIAL_PENALTY = ",
+                              eps, " must be positive (set it in the ProcessInfo or on the node)"));
+    data.penalty(j) = eps;
+    data.dynamic_factor(j) = node.Has(DYNAMIC_FACTOR) ? node.GetValue(DYNAMIC_FACTOR) : 1.0;
+    data.active[j] = node.Is(ACTIVE);
+  }
+  GatherMultipliers(data);
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+void MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::CalculateAll(Matrix* lhs, Vector* rhs,
+                                                                            const ProcessInfo& info) {
+  const int size = LocalSize();
+  if (lhs) lhs->setZero(size, size);
+  if (rhs) rhs->setZero(size);
+
+  Kinematics& kinematics = ThreadKinematics<Kinematics>();
+  typename Kinematics::SlaveMatrix x1, n1;
+  typename Kinematics::MasterMatrix x2;
+  GatherKinematicsInput(x1, x2, n1);
+  const MortarIntegrationSettings settings = IntegrationSettings(info);
+  const bool overlap = lhs ? kinematics.Compute(x1, x2, n1, settings) : kinematics.ComputeValues(x1, x2, n1, settings);
+  if (!overlap) return;  // the pair does not touch: no contribution
+
+  Data data;
+  data.kinematics = &kinematics;
+  FillData(data, info);
+  if (rhs) AddRHS(data, *rhs);
+  if (lhs) AddLHS(data, *lhs);
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+void MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::AddExplicitContribution(const ProcessInfo& info) {
+  Kinematics& kinematics = ThreadKinematics<Kinematics>();
+  typename Kinematics::SlaveMatrix x1, n1;
+  typename Kinematics::MasterMatrix x2;
+  GatherKinematicsInput(x1, x2, n1);
+  if (!kinematics.ComputeValues(x1, x2, n1, IntegrationSettings(info))) return;
+  Geometry& slave = GetGeometry();
+  for (int j = 0; j < TNumNodes; ++j) {
+    Node& node = slave[j];
+    AtomicAdd(node.GetSolutionStepValue(WEIGHTED_GAP), kinematics.weighted_gap(j));
+    AtomicAdd(node.GetValueRef(NODAL_AREA), kinematics.nodal_area(j));
+  }
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+void MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::Check(const ProcessInfo& info) const {
+  auto fail = [&](const Node& node, const std::string& what) {
+    throw InputError(Concat("condition ", Id(), " (", Info(), "): node ", node.Id(), " ", what));
+  };
+  auto check_displacement = [&](const Node& node) {
+    if (!node.HasSolutionStepValue(DISPLACEMENT)) fail(node, "has no solution-step variable DISPLACEMENT");
+    for (int c = 0; c < TDim; ++c)
+      if (!node.HasDofFor(*kDisplacement[c])) fail(node, Concat("has no DoF ", kDisplacement[c]->Name()));
+  };
+  for (int l = 0; l < TNumNodesMaster; ++l) check_displacement(GetPairedGeometry()[l]);
+  for (int j = 0; j < TNumNodes; ++j) {
+    const Node& node = GetGeometry()[j];
+    check_displacement(node);
+    if (!node.HasSolutionStepValue(WEIGHTED_GAP)) fail(node, "has no solution-step variable WEIGHTED_GAP");
+    for (int c = 0; c < MultiplierComponents(); ++c)
+      if (!node.HasDofFor(MultiplierVariable(c))) fail(node, Concat("has no DoF ", MultiplierVariable(c).Name()));
+    const double eps = node.Has(INITIAL_PENALTY) ? node.GetValue(INITIAL_PENALTY) : info.GetValue(INITIAL_PENALTY);
+    if (!(eps > 0.0)) fail(node, Concat("has INITIAL_PENALTY = ", eps, " (must be positive)"));
+  }
+}
+
+template class MortarContactCondition<2, 2, 2>;
+template class MortarContactCondition<3, 3, 3>;
+template class MortarContactCondition<3, 4, 4>;
+template class MortarContactCondition<3, 3, 4>;
+template class MortarContactCondition<3, 4, 3>;
+
+}  // namespace mc

@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Sign conventions of every mortar contact condition (thesis ch. 4, Kratos CSMA):
+//  - weighted gap g_j = -n_j . (D x1 - M x2)_j (WEIGHTED_GAP): positive when open, negative
+//    when penetrating; n_j is the slave nodal NORMAL, pointing out of the slave body;
+//  - contact pressure lambda_n (LAGRANGE_MULTIPLIER_CONTACT_PRESSURE, or NORMAL .
+//    VECTOR_LAGRANGE_MULTIPLIER): negative in compression; the augmented pressure
+//    k lambda_n + eps g_j < 0 means the node is ACTIVE (in contact);
+//  - RHS = residual with the external-force sign, LHS = -d RHS / d DoFs.
+#pragma once
+
+#include <string>
+
+#include "custom_conditions/frictionless_mortar_data.h"
+#include "custom_conditions/paired_condition.h"
+#include "custom_utilities/mortar_pair_kinematics.h"
+
+namespace mc {
+
+/// What the mortar contact pair conditions share: a slave interface condition (own geometry)
+/// paired with a master one, the mortar kinematics of the pair (MortarPairKinematics, one
+/// thread-local instance, no heap allocation per pair), the DoF layout
+/// [master u, slave u, slave multipliers], the contact parameters and the explicit update of
+/// the nodal weighted gap.
+///
+/// Parameters: eps_j = nodal INITIAL_PENALTY if the node has one, else
+/// ProcessInfo[INITIAL_PENALTY]; k = ProcessInfo[SCALE_FACTOR] (1 when absent); the nodal
+/// DYNAMIC_FACTOR (1 when absent); INTEGRATION_ORDER_CONTACT (default 2) and
+/// CONSIDER_TESSELLATION from the properties, ZERO_TOLERANCE_FACTOR from the ProcessInfo.
+/// The current coordinates are the nodes' Coordinates() (X0 + DISPLACEMENT).
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+class MortarContactCondition : public PairedCondition {
+ public:
+  using Kinematics = MortarPairKinematics<TDim, TNumNodes, TNumNodesMaster>;
+  using Data = FrictionlessMortarData<TDim, TNumNodes, TNumNodesMaster>;
+  static constexpr int kNumDisplacementDofs = Kinematics::kNumDisplacementDofs;
+
+  using PairedCondition::PairedCondition;
+
+  /// Stem + geometry token, e.g. "ALMFrictionlessMortarContactCondition3D3N4N".
+  std::string Info() const override;
+  /// "2D2N", "3D3N", "3D4N", "3D3N4N", "3D4N3N".
+  static std::string GeometryToken();
+
+  void GetDofList(DofsVectorType& dofs, const ProcessInfo& info) const override;
+  void CalculateLocalSystem(Matrix& lhs, Vector& rhs, const ProcessInfo& info) override;
+  void CalculateLeftHandSide(Matrix& lhs, const ProcessInfo& info) override;
+  void CalculateRightHandSide(Vector& rhs, const ProcessInfo& info) override;
+  /// Nodes carry DISPLACEMENT, the multiplier variables and DoFs, WEIGHTED_GAP; eps and k positive.
+  void Check(const ProcessInfo& info) const override;
+
+  /// Adds this pair's weighted gap to the historical WEIGHTED_GAP of its slave nodes and its
+  /// nodal areas to NODAL_AREA (non-historical). Atomic accumulation, so pairs may be processed
+  /// in parallel; the caller zeroes both variables on the slave nodes beforehand.
+  void AddExplicitContribution(const ProcessInfo& info) override;
+
+  int LocalSize() const noexcept { return kNumDisplacementDofs + TNumNodes * MultiplierComponents(); }
+
+ protected:
+  virtual const char* Stem() const = 0;
+  /// Multiplier DoFs per slave node: 0 (penalty), 1 (scalar pressure) or TDim (vector).
+  virtual int MultiplierComponents() const = 0;
+  /// Multiplier DoF variable of component c.
+  virtual const Variable<double>& MultiplierVariable(int c) const;
+  /// Reads the formulation's nodal multipliers into data.
+  virtual void GatherMultipliers(Data& data) const {}
+  /// The generated kernels; rhs / lhs are sized and zeroed.
+  virtual void AddRHS(const Data& data, Vector& rhs) const = 0;
+  virtual void AddLHS(const Data& data, Matrix& lhs) const = 0;
+
+  /// Integration settings of the pair (properties and ProcessInfo).
+  MortarIntegrationSettings IntegrationSettings(const ProcessInfo& info) const;
+  /// Current slave / master coordinates and slave nodal normals.
+  void GatherKinematicsInput(typename Kinematics::SlaveMatrix& x1, typename Kinematics::MasterMatrix& x2,
+                             typename Kinematics::SlaveMatrix& n1) const;
+
+ private:
+  void CalculateAll(Matrix* lhs, Vector* rhs, const ProcessInfo& info);
+  void FillData(Data& data, const ProcessInfo& info) const;
+};
+
+extern template class MortarContactCondition<2, 2, 2>;
+extern template class MortarContactCondition<3, 3, 3>;
+extern template class MortarContactCondition<3, 4, 4>;
+extern template class MortarContactCondition<3, 3, 4>;
+extern template class MortarContactCondition<3, 4, 3>;
+
+}  // namespace mc

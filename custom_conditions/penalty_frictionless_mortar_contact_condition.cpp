@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "custom_conditions/penalty_frictionless_mortar_contact_condition.h"
+
+#include "custom_conditions/generated/frictionless_mortar_kernels.h"
+#include "custom_utilities/contact_variables.h"
+
+namespace mc {
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+std::unique_ptr<Condition> PenaltyFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::Create(IndexType id, Geometry::NodesArray nodes,
+                                                                  Properties* properties) const {
+  return std::make_unique<PenaltyFrictionlessMortarContactCondition>(id, Geometry(this->GetGeometry().Type(), std::move(nodes)), properties,
+                                                 this->GetPairedGeometry());
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+std::unique_ptr<PairedCondition> PenaltyFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::CreatePaired(IndexType id, Condition& slave, Condition& master,
+                                                                               Properties* properties) const {
+  auto pair = std::make_unique<PenaltyFrictionlessMortarContactCondition>(id, slave.GetGeometry(), properties, master.GetGeometry());
+  pair->SetPair(&slave, &master);
+  return pair;
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+void PenaltyFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::AddRHS(const Data& data, Vector& rhs) const {
+  generated::PenaltyFrictionlessRHS(data, rhs);
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+void PenaltyFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::AddLHS(const Data& data, Matrix& lhs) const {
+  generated::PenaltyFrictionlessLHS(data, lhs);
+}
+
+template class PenaltyFrictionlessMortarContactCondition<2, 2, 2>;
+template class PenaltyFrictionlessMortarContactCondition<3, 3, 3>;
+template class PenaltyFrictionlessMortarContactCondition<3, 4, 4>;
+template class PenaltyFrictionlessMortarContactCondition<3, 3, 4>;
+template class PenaltyFrictionlessMortarContactCondition<3, 4, 3>;
+
+}  // namespace mc

@@ -1,0 +1,224 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Bindings of custom_strategies: the contact convergence criteria, the mortar updater hook and
+// the contact strategies. Python names are the Kratos class names.
+#include "core/model/model_part.h"
+#include "core/solving/builder_and_solver.h"
+#include "core/solving/scheme.h"
+#include "custom_python/python_module.h"
+#include "custom_strategies/custom_convergencecriterias/contact_mortar_updater.h"
+#include "custom_strategies/custom_convergencecriterias/alm_frictionless_components_mortar_criteria.h"
+#include "custom_strategies/custom_convergencecriterias/alm_frictionless_mortar_criteria.h"
+#include "custom_strategies/custom_convergencecriterias/displacement_contact_criteria.h"
+#include "custom_strategies/custom_convergencecriterias/displacement_lagrangemultiplier_contact_criteria.h"
+#include "custom_strategies/custom_convergencecriterias/displacement_lagrangemultiplier_mixed_contact_criteria.h"
+#include "custom_strategies/custom_convergencecriterias/displacement_lagrangemultiplier_residual_contact_criteria.h"
+#include "custom_strategies/custom_convergencecriterias/displacement_residual_contact_criteria.h"
+#include "custom_strategies/custom_convergencecriterias/mesh_tying_mortar_criteria.h"
+#include "custom_strategies/custom_convergencecriterias/mortar_and_criteria.h"
+#include "custom_strategies/custom_convergencecriterias/penalty_frictionless_mortar_criteria.h"
+#include "custom_strategies/custom_strategies/line_search_contact_strategy.h"
+#include "custom_strategies/custom_strategies/residualbased_newton_raphson_contact_strategy.h"
+
+namespace mc::python {
+
+namespace {
+
+/// Strategies run with the GIL released; Python callbacks take it back.
+template <class F>
+auto WithoutGil(F&& f) {
+  py::gil_scoped_release release;
+  return f();
+}
+
+/// A std::function that calls a Python callable (or nothing for None) holding the GIL.
+std::function<void(ModelPart&)> ModelPartCallback(py::object callable) {
+  if (callable.is_none()) return {};
+  auto shared = std::make_shared<py::object>(std::move(callable));
+  return [shared](ModelPart& part) {
+    py::gil_scoped_acquire gil;
+    (*shared)(py::cast(&part, py::return_value_policy::reference));
+  };
+}
+
+std::function<void()> VoidCallback(py::object callable) {
+  if (callable.is_none()) return {};
+  auto shared = std::make_shared<py::object>(std::move(callable));
+  return [shared] {
+    py::gil_scoped_acquire gil;
+    (*shared)();
+  };
+}
+
+/// Python subclasses of MortarUpdater override ComputeWeightedGap / UpdateNormals / ...
+class PyMortarUpdater : public MortarUpdater {
+ public:
+  void ComputeWeightedGap(ModelPart& model_part) override {
+    py::gil_scoped_acquire gil;
+    PYBIND11_OVERRIDE_PURE(void, MortarUpdater, ComputeWeightedGap, model_part);
+  }
+  void UpdateNormals(ModelPart& model_part) override {
+    py::gil_scoped_acquire gil;
+    PYBIND11_OVERRIDE(void, MortarUpdater, UpdateNormals, model_part);
+  }
+  void UpdateDynamicFactor(ModelPart& model_part) override {
+    py::gil_scoped_acquire gil;
+    PYBIND11_OVERRIDE(void, MortarUpdater, UpdateDynamicFactor, model_part);
+  }
+  void AdaptPenalty(ModelPart& model_part) override {
+    py::gil_scoped_acquire gil;
+    PYBIND11_OVERRIDE(void, MortarUpdater, AdaptPenalty, model_part);
+  }
+};
+
+template <class Criteria>
+void BindBlockCriteria(py::module_& m, const char* name, const char* doc) {
+  py::class_<Criteria, BlockContactCriteria, std::shared_ptr<Criteria>>(m, name, doc)
+      .def(py::init<Parameters>(), py::arg("settings") = Parameters())
+      .def_static("GetDefaultParameters", [] { return Parameters(Criteria::DefaultParametersJson()); });
+}
+
+template <class Criteria>
+void BindMortarCriteria(py::module_& m, const char* name, const char* doc) {
+  py::class_<Criteria, BaseMortarConvergenceCriteria, std::shared_ptr<Criteria>>(m, name, doc)
+      .def(py::init<Parameters>(), py::arg("settings") = Parameters());
+}
+
+}  // namespace
+
+void AddContactStrategiesToPython(py::module_& m) {
+  py::class_<MortarUpdater, PyMortarUpdater, std::shared_ptr<MortarUpdater>>(
+      m, "MortarUpdater",
+      "Hook through which the mortar criteria and contact strategies refresh WEIGHTED_GAP "
+      "(ComputeWeightedGap, after the caller zeroed it on the Contact nodes), NORMAL (UpdateNormals), "
+      "DYNAMIC_FACTOR (UpdateDynamicFactor) and the adapted INITIAL_PENALTY (AdaptPenalty).")
+      .def(py::init<>())
+      .def("ComputeWeightedGap", &MortarUpdater::ComputeWeightedGap, py::arg("model_part"))
+      .def("UpdateNormals", &MortarUpdater::UpdateNormals, py::arg("model_part"))
+      .def("UpdateDynamicFactor", &MortarUpdater::UpdateDynamicFactor, py::arg("model_part"))
+      .def("AdaptPenalty", &MortarUpdater::AdaptPenalty, py::arg("model_part"));
+  py::class_<CallbackMortarUpdater, MortarUpdater, std::shared_ptr<CallbackMortarUpdater>>(
+      m, "CallbackMortarUpdater", "A MortarUpdater from two callables taking the model part (either may be None).")
+      .def(py::init([](py::object compute_weighted_gap, py::object update_normals) {
+             return std::make_shared<CallbackMortarUpdater>(ModelPartCallback(std::move(compute_weighted_gap)),
+                                                            ModelPartCallback(std::move(update_normals)));
+           }),
+           py::arg("compute_weighted_gap"), py::arg("update_normals") = py::none());
+
+  py::class_<ContactMortarUpdater, MortarUpdater, std::shared_ptr<ContactMortarUpdater>>(
+      m, "ContactMortarUpdater",
+      "Normals of the Contact interface and weighted gap of the ComputingContact pair conditions.")
+      .def(py::init<>());
+
+  py::class_<BlockContactCriteria, ConvergenceCriteria, std::shared_ptr<BlockContactCriteria>>(
+      m, "BlockContactCriteria", "Contact criteria measuring displacements, rotations and multipliers separately.")
+      .def("EnsureContact", &BlockContactCriteria::EnsureContact);
+  BindBlockCriteria<DisplacementContactCriteria>(m, "DisplacementContactCriteria",
+                                                 "displacement_contact_criteria: displacement (and rotation) increments");
+  BindBlockCriteria<DisplacementResidualContactCriteria>(
+      m, "DisplacementResidualContactCriteria", "displacement_residual_contact_criteria: displacement residuals");
+  BindBlockCriteria<DisplacementLagrangeMultiplierContactCriteria>(
+      m, "DisplacementLagrangeMultiplierContactCriteria",
+      "displacement_lagrangemultiplier_contact_criteria: displacement and multiplier increments");
+  BindBlockCriteria<DisplacementLagrangeMultiplierResidualContactCriteria>(
+      m, "DisplacementLagrangeMultiplierResidualContactCriteria",
+      "displacement_lagrangemultiplier_residual_contact_criteria: displacement and multiplier residuals");
+  BindBlockCriteria<DisplacementLagrangeMultiplierMixedContactCriteria>(
+      m, "DisplacementLagrangeMultiplierMixedContactCriteria",
+      "displacement_lagrange_multiplier_mixed_contact_criteria: displacement residual, multiplier increment");
+
+  py::class_<BaseMortarConvergenceCriteria, ConvergenceCriteria, std::shared_ptr<BaseMortarConvergenceCriteria>>(
+      m, "BaseMortarConvergenceCriteria", "base_mortar_criteria: mortar quantities refresh, no active set.")
+      .def(py::init<Parameters>(), py::arg("settings") = Parameters())
+      .def("SetMortarUpdater", &BaseMortarConvergenceCriteria::SetMortarUpdater, py::arg("updater"))
+      .def("LastChangedNodes", &BaseMortarConvergenceCriteria::LastChangedNodes);
+  BindMortarCriteria<ALMFrictionlessMortarConvergenceCriteria>(m, "ALMFrictionlessMortarConvergenceCriteria",
+                                                               "alm_frictionless_mortar_criteria");
+  BindMortarCriteria<ALMFrictionlessComponentsMortarConvergenceCriteria>(
+      m, "ALMFrictionlessComponentsMortarConvergenceCriteria", "alm_frictionless_components_mortar_criteria");
+  BindMortarCriteria<PenaltyFrictionlessMortarConvergenceCriteria>(m, "PenaltyFrictionlessMortarConvergenceCriteria",
+                                                                   "penalty_frictionless_mortar_criteria");
+  py::class_<MeshTyingMortarConvergenceCriteria, ConvergenceCriteria,
+             std::shared_ptr<MeshTyingMortarConvergenceCriteria>>(m, "MeshTyingMortarConvergenceCriteria",
+                                                                   "mesh_tying_mortar_criteria: always converged")
+      .def(py::init<>());
+
+  py::class_<MortarAndConvergenceCriteria, AndCriteria, std::shared_ptr<MortarAndConvergenceCriteria>>(
+      m, "MortarAndConvergenceCriteria",
+      "mortar_and_criteria: mechanical AND mortar criterion, with the convergence table.")
+      .def(py::init([](std::shared_ptr<ConvergenceCriteria> mechanical, std::shared_ptr<ConvergenceCriteria> mortar,
+                       bool print_convergence_criterion, bool condition_number, bool print_table) {
+             return std::make_shared<MortarAndConvergenceCriteria>(
+                 std::move(mechanical), std::move(mortar), print_convergence_criterion,
+                 condition_number ? std::optional<ConditionNumberUtility>(ConditionNumberUtility{}) : std::nullopt,
+                 print_table);
+           }),
+           py::arg("mechanical"), py::arg("mortar"), py::arg("print_convergence_criterion") = false,
+           py::arg("condition_number") = false, py::arg("print_table") = true)
+      .def("SetMortarUpdater", &MortarAndConvergenceCriteria::SetMortarUpdater, py::arg("updater"))
+      .def("Mechanical", &MortarAndConvergenceCriteria::Mechanical, py::return_value_policy::reference_internal)
+      .def("Mortar", &MortarAndConvergenceCriteria::Mortar, py::return_value_policy::reference_internal)
+      .def("TableHeader", &MortarAndConvergenceCriteria::TableHeader)
+      .def("LastTableRow", &MortarAndConvergenceCriteria::LastTableRow);
+
+  using ContactNewton = ResidualBasedNewtonRaphsonContactStrategy;
+  py::class_<ContactNewton, NewtonRaphsonStrategy, std::shared_ptr<ContactNewton>>(
+      m, "ResidualBasedNewtonRaphsonContactStrategy",
+      "newton_raphson_contact_strategy: semi-smooth Newton for mortar contact (full when the model part "
+      "Is(INTERACTION), simplified otherwise), contact predictor, adaptive step splitting.")
+      .def(py::init([](ModelPart& part, std::shared_ptr<Scheme> scheme, std::shared_ptr<ConvergenceCriteria> criteria,
+                       std::shared_ptr<BuilderAndSolver> builder, Parameters settings, int max_iteration,
+                       bool compute_reactions, bool reform_dofs_at_each_step, bool move_mesh, int echo_level) {
+             auto s = std::make_shared<ContactNewton>(part, std::move(scheme), std::move(criteria), std::move(builder),
+                                                      ContactNewton::ReadSettings(settings), max_iteration,
+                                                      compute_reactions, reform_dofs_at_each_step, move_mesh);
+             s->SetEchoLevel(echo_level);
+             return s;
+           }),
+           py::arg("model_part"), py::arg("scheme"), py::arg("criteria"), py::arg("builder_and_solver"),
+           py::arg("settings") = Parameters(), py::arg("max_iteration") = 10, py::arg("compute_reactions") = true,
+           py::arg("reform_dofs_at_each_step") = false, py::arg("move_mesh") = true, py::arg("echo_level") = 0,
+           py::keep_alive<1, 2>())
+      .def_static("GetDefaultParameters", [] { return Parameters(ContactNewton::DefaultParametersJson()); })
+      .def("SetMortarUpdater", &ContactNewton::SetMortarUpdater, py::arg("updater"))
+      .def(
+          "SetSubStepCallbacks",
+          [](ContactNewton& s, py::object initialize_solution_step, py::object finalize_solution_step) {
+            s.SetSubStepCallbacks(
+                {VoidCallback(std::move(initialize_solution_step)), VoidCallback(std::move(finalize_solution_step))});
+          },
+          py::arg("initialize_solution_step"), py::arg("finalize_solution_step") = py::none(),
+          "Callables run around the sub-steps of the adaptive splitting (processes, output).")
+      .def("SetMaxIterationNumber", &ContactNewton::SetMaxIterationNumber)
+      .def("GetMaxIterationNumber", &ContactNewton::GetMaxIterationNumber)
+      .def("ActiveSetFlipCounts", &ContactNewton::ActiveSetFlipCounts)
+      .def("FailureReport", &ContactNewton::FailureReport)
+      .def("InnerLoopIterations", &ContactNewton::InnerLoopIterations)
+      .def("SplitLevelUsed", &ContactNewton::SplitLevelUsed);
+
+  using LineSearchSplitStep = LineSearchContactStrategy::SplitStep;
+  py::class_<LineSearchSplitStep>(m, "LineSearchSplitStep")
+      .def_readonly("iteration", &LineSearchSplitStep::iteration)
+      .def_readonly("displacement", &LineSearchSplitStep::displacement)
+      .def_readonly("multiplier", &LineSearchSplitStep::multiplier);
+  py::class_<LineSearchContactStrategy, ContactNewton, std::shared_ptr<LineSearchContactStrategy>>(
+      m, "LineSearchContactStrategy",
+      "line_search_contact_strategy: contact Newton with separate line-search step lengths for the "
+      "displacement and the multiplier blocks.")
+      .def(py::init([](ModelPart& part, std::shared_ptr<Scheme> scheme, std::shared_ptr<ConvergenceCriteria> criteria,
+                       std::shared_ptr<BuilderAndSolver> builder, Parameters settings, int max_iteration,
+                       bool compute_reactions, bool reform_dofs_at_each_step, bool move_mesh, double min_step,
+                       int echo_level) {
+             auto s = std::make_shared<LineSearchContactStrategy>(
+                 part, std::move(scheme), std::move(criteria), std::move(builder), ContactNewton::ReadSettings(settings),
+                 max_iteration, compute_reactions, reform_dofs_at_each_step, move_mesh, min_step);
+             s->SetEchoLevel(echo_level);
+             return s;
+           }),
+           py::arg("model_part"), py::arg("scheme"), py::arg("criteria"), py::arg("builder_and_solver"),
+           py::arg("settings") = Parameters(), py::arg("max_iteration") = 10, py::arg("compute_reactions") = true,
+           py::arg("reform_dofs_at_each_step") = false, py::arg("move_mesh") = true, py::arg("min_step") = 0.1,
+           py::arg("echo_level") = 0, py::keep_alive<1, 2>())
+      .def("SplitSteps", &LineSearchContactStrategy::SplitSteps);
+}
+
+}  // namespace mc::python

@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "custom_strategies/custom_convergencecriterias/contact_mortar_updater.h"
+
+#include "core/model/model_part.h"
+#include "custom_conditions/contact_condition_utilities.h"
+#include "custom_utilities/normal_calculation_utilities.h"
+
+namespace mc {
+
+namespace {
+// The contact sub-model-parts hang from the root; the strategies may solve on a sub-part.
+ModelPart* FindContactPart(ModelPart& model_part, const char* name) {
+  ModelPart& root = model_part.GetRootModelPart();
+  return root.HasSubModelPart(name) ? &root.GetSubModelPart(name) : nullptr;
+}
+}  // namespace
+
+void ContactMortarUpdater::ComputeWeightedGap(ModelPart& model_part) {
+  if (ModelPart* pairs = FindContactPart(model_part, "ComputingContact"))
+    ContactConditionUtilities::ComputeExplicitContributions(*pairs, true);
+}
+
+void ContactMortarUpdater::UpdateNormals(ModelPart& model_part) {
+  if (ModelPart* interface = FindContactPart(model_part, "Contact"))
+    NormalCalculationUtilities::ComputeNodalNormals(*interface);
+}
+
+}  // namespace mc

@@ -1,0 +1,36 @@
+"""``penalty_contact_process``: penalty mortar contact (spec 4.5): the ALM process with its own
+defaults and the automatic penalty times 1e4 (floor 1e16)."""
+from __future__ import annotations
+
+from .. import _core
+from . import _settings
+from .alm_contact_process import ALMContactProcess
+
+
+def penalty_defaults() -> dict:
+    defaults = _settings.alm_defaults()
+    defaults["tangent_factor"] = 1.0e-3
+    defaults["advance_ALM_parameters"]["penalty"] = 1.0e16
+    defaults["advance_ALM_parameters"]["max_gap_factor"] = 5.0e-4
+    return defaults
+
+
+class PenaltyContactProcess(ALMContactProcess):
+    """No multiplier DoFs; the scale factor is unused."""
+
+    python_module = "penalty_contact_process"
+    method = "Penalty"
+    mortar_types = {"Frictionless": "PenaltyContactFrictionless", "Frictional": "PenaltyContactFrictional",
+                    "FrictionalPureSlip": "PenaltyContactFrictionalPureSlip"}
+    penalty_multiplier = 1.0e4
+    penalty_floor = 1.0e16
+
+    @classmethod
+    def GetDefaultParameters(cls) -> "_core.Parameters":
+        return _settings.to_parameters(penalty_defaults())
+
+    def _check_types(self) -> None:
+        if self.settings["contact_type"].GetString().startswith("FrictionlessComponents"):
+            raise _core.InputError(f"{self.python_module}: contact_type 'FrictionlessComponents' exists only for "
+                                   "alm_contact_process; use 'Frictionless'")
+        super()._check_types()

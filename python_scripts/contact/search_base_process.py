@@ -1,0 +1,142 @@
+"""What every mortar contact process does (spec 4.1-4.3): read the interface slots, build the
+interface and one contact search per slot, run the searches inside the interval."""
+from __future__ import annotations
+
+from .. import _core
+from ..process import Process
+from . import _settings
+
+
+class NotImplementedContactProcess(Process):
+    """Validates every key against the documented defaults, then says that the feature is not
+    implemented yet: a case using it fails early with its name, not with a wrong result."""
+
+    python_module = ""
+    feature = ""
+
+    @classmethod
+    def _normalised(cls, settings):
+        settings = settings if settings is not None else _core.Parameters()
+        _settings.normalise_pair_layouts(settings, cls._slot_keys())
+        return settings
+
+    @staticmethod
+    def _slot_keys():
+        return ("contact_model_part", "assume_master_slave", "contact_property_ids", "friction_coefficients")
+
+
+class SearchBaseProcess(Process):
+    """Base of the ALM and penalty processes: interface set-up and contact search."""
+
+    python_module = ""
+
+    @classmethod
+    def GetDefaultParameters(cls) -> "_core.Parameters":
+        return _settings.to_parameters(_settings.alm_defaults())
+
+    def __init__(self, model, settings=None):
+        settings = settings if settings is not None else _core.Parameters()
+        _settings.normalise_pair_layouts(
+            settings, ("contact_model_part", "assume_master_slave", "contact_property_ids", "friction_coefficients"))
+        self.model = model
+        self.settings = settings
+        self.settings.RecursivelyValidateAndAssignDefaults(self.GetDefaultParameters())
+        self.interval = _settings.interval_of(self.settings)
+        self.searches = []
+        self.root = None
+        self._steps_since_search = None
+        self._inside = None
+        self._check_types()
+
+    # Settings ----------------------------------------------------------------------------------
+    def _check_types(self) -> None:
+        """Hook: reject the contact types this class does not implement."""
+
+    def interface_slots(self) -> list[tuple[str, list[str], list[str], int, float]]:
+        """(slot, parts, slave parts, property id, friction coefficient) of the non-empty slots;
+        all empty -> one slot over the skin of the whole model (spec 4.1)."""
+        parts, slaves = self.settings["contact_model_part"], self.settings["assume_master_slave"]
+        ids, mus = self.settings["contact_property_ids"], self.settings["friction_coefficients"]
+        slots = []
+        for slot in _settings.SLOTS:
+            names = parts[slot].GetStringArray()
+            if names:
+                slots.append((slot, names, slaves[slot].GetStringArray(), ids[slot].GetInt(), mus[slot].GetDouble()))
+        if not slots:
+            slots.append(("0", [], slaves["0"].GetStringArray(), ids["0"].GetInt(), mus["0"].GetDouble()))
+        return slots
+
+    def condition_stem(self) -> str:
+        raise NotImplementedError
+
+    def search_settings(self, slot: str, slaves: list[str], property_id: int) -> "_core.Parameters":
+        """The keys forwarded to the C++ search (spec 4.3)."""
+        sp = self.settings["search_parameters"]
+        forwarded = _core.Parameters()
+        for key in ("simple_search", "type_search", "check_gap", "bucket_size", "search_factor", "dynamic_search",
+                    "static_check_movement", "consider_gap_threshold", "normal_orientation_threshold", "debug_mode",
+                    "active_check_factor"):
+            forwarded.AddValue(key, sp[key])
+        forwarded.AddValue("allocation_size", sp["max_number_results"])
+        forwarded.AddValue("bounding_box_factor", sp["octree_search_parameters"]["bounding_box_factor"])
+        forwarded.AddValue("condition_name", _core.Parameters(f'"{self.condition_stem()}"'))
+        forwarded.AddValue("id_name", _core.Parameters(f'"{slot}"'))
+        forwarded.AddValue("predefined_master_slave", _core.Parameters("true" if slaves else "false"))
+        forwarded.AddValue("contact_property_id", _core.Parameters(str(property_id)))
+        return forwarded
+
+    # Hooks ---------------------------------------------------------------------------------------
+    def ExecuteInitialize(self) -> None:
+        # Imported here: the processes package registers this one on import.
+        from ..processes.model_part_resolution import resolve_model_part
+
+        self.root = resolve_model_part(self.model, self.settings["model_part_name"].GetString())
+        self.check_solver_variables()
+        info = self.root.GetProcessInfo()
+        sp = self.settings["search_parameters"]
+        info.SetValue(_core.ACTIVE_CHECK_FACTOR, sp["active_check_factor"].GetDouble())
+        if not info.Has(_core.DISTANCE_THRESHOLD):
+            info.SetValue(_core.DISTANCE_THRESHOLD, 1.0e24)
+        info.SetValue(_core.ZERO_TOLERANCE_FACTOR, self.settings["zero_tolerance_factor"].GetDouble())
+        builder = _core.ContactInterfaceBuilder(self.root)
+        for slot, parts, slaves, property_id, mu in self.interface_slots():
+            interface = builder.Build(slot, parts, slaves, property_id, mu,
+                                      self.settings["normal_check_proportion"].GetDouble())
+            properties = _core.ContactInterfaceBuilder.InterfaceProperties(self.root, slot)
+            properties.SetValue(_core.INTEGRATION_ORDER_CONTACT, self.settings["integration_order"].GetInt())
+            properties.SetValue(_core.CONSIDER_TESSELLATION, self.settings["consider_tessellation"].GetBool())
+            properties.SetValue(_core.ACTIVE_CHECK_FACTOR, sp["active_check_factor"].GetDouble())
+            self.searches.append(_core.ContactSearchProcess(
+                self.root, interface, self.search_settings(slot, slaves, properties.Id)))
+
+    def check_solver_variables(self) -> None:
+        """Hook: the start-up check of the mortar_type pairing (spec 2.10)."""
+
+    def ExecuteInitializeSolutionStep(self) -> None:
+        info = self.root.GetProcessInfo()
+        time = info.GetValue(_core.TIME)
+        start, end = self.interval
+        inside = start - 1e-12 <= time <= end + 1e-12
+        if not inside:
+            if self._inside is not False:
+                for search in self.searches:
+                    search.ClearMortarConditions()
+                    search.SetInterfaceActive(False)
+            self._inside = False
+            self._steps_since_search = None
+            return
+        if self._inside is False:
+            for search in self.searches:
+                search.SetInterfaceActive(True)
+        self._inside = True
+        update = max(1, self.settings["search_parameters"]["database_step_update"].GetInt())
+        if self._steps_since_search is None or self._steps_since_search >= update:
+            for search in self.searches:
+                search.UpdateMortarConditions()
+            self._steps_since_search = 0
+        self._steps_since_search += 1
+
+    def ExecuteBeforeOutputStep(self) -> None:
+        if self.settings["clear_inactive_for_post"].GetBool() and self.root is not None:
+            _core.ClearInactiveForPost(self.root.GetSubModelPart("Contact"))
+

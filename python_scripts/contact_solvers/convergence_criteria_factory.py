@@ -1,0 +1,196 @@
+"""Convergence criteria of the contact solvers, composed from ``solver_settings`` as the Kratos
+contact factory does (spec 3.2):
+
+- a ``convergence_criterion`` containing ``contact`` builds a contact criterion (displacement /
+  residual / mixed / and / or, with separate displacement, rotation and multiplier blocks) and
+  wraps it with the mortar (active-set) criterion in a ``MortarAndConvergenceCriteria``, which
+  prints the convergence table (``fancy_convergence_criterion``) and, with
+  ``condn_convergence_criterion``, the condition number;
+- any other name builds the structural criterion (spec 3.1); when ``mortar_type`` contains
+  ``ALMContact`` or ``MeshTying`` it is ANDed with the mortar criterion (no table).
+
+Names are matched case-insensitively. The mortar criterion follows ``mortar_type`` by substring,
+as Kratos does, so suffixes such as ``WithNormalUpdate`` keep working.
+"""
+from __future__ import annotations
+
+import difflib
+import json
+
+CONTACT_CRITERIA = ("contact_displacement_criterion", "contact_residual_criterion", "contact_mixed_criterion",
+                    "contact_and_criterion", "contact_or_criterion")
+STRUCTURAL_CRITERIA = ("displacement_criterion", "residual_criterion", "and_criterion", "or_criterion")
+ALL_CRITERIA = CONTACT_CRITERIA + STRUCTURAL_CRITERIA + ("adaptative_remesh_criteria",)
+
+# Tolerance keys of each block (spec 3.2, "tolerance sources per block"): increment-type, residual-type.
+_DISPLACEMENT = (("displacement_relative_tolerance", "displacement_absolute_tolerance"),
+                 ("residual_relative_tolerance", "residual_absolute_tolerance"))
+_ROTATION = (("rotation_relative_tolerance", "rotation_absolute_tolerance"),
+             ("rotation_residual_relative_tolerance", "rotation_residual_absolute_tolerance"))
+_MULTIPLIER = (("contact_displacement_relative_tolerance", "contact_displacement_absolute_tolerance"),
+               ("contact_residual_relative_tolerance", "contact_residual_absolute_tolerance"))
+_INCREMENT, _RESIDUAL = 0, 1
+
+
+def _core_module(core):
+    if core is None:
+        from .. import _core as core  # noqa: PLC0415 (the extension is only needed when building)
+    return core
+
+
+def _nearest(name: str, choices) -> str:
+    close = difflib.get_close_matches(name, choices, n=1)
+    return f" (did you mean '{close[0]}'?)" if close else ""
+
+
+def _contact_settings(solver_settings):
+    return solver_settings["contact_settings"]
+
+
+def _value(settings, key, kind):
+    return getattr(settings[key], "Get" + kind)()
+
+
+def mortar_criterion_class(mortar_type: str, core=None):
+    """The mortar (active-set) criterion class of ``mortar_type`` (spec 3.3), or None for ""."""
+    core = _core_module(core)
+    if not mortar_type:
+        return None
+    if "ALMContactFrictionlessComponents" in mortar_type:
+        return core.ALMFrictionlessComponentsMortarConvergenceCriteria
+    if "ALMContactFrictionless" in mortar_type:
+        return core.ALMFrictionlessMortarConvergenceCriteria
+    if "PenaltyContactFrictionless" in mortar_type:
+        return core.PenaltyFrictionlessMortarConvergenceCriteria
+    if "MeshTying" in mortar_type:
+        return core.MeshTyingMortarConvergenceCriteria
+    if "ContactFrictional" in mortar_type:
+        raise core.NotImplementedFeatureError(
+            f"contact_settings.mortar_type: \"{mortar_type}\": frictional contact is not implemented yet; "
+            "use ALMContactFrictionless, ALMContactFrictionlessComponents or PenaltyContactFrictionless")
+    valid = ["ALMContactFrictionless", "ALMContactFrictionlessComponents", "ALMContactFrictional",
+             "ALMContactFrictionalPureSlip", "PenaltyContactFrictionless", "PenaltyContactFrictional",
+             "ScalarMeshTying", "ComponentsMeshTying"]
+    raise core.InputError(f"contact_settings.mortar_type: unknown value \"{mortar_type}\"{_nearest(mortar_type, valid)}")
+
+
+def _mortar_criterion(solver_settings, core):
+    contact = _contact_settings(solver_settings)
+    mortar_type = _value(contact, "mortar_type", "String")
+    cls = mortar_criterion_class(mortar_type, core)
+    if cls is None:
+        return None
+    if cls is core.MeshTyingMortarConvergenceCriteria:
+        return cls()
+    settings = {key: _value(contact, key, "Bool")
+                for key in ("print_convergence_criterion", "compute_dynamic_factor", "gidio_debug")}
+    return cls(core.Parameters(json.dumps(settings)))
+
+
+def _block_criterion(cls, solver_settings, blocks, core):
+    """``cls`` with the tolerances of ``blocks`` [(block keys, _INCREMENT or _RESIDUAL), ...]:
+    displacement keys from solver_settings, the others from contact_settings."""
+    contact = _contact_settings(solver_settings)
+    settings = {"ensure_contact": _value(contact, "ensure_contact", "Bool"),
+                "print_convergence_criterion": _value(contact, "print_convergence_criterion", "Bool")}
+    for keys, kind in blocks:
+        source = solver_settings if keys is _DISPLACEMENT else contact
+        for key in keys[kind]:
+            settings[key] = _value(source, key, "Double")
+    return cls(core.Parameters(json.dumps(settings)))
+
+
+def _contact_mechanical_criterion(name, solver_settings, core):
+    mortar_type = _value(_contact_settings(solver_settings), "mortar_type", "String")
+    if not mortar_type:
+        raise core.InputError(f"solver_settings.convergence_criterion: \"{name}\" needs "
+                              "contact_settings.mortar_type (e.g. \"ALMContactFrictionless\")")
+    if "Penalty" in mortar_type:
+        # Penalty formulations have no multipliers: displacement (and rotation) blocks only.
+        def displacement():
+            return _block_criterion(core.DisplacementContactCriteria, solver_settings,
+                                    [(_DISPLACEMENT, _INCREMENT), (_ROTATION, _INCREMENT)], core)
+
+        def residual(with_rotation=True):
+            blocks = [(_DISPLACEMENT, _RESIDUAL)] + ([(_ROTATION, _RESIDUAL)] if with_rotation else [])
+            return _block_criterion(core.DisplacementResidualContactCriteria, solver_settings, blocks, core)
+
+        mixed = lambda: residual(with_rotation=False)  # noqa: E731 (Kratos reuses the residual criterion)
+    else:
+        if "ALMContactFrictional" in mortar_type:
+            raise core.NotImplementedFeatureError(
+                f"solver_settings.convergence_criterion \"{name}\" with mortar_type \"{mortar_type}\": the "
+                "frictional contact criteria are not implemented yet")
+
+        def displacement():
+            return _block_criterion(core.DisplacementLagrangeMultiplierContactCriteria, solver_settings,
+                                    [(_DISPLACEMENT, _INCREMENT), (_ROTATION, _INCREMENT),
+                                     (_MULTIPLIER, _INCREMENT)], core)
+
+        def residual():
+            return _block_criterion(core.DisplacementLagrangeMultiplierResidualContactCriteria, solver_settings,
+                                    [(_DISPLACEMENT, _RESIDUAL), (_ROTATION, _RESIDUAL),
+                                     (_MULTIPLIER, _RESIDUAL)], core)
+
+        def mixed():
+            # The newest factory: multiplier increment with the contact_displacement_* tolerances.
+            return _block_criterion(core.DisplacementLagrangeMultiplierMixedContactCriteria, solver_settings,
+                                    [(_DISPLACEMENT, _RESIDUAL), (_ROTATION, _RESIDUAL),
+                                     (_MULTIPLIER, _INCREMENT)], core)
+
+    return {"contact_displacement_criterion": displacement,
+            "contact_residual_criterion": residual,
+            "contact_mixed_criterion": mixed,
+            "contact_and_criterion": lambda: core.AndCriteria(residual(), displacement()),
+            "contact_or_criterion": lambda: core.OrCriteria(residual(), displacement())}[name]()
+
+
+def _structural_criterion(name, solver_settings, core):
+    s = solver_settings
+    displacement = lambda: core.DisplacementCriteria(_value(s, "displacement_relative_tolerance", "Double"),  # noqa: E731
+                                                     _value(s, "displacement_absolute_tolerance", "Double"))
+    residual = lambda: core.ResidualCriteria(_value(s, "residual_relative_tolerance", "Double"),  # noqa: E731
+                                             _value(s, "residual_absolute_tolerance", "Double"))
+    return {"displacement_criterion": displacement,
+            "residual_criterion": residual,
+            "and_criterion": lambda: core.AndCriteria(residual(), displacement()),
+            "or_criterion": lambda: core.OrCriteria(residual(), displacement())}[name]()
+
+
+def create_contact_convergence_criteria(solver_settings, echo_level: int = 0, mortar_updater=None, core=None):
+    """The convergence criterion of a contact solver from its validated ``solver_settings``.
+
+    ``mortar_updater`` (a ``MortarUpdater``) is handed to the mortar criterion; it can also be
+    set later with ``criteria.SetMortarUpdater`` on the returned ``MortarAndConvergenceCriteria``.
+    """
+    core = _core_module(core)
+    raw = _value(solver_settings, "convergence_criterion", "String")
+    name = raw.lower()
+    where = "solver_settings.convergence_criterion"
+    if name not in ALL_CRITERIA:
+        raise core.InputError(f"{where}: unknown criterion \"{raw}\"{_nearest(name, ALL_CRITERIA)}")
+    if name == "adaptative_remesh_criteria":
+        raise core.NotImplementedFeatureError(f"{where}: \"{raw}\" belongs to the adaptive remeshing analysis, "
+                                              "which is not implemented")
+    contact = _contact_settings(solver_settings)
+    if name in CONTACT_CRITERIA:
+        mechanical = _contact_mechanical_criterion(name, solver_settings, core)
+        criteria = core.MortarAndConvergenceCriteria(
+            mechanical, _mortar_criterion(solver_settings, core),
+            print_convergence_criterion=_value(contact, "print_convergence_criterion", "Bool"),
+            condition_number=_value(contact, "condn_convergence_criterion", "Bool"),
+            print_table=_value(contact, "fancy_convergence_criterion", "Bool"))
+    else:
+        criteria = _structural_criterion(name, solver_settings, core)
+        mortar_type = _value(contact, "mortar_type", "String")
+        if "ALMContact" in mortar_type or "MeshTying" in mortar_type:
+            # The plain AND of Kratos, with the residual refreshed after the update: a
+            # mortar-and criterion without its table.
+            criteria = core.MortarAndConvergenceCriteria(criteria, _mortar_criterion(solver_settings, core),
+                                                         print_convergence_criterion=False, condition_number=False,
+                                                         print_table=False)
+    if mortar_updater is not None and hasattr(criteria, "SetMortarUpdater"):
+        criteria.SetMortarUpdater(mortar_updater)
+    if hasattr(criteria, "SetEchoLevel"):
+        criteria.SetEchoLevel(echo_level)
+    return criteria

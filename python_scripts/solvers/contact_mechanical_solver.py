@@ -1,0 +1,80 @@
+"""The contact solver (spec 2.9, 2.10): the structural solver plus the variables and DoFs of the
+``mortar_type``, the contact convergence criteria and the semi-smooth Newton contact strategy."""
+from __future__ import annotations
+
+from .. import _core
+from ..contact_solvers import create_contact_convergence_criteria, create_contact_strategy
+from .mechanical_solver import MechanicalSolver
+
+#: mortar_type -> (extra historical variables, (DoF, reaction) pairs)
+MORTAR_TYPES = {
+    "ALMContactFrictionless": (["LAGRANGE_MULTIPLIER_CONTACT_PRESSURE", "WEIGHTED_GAP", "WEIGHTED_SCALAR_RESIDUAL"],
+                               [("LAGRANGE_MULTIPLIER_CONTACT_PRESSURE", "WEIGHTED_SCALAR_RESIDUAL")]),
+    "PenaltyContactFrictionless": (["WEIGHTED_GAP"], []),
+}
+KNOWN_MORTAR_TYPES = ("ALMContactFrictionless", "ALMContactFrictionlessComponents", "ALMContactFrictional",
+                      "ALMContactFrictionalPureSlip", "PenaltyContactFrictionless", "PenaltyContactFrictional",
+                      "PenaltyContactFrictionalPureSlip", "ScalarMeshTying", "ComponentsMeshTying")
+
+
+class ContactMechanicalSolver(MechanicalSolver):
+    def __init__(self, model, settings, **kwargs):
+        contact = settings["contact_settings"]
+        mortar_type = contact["mortar_type"].GetString()
+        # Kratos dispatches on substrings, so suffixes such as "WithNormalUpdate" are tolerated.
+        base = next((t for t in sorted(KNOWN_MORTAR_TYPES, key=len, reverse=True) if mortar_type.startswith(t)), None)
+        if base is None:
+            from ..utilities import nearest
+
+            raise _core.InputError(f"{contact.Where()}.mortar_type: unknown \"{mortar_type}\""
+                                   f"{nearest(mortar_type, KNOWN_MORTAR_TYPES)}")
+        if base not in MORTAR_TYPES:
+            raise _core.NotImplementedFeatureError(
+                f"{contact.Where()}.mortar_type: \"{mortar_type}\" is not implemented yet (available: "
+                f"{', '.join(MORTAR_TYPES)})")
+        self.mortar_type = base
+        # The DoF set follows the contact pairs, which change from step to step.
+        settings["clear_storage"].SetBool(True)
+        settings["reform_dofs_at_each_step"].SetBool(True)
+        self.sub_step_callbacks = (None, None)
+        super().__init__(model, settings, **kwargs)
+
+    def _check_names(self) -> None:
+        """Contact criteria names are resolved by the contact factory (spec 3.2)."""
+        criterion = self.settings["convergence_criterion"].GetString().lower()
+        self.settings["convergence_criterion"].SetString(criterion)
+
+    def AddVariables(self) -> None:
+        super().AddVariables()
+        variables, _ = MORTAR_TYPES[self.mortar_type]
+        for name in ["NORMAL", "NODAL_H", *variables]:
+            self.main_model_part.AddNodalSolutionStepVariable(_core.GetVariable(name))
+
+    def AddDofs(self) -> None:
+        super().AddDofs()
+        _, dofs = MORTAR_TYPES[self.mortar_type]
+        for dof, reaction in dofs:
+            _core.VariableUtils.AddDof(self.main_model_part, _core.GetVariable(dof), _core.GetVariable(reaction))
+
+    def set_sub_step_callbacks(self, initialize, finalize) -> None:
+        """The processes' per-step hooks, re-run in the sub-steps of the adaptive splitting."""
+        self.sub_step_callbacks = (initialize, finalize)
+
+    def _create_strategy(self):
+        s = self.settings
+        part = self.GetComputingModelPart()
+        if self.explicit:
+            raise _core.NotImplementedFeatureError(
+                f"{s.Where()}: explicit contact solvers are not implemented yet")
+        updater = _core.ContactMortarUpdater()
+        criteria = create_contact_convergence_criteria(s, self.echo_level, updater)
+        linear_solver = _core.CreateLinearSolver(s["linear_solver_settings"])
+        initialize, finalize = self.sub_step_callbacks
+        strategy = create_contact_strategy(part, s, self._create_scheme(part), linear_solver, criteria,
+                                           self.echo_level, updater, initialize, finalize)
+        return strategy
+
+    def Initialize(self) -> None:
+        super().Initialize()
+        if self.settings["contact_settings"]["silent_strategy"].GetBool():
+            self.strategy.SetEchoLevel(0)

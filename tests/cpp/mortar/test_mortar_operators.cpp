@@ -1,0 +1,351 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Issue 3: dual Lagrange multipliers and mortar operators D, M, weighted gap and nodal area:
+// biorthogonality, sum(D) = sum(M) = area on non-matching flat interfaces, linear patch test
+// (D^-1 M reproduces linear master fields), rigid-motion invariance, weighted-gap sign, and
+// the mortar mapping cases MAP-P1/MAP-P2 of cases/mortar_integration_reference.md section 7.
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <vector>
+
+#include "core/geometries/geometry_type.h"
+#include "core/geometries/reference_element.h"
+#include "custom_utilities/dual_lagrange_multiplier.h"
+#include "mortar_test_helpers.h"
+
+namespace mc {
+namespace {
+
+using mortar_test::ConditionNormals;
+using mortar_test::Order;
+using mortar_test::Rows;
+
+// ---------------------------------------------------------------------------------------
+// Dual basis
+
+TEST(DualLagrangeMultiplier, LineAndTriangleHaveConstantAe) {
+  Eigen::Matrix<double, 2, 2> x_line;
+  x_line << 0.3, 0.1, 2.0, 0.7;
+  Eigen::Matrix2d line;
+  line << 2, -1, -1, 2;
+  EXPECT_LT((DualLagrangeMultiplier<2, 2>::ComputeAe<double>(x_line) - line).norm(), 1e-13);
+
+  Eigen::Matrix3d x_tri;
+  x_tri << -0.2, 0.1, 0.3, 1.0, 0.1, -0.2, 0.2, 1.2, 0.5;
+  Eigen::Matrix3d tri;
+  tri << 3, -1, -1, -1, 3, -1, -1, -1, 3;
+  EXPECT_LT((DualLagrangeMultiplier<3, 3>::ComputeAe<double>(x_tri) - tri).norm(), 1e-12);
+}
+
+// int Phi_i N_j = delta_ij int N_j, checked with an independent degree-5 rule.
+template <int N>
+void ExpectBiorthogonal(const Eigen::Matrix<double, N, 3>& x) {
+  using SF = MortarShapeFunctions<N>;
+  const auto ae = DualLagrangeMultiplier<3, N>::template ComputeAe<double>(x);
+  const auto& rule = ReferenceElement::Get(N == 3 ? GeometryType::Triangle2D3 : GeometryType::Quadrilateral2D4)
+                         .IntegrationPoints(5);
+  Eigen::Matrix<double, N, N> phi_n = Eigen::Matrix<double, N, N>::Zero();
+  Eigen::Matrix<double, N, 1> n_int = Eigen::Matrix<double, N, 1>::Zero();
+  for (const auto& gp : rule) {
+    const Eigen::Vector2d xi(gp.local(0), gp.local(1));
+    const auto n = SF::template N<double>(xi);
+    const auto dn = SF::template DN<double>(xi);
+    const Eigen::Vector3d a = x.transpose() * dn.col(0), b = x.transpose() * dn.col(1);
+    const double w = gp.weight * a.cross(b).norm();
+    phi_n += w * (ae * n) * n.transpose();
+    n_int += w * n;
+  }
+  const Eigen::Matrix<double, N, N> expected = n_int.asDiagonal();
+  EXPECT_LT((phi_n - expected).norm(), 1e-12 * n_int.sum()) << phi_n;
+}
+
+TEST(DualLagrangeMultiplier, BiorthogonalOnDistortedElements) {
+  Eigen::Matrix<double, 3, 3> tri;
+  tri << -0.2, 0.1, 0.0, 1.0, 0.1, 0.0, 0.2, 1.2, 0.0;
+  ExpectBiorthogonal<3>(tri);
+  Eigen::Matrix<double, 4, 3> quad;  // CONS-2 quadrilateral in the plane z = 0.1 x + 0.2 y
+  quad << 0, 0, 0, 1, -0.1, 0.08, 1.2, 1.1, 0.34, -0.1, 1.3, 0.25;
+  ExpectBiorthogonal<4>(quad);
+  // A_e depends on the geometry of distorted quadrilaterals.
+  Eigen::Matrix<double, 4, 3> square;
+  square << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0;
+  const auto a_square = DualLagrangeMultiplier<3, 4>::ComputeAe<double>(square);
+  const auto a_quad = DualLagrangeMultiplier<3, 4>::ComputeAe<double>(quad);
+  Eigen::Matrix4d expected_square;  // tensor product of the line's [[2,-1],[-1,2]]
+  expected_square << 4, -2, 1, -2, -2, 4, -2, 1, 1, -2, 4, -2, -2, 1, -2, 4;
+  EXPECT_LT((a_square - expected_square).norm(), 1e-12);
+  EXPECT_GT((a_quad - a_square).norm(), 1e-2);
+}
+
+// ---------------------------------------------------------------------------------------
+// Interface assembly helpers
+
+struct Mesh {
+  std::vector<Eigen::Vector3d> nodes;
+  std::vector<std::vector<int>> elements;
+};
+
+struct Assembled {
+  Eigen::MatrixXd D, M;
+  Eigen::VectorXd gap, area;
+};
+
+// Sums the pair contributions of every (slave, master) element pair; flat interfaces, nodal
+// normals = condition normal.
+template <int TDim, int N1, int N2>
+void AddPairs(const Mesh& slave, const Mesh& master, Assembled& a, DualBasisDomain dual,
+              const Eigen::Matrix3d& rotation = Eigen::Matrix3d::Identity()) {
+  using K = MortarPairKinematics<TDim, N1, N2>;
+  K k;
+  for (const auto& se : slave.elements) {
+    if (static_cast<int>(se.size()) != N1) continue;
+    for (const auto& me : master.elements) {
+      if (static_cast<int>(me.size()) != N2) continue;
+      typename K::SlaveMatrix x1;
+      typename K::MasterMatrix x2;
+      for (int i = 0; i < N1; ++i) x1.row(i) = (rotation * slave.nodes[se[i]]).head(TDim).transpose();
+      for (int l = 0; l < N2; ++l) x2.row(l) = (rotation * master.nodes[me[l]]).head(TDim).transpose();
+      if (!k.Compute(x1, x2, ConditionNormals<K>(x1), Order(2), dual)) continue;
+      for (int i = 0; i < N1; ++i) {
+        for (int j = 0; j < N1; ++j) a.D(se[i], se[j]) += k.D(i, j);
+        for (int l = 0; l < N2; ++l) a.M(se[i], me[l]) += k.M(i, l);
+        a.gap(se[i]) += k.weighted_gap(i);
+        a.area(se[i]) += k.nodal_area(i);
+      }
+    }
+  }
+}
+
+Assembled Init(const Mesh& slave, const Mesh& master) {
+  const int ns = static_cast<int>(slave.nodes.size()), nm = static_cast<int>(master.nodes.size());
+  return {Eigen::MatrixXd::Zero(ns, ns), Eigen::MatrixXd::Zero(ns, nm), Eigen::VectorXd::Zero(ns),
+          Eigen::VectorXd::Zero(ns)};
+}
+
+// Structured grid on [x0,x1]x[y0,y1] at height z, perturbed interior nodes, quads or triangles;
+// `reverse` lists nodes clockwise (normal -z).
+Mesh Grid(int nx, int ny, double x0, double x1, double y0, double y1, double z, bool triangles,
+          bool reverse, double perturb) {
+  Mesh m;
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i) {
+      double x = x0 + (x1 - x0) * i / nx, y = y0 + (y1 - y0) * j / ny;
+      if (i > 0 && i < nx && j > 0 && j < ny) {
+        x += perturb * std::sin(3.1 * i + 1.7 * j) * (x1 - x0) / nx;
+        y += perturb * std::cos(2.3 * i + 0.9 * j) * (y1 - y0) / ny;
+      }
+      m.nodes.emplace_back(x, y, z);
+    }
+  auto id = [&](int i, int j) { return j * (nx + 1) + i; };
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      std::vector<std::vector<int>> cells;
+      if (triangles && (i + j) % 2 == 0) {
+        cells = {{id(i, j), id(i + 1, j), id(i + 1, j + 1)}, {id(i, j), id(i + 1, j + 1), id(i, j + 1)}};
+      } else if (triangles) {
+        cells = {{id(i, j), id(i + 1, j), id(i, j + 1)}, {id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)}};
+      } else {
+        cells = {{id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)}};
+      }
+      for (auto& c : cells) {
+        if (reverse) std::reverse(c.begin(), c.end());
+        m.elements.push_back(c);
+      }
+    }
+  return m;
+}
+
+Mesh Line(const std::vector<double>& xs, double y, bool reverse) {
+  Mesh m;
+  for (double x : xs) m.nodes.emplace_back(x, y, 0.0);
+  for (size_t i = 0; i + 1 < xs.size(); ++i) {
+    std::vector<int> e = {static_cast<int>(i), static_cast<int>(i + 1)};
+    if (reverse) std::swap(e[0], e[1]);
+    m.elements.push_back(e);
+  }
+  return m;
+}
+
+// The slave mesh area (flat, z-plane) from its elements.
+double PlanarArea(const Mesh& m) {
+  double area = 0.0;
+  for (const auto& e : m.elements) {
+    double a = 0.0;
+    for (size_t k = 0; k < e.size(); ++k) {
+      const auto& p = m.nodes[e[k]];
+      const auto& q = m.nodes[e[(k + 1) % e.size()]];
+      a += p.x() * q.y() - q.x() * p.y();
+    }
+    area += 0.5 * std::abs(a);
+  }
+  return area;
+}
+
+// Checks sum(D) = sum(M) = area, D diagonal, the linear patch test, the weighted gap and
+// nodal area on a fully covered flat slave at distance `gap` along its normal.
+// On distorted (non-affine) slave quadrilaterals the dual basis integrand is not polynomial
+// in the physical coordinates of the clipped cells, so biorthogonality (diagonal D,
+// int Phi_j = int N_j) holds only up to the quadrature error: `biorthogonal_tol`.
+void CheckInterface(const Assembled& a, const Mesh& slave, const Mesh& master, double area,
+                    const Eigen::Vector3d& normal, double gap, double biorthogonal_tol = 1e-12) {
+  EXPECT_NEAR(a.D.sum(), area, 1e-12 * area);
+  EXPECT_NEAR(a.M.sum(), area, 1e-12 * area);
+  EXPECT_NEAR(a.area.sum(), area, 1e-12 * area);
+  const Eigen::MatrixXd off = a.D - Eigen::MatrixXd(a.D.diagonal().asDiagonal());
+  EXPECT_LT(off.cwiseAbs().maxCoeff(), biorthogonal_tol * area);
+  // Linear master field f = 0.3 + 1.1 x - 0.7 y + 0.4 z; the slave gets f(x_j + gap n).
+  auto f = [](const Eigen::Vector3d& p) { return 0.3 + 1.1 * p.x() - 0.7 * p.y() + 0.4 * p.z(); };
+  Eigen::VectorXd f2(master.nodes.size());
+  for (size_t l = 0; l < master.nodes.size(); ++l) f2(l) = f(master.nodes[l]);
+  const Eigen::VectorXd mapped = a.D.fullPivLu().solve(a.M * f2);
+  for (size_t j = 0; j < slave.nodes.size(); ++j) {
+    EXPECT_NEAR(mapped(j), f(slave.nodes[j] + gap * normal), 1e-11) << "slave node " << j;
+    EXPECT_NEAR(a.gap(j) / a.D.row(j).sum(), gap, 1e-12) << "slave node " << j;
+    EXPECT_NEAR(a.gap(j) / a.area(j), gap, gap * biorthogonal_tol) << "slave node " << j;
+  }
+}
+
+TEST(MortarOperator, NonMatchingLines2D) {
+  // Slave listed right to left: normal (t_y, -t_x) = +y, master 0.01 above: open gap.
+  const Mesh slave = Line({0.0, 0.3, 0.55, 1.0}, 0.0, true);
+  const Mesh master = Line({-0.1, 0.2, 0.45, 0.6, 0.93, 1.2}, 0.01, false);
+  for (auto dual : {DualBasisDomain::kSlaveElement, DualBasisDomain::kPairOverlap}) {
+    Assembled a = Init(slave, master);
+    AddPairs<2, 2, 2>(slave, master, a, dual);
+    CheckInterface(a, slave, master, 1.0, Eigen::Vector3d(0, 1, 0), 0.01);
+  }
+}
+
+TEST(MortarOperator, NonMatchingSurfaces3D) {
+  struct Case {
+    bool slave_triangles, master_triangles;
+  };
+  for (const Case c : {Case{false, false}, Case{true, true}, Case{false, true}, Case{true, false}}) {
+    // Slave normal +z (counter-clockwise), master 0.02 above, clockwise (its own normal -z).
+    const Mesh slave = Grid(3, 2, 0.0, 1.0, 0.0, 0.8, 0.0, c.slave_triangles, false, 0.2);
+    const Mesh master = Grid(4, 5, -0.1, 1.15, -0.05, 0.9, 0.02, c.master_triangles, true, 0.25);
+    for (auto dual : {DualBasisDomain::kSlaveElement, DualBasisDomain::kPairOverlap}) {
+      Assembled a = Init(slave, master);
+      AddPairs<3, 3, 3>(slave, master, a, dual);
+      AddPairs<3, 3, 4>(slave, master, a, dual);
+      AddPairs<3, 4, 3>(slave, master, a, dual);
+      AddPairs<3, 4, 4>(slave, master, a, dual);
+      SCOPED_TRACE(::testing::Message() << "slave tri " << c.slave_triangles << " master tri "
+                                        << c.master_triangles << " dual " << static_cast<int>(dual));
+      // kPairOverlap on a quadrilateral slave falls back to the element basis when an overlap
+      // has fewer than 4 integration points (a single sub-triangle): M_e is then singular and
+      // the element's D mixes two bases, so only sums, gaps and the patch test are checked.
+      const bool pair_fallback =
+          !c.slave_triangles && c.master_triangles && dual == DualBasisDomain::kPairOverlap;
+      const bool exact = c.slave_triangles || dual == DualBasisDomain::kPairOverlap;
+      CheckInterface(a, slave, master, PlanarArea(slave), Eigen::Vector3d(0, 0, 1), 0.02,
+                     pair_fallback ? 1.0 : (exact ? 1e-12 : 2e-3));
+    }
+  }
+}
+
+TEST(MortarOperator, PairOverlapBasisGivesDiagonalDPerPair) {
+  using K = MortarPairKinematics<3, 4, 3>;
+  const auto x1 = Rows<K::SlaveMatrix>({0, 0, 0, 1, 0.1, 0, 1.1, 0.9, 0, -0.1, 1, 0});
+  const auto x2 = Rows<K::MasterMatrix>({0.3, 0.2, 0.05, 1.4, 0.5, 0.05, 0.2, 1.3, 0.05});
+  K k;
+  ASSERT_TRUE(k.Compute(x1, x2, ConditionNormals<K>(x1), Order(2), DualBasisDomain::kPairOverlap));
+  const K::DMatrix off = k.D - K::DMatrix(k.D.diagonal().asDiagonal());
+  EXPECT_LT(off.cwiseAbs().maxCoeff(), 1e-14);
+  EXPECT_NEAR(k.D.sum(), k.area, 1e-14);
+  EXPECT_NEAR(k.M.sum(), k.area, 1e-14);
+  for (int j = 0; j < 4; ++j) EXPECT_NEAR(k.D(j, j), k.nodal_area(j), 1e-14);
+  // The element basis is not diagonal on this partial overlap, but has the same sums.
+  K e;
+  ASSERT_TRUE(e.Compute(x1, x2, ConditionNormals<K>(x1), Order(2), DualBasisDomain::kSlaveElement));
+  EXPECT_GT((e.D - K::DMatrix(e.D.diagonal().asDiagonal())).cwiseAbs().maxCoeff(), 1e-4);
+  EXPECT_NEAR(e.D.sum(), k.area, 1e-14);
+}
+
+TEST(MortarOperator, WeightedGapSignAndRigidMotionInvariance) {
+  using K = MortarPairKinematics<3, 4, 3>;
+  // Warped slave quad, tilted master triangle, partial overlap.
+  const auto x1 = Rows<K::SlaveMatrix>({0, 0, 0, 1, 0.1, 0.02, 1.1, 0.9, -0.01, -0.1, 1, 0.03});
+  const auto x2 = Rows<K::MasterMatrix>({0.3, 0.2, 0.05, 1.4, 0.5, 0.09, 0.2, 1.3, 0.02});
+  K::SlaveMatrix n1 = ConditionNormals<K>(x1);
+  // A non-flat interface: one nodal normal tilted away from the condition normal.
+  n1.row(0) = (n1.row(0) + Eigen::RowVector3d(0.05, -0.02, 0)).normalized();
+  K k;
+  ASSERT_TRUE(k.Compute(x1, x2, n1, Order(3)));
+  // Master above the slave (+z normal): open. Single nodes of a partially covered element may
+  // be negative (the dual functions change sign); their sum integrates the gap (sum Phi_j = 1).
+  EXPECT_GT(k.weighted_gap.sum(), 0.0);
+
+  const Eigen::Matrix3d R =
+      (Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, -0.5).normalized())).toRotationMatrix();
+  const Eigen::RowVector3d t(3.0, -1.5, 2.2);
+  K r;
+  ASSERT_TRUE(r.Compute((x1 * R.transpose()).rowwise() + t, (x2 * R.transpose()).rowwise() + t, n1 * R.transpose(),
+                        Order(3)));
+  EXPECT_LT((r.D - k.D).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_LT((r.M - k.M).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_LT((r.weighted_gap - k.weighted_gap).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_LT((r.nodal_area - k.nodal_area).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_NEAR(r.area, k.area, 1e-12);
+
+  // Penetration: master moved below the slave gives negative weighted gaps.
+  K p;
+  ASSERT_TRUE(p.Compute(x1, (x2.rowwise() - Eigen::RowVector3d(0, 0, 0.2)).eval(), n1, Order(3)));
+  EXPECT_LT(p.weighted_gap.sum(), 0.0);
+}
+
+TEST(MortarOperator, RigidMotionInvariance2D) {
+  using K = MortarPairKinematics<2, 2, 2>;
+  const auto x1 = Rows<K::SlaveMatrix>({1.0, 0.05, 0.0, -0.02});
+  const auto x2 = Rows<K::MasterMatrix>({0.4, 0.1, 1.6, 0.2});
+  K k, r;
+  ASSERT_TRUE(k.Compute(x1, x2, ConditionNormals<K>(x1), Order(2)));
+  const Eigen::Matrix2d R = Eigen::Rotation2Dd(2.1).toRotationMatrix();
+  const Eigen::RowVector2d t(-4.0, 7.5);
+  const K::SlaveMatrix y1 = (x1 * R.transpose()).rowwise() + t;
+  ASSERT_TRUE(r.Compute(y1, (x2 * R.transpose()).rowwise() + t, ConditionNormals<K>(y1), Order(2)));
+  EXPECT_LT((r.D - k.D).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_LT((r.M - k.M).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_LT((r.weighted_gap - k.weighted_gap).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+// MAP-P1 / MAP-P2: one slave element mapped from the parallel master 0.1 above in z.
+template <int N>
+Eigen::Matrix<double, N, 4> MapPair(const Eigen::Matrix<double, N, 3>& x1, const Eigen::Matrix<double, N, 3>& x2) {
+  using K = MortarPairKinematics<3, N, N>;
+  K k;
+  EXPECT_TRUE(k.Compute(x1, x2, ConditionNormals<K>(x1), Order(2)));
+  Eigen::Matrix<double, N, 4> master_fields;  // T = z, DISPLACEMENT = (x, y, z)
+  for (int l = 0; l < N; ++l) master_fields.row(l) << x2(l, 2), x2(l, 0), x2(l, 1), x2(l, 2);
+  return k.D.fullPivLu().solve(k.M * master_fields);
+}
+
+TEST(MortarOperator, MortarMapping_MAP_P1_Triangle) {
+  const auto x1 = Rows<Eigen::Matrix3d>({0, 1, 0.1, 1, 0, 0, 0, 0, 0});  // [3,2,1]
+  const auto x2 = Rows<Eigen::Matrix3d>({0, 0, 0.1, 1, 0, 0.1, 0, 1, 0.2});
+  const auto mapped = MapPair<3>(x1, x2);
+  // Rows = slave nodes 3, 2, 1; columns T, DISP_X, DISP_Y, DISP_Z.
+  const double expected[3][4] = {
+      {0.19900990099009902, 0.0, 0.9900990099009901, 0.19900990099009902},
+      {0.09900990099009903, 1.0, -0.009900990099009833, 0.09900990099009903},
+      {0.09900990099009897, 0.0, -0.009900990099009983, 0.09900990099009897}};
+  for (int j = 0; j < 3; ++j)
+    for (int c = 0; c < 4; ++c) EXPECT_NEAR(mapped(j, c), expected[j][c], 1e-12) << j << "," << c;
+}
+
+TEST(MortarOperator, MortarMapping_MAP_P2_Quadrilateral) {
+  const auto x1 = Rows<Eigen::Matrix<double, 4, 3>>({0, 1, 0.1, 1, 1, 0.1, 1, 0, 0, 0, 0, 0});  // [4,3,2,1]
+  const auto x2 = Rows<Eigen::Matrix<double, 4, 3>>({0, 0, 0.1, 1, 0, 0.1, 1, 1, 0.2, 0, 1, 0.2});
+  const auto mapped = MapPair<4>(x1, x2);
+  const double expected[4][4] = {
+      {0.19900990099009902, 0.0, 0.9900990099009899, 0.19900990099009902},
+      {0.19900990099009894, 1.0, 0.9900990099009899, 0.19900990099009894},
+      {0.099009900990099, 1.0, -0.009900990099009972, 0.099009900990099},
+      {0.09900990099009901, 0.0, -0.0099009900990098, 0.09900990099009901}};
+  for (int j = 0; j < 4; ++j)
+    for (int c = 0; c < 4; ++c) EXPECT_NEAR(mapped(j, c), expected[j][c], 1e-12) << j << "," << c;
+}
+
+}  // namespace
+}  // namespace mc

@@ -1,0 +1,126 @@
+"""Issue 4 (benchmarks) and issue 3 (Hertz correctness): the gmsh-generated Hertz cases are valid
+Kratos-format cases that our readers load, with non-empty interface parts, and their Hertz
+reference values satisfy the closed-form relations. Fast; Kratos is not needed."""
+from __future__ import annotations
+
+import importlib.util
+import json
+import math
+import os
+import sys
+
+import pytest
+
+import mortarcontact as mc
+
+pytestmark = pytest.mark.skipif(importlib.util.find_spec("gmsh") is None, reason="gmsh is not installed")
+
+HERTZ_DIR = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", "benchmarks", "hertz"))
+sys.path.insert(0, HERTZ_DIR)
+
+import generate_cases  # noqa: E402
+
+
+@pytest.fixture(scope="module")
+def case_2d(tmp_path_factory):
+    folder = generate_cases.write_case("hertz2d", "2k", str(tmp_path_factory.mktemp("hertz")))
+    with open(os.path.join(folder, "hertz.json")) as f:
+        return folder, json.load(f)
+
+
+def _read(folder: str, dim: int):
+    model = mc.Model()
+    part = model.CreateModelPart("Structure", dim)
+    for name in ("DISPLACEMENT", "REACTION"):
+        part.AddNodalSolutionStepVariable(mc.GetVariable(name))
+    mc.ReadModelPart(part, os.path.join(folder, f"{os.path.basename(folder)}.mdpa"), True)
+    return part
+
+
+def test_mdpa_reads_with_expected_counts(case_2d):
+    folder, hertz = case_2d
+    counts = hertz["counts"]
+    part = _read(folder, 2)
+    assert part.NumberOfNodes() == counts["nodes"]
+    assert part.NumberOfElements() == counts["elements"] == counts["curved_elements"] + counts["block_elements"]
+    assert part.NumberOfConditions() == 0
+    assert counts["dofs"] == 2 * counts["nodes"] + counts["slave_nodes"]
+    assert 1500 <= counts["dofs"] <= 2500  # the "2k" size
+    assert part.GetSubModelPart("Parts_cylinder").NumberOfElements() == counts["curved_elements"]
+    assert part.GetSubModelPart("Parts_block").NumberOfElements() == counts["block_elements"]
+
+
+def test_interface_and_boundary_parts(case_2d):
+    folder, hertz = case_2d
+    part = _read(folder, 2)
+    slave = part.GetSubModelPart("Contact_slave")
+    master = part.GetSubModelPart("Contact_master")
+    assert slave.NumberOfNodes() == hertz["counts"]["slave_nodes"] > 10
+    assert master.NumberOfNodes() == hertz["counts"]["master_nodes"] > 10
+    a = hertz["target"]["half_width"]
+    cylinder = set(part.GetSubModelPart("Parts_cylinder").NodeIds())
+    for node in slave.Nodes:  # on the arc, near the contact, in the slave body
+        assert abs(math.hypot(node.X0, node.Y0 - hertz["radius"]) - hertz["radius"]) < 1e-9
+        assert abs(node.X0) <= 4.0 * a + 1e-12 and node.Id in cylinder
+    for node in master.Nodes:  # on the block top
+        assert node.Y0 == 0.0 and abs(node.X0) <= 5.0 * a + 1e-12 and node.Id not in cylinder
+    # the initial contact point (zero gap) is a slave node; the block top is meshed independently
+    assert sum(1 for n in slave.Nodes if n.X0 == 0.0 and n.Y0 == 0.0) == 1
+    assert sum(1 for n in part.Nodes if n.X0 == 0.0 and n.Y0 == 0.0) <= 2
+    top = part.GetSubModelPart("DISPLACEMENT_top")
+    bottom = part.GetSubModelPart("DISPLACEMENT_bottom")
+    assert top.NumberOfNodes() > 0 and all(n.Y0 == hertz["radius"] for n in top.Nodes)
+    assert bottom.NumberOfNodes() > 0 and all(n.Y0 == -hertz["block_height"] for n in bottom.Nodes)
+    # the interface is symmetric about x = 0 (full model, mirrored mesh not required: counts only)
+    assert sum(1 for n in slave.Nodes if n.X0 < 0.0) > 5 and sum(1 for n in slave.Nodes if n.X0 > 0.0) > 5
+
+
+def test_parameters_and_materials(case_2d):
+    folder, _ = case_2d
+    with open(os.path.join(folder, "ProjectParameters.json")) as f:
+        params = json.load(f)
+    settings = params["solver_settings"]
+    assert settings["contact_settings"]["mortar_type"] == "ALMContactFrictionless"
+    assert settings["time_stepping"]["time_step"] * 4 == params["problem_data"]["end_time"]
+    contact = params["processes"]["contact_process_list"][0]
+    assert contact["python_module"] == "alm_contact_process"
+    assert contact["Parameters"]["assume_master_slave"] == {"0": ["Contact_slave"]}
+    with open(os.path.join(folder, settings["material_import_settings"]["materials_filename"])) as f:
+        laws = {p["Material"]["constitutive_law"]["name"] for p in json.load(f)["properties"]}
+    assert laws == {"LinearElasticPlaneStrain2DLaw"}
+    from mortarcontact.project_parameters import read_project_parameters
+
+    read_project_parameters(os.path.join(folder, "ProjectParameters.json"))  # our parser accepts it
+
+
+def test_hertz_values_satisfy_closed_forms(case_2d):
+    _, hertz = case_2d
+    target, r, e_star = hertz["target"], hertz["radius"], hertz["effective_modulus"]
+    e, nu = hertz["young_modulus"], hertz["poisson_ratio"]
+    assert e_star == pytest.approx(e / (2.0 * (1.0 - nu * nu)), rel=1e-14)
+    p, a, p0 = target["force"], target["half_width"], target["peak_pressure"]
+    assert a == pytest.approx(math.sqrt(4.0 * p * r / (math.pi * e_star)), rel=1e-12)
+    assert p0 == pytest.approx(2.0 * p / (math.pi * a), rel=1e-12)
+    assert a / r == pytest.approx(0.1, rel=1e-12)
+    # the elliptical pressure integrates to the force: int p0 sqrt(1 - x^2/a^2) dx = pi a p0 / 2
+    assert math.pi * a * p0 / 2.0 == pytest.approx(p, rel=1e-12)
+    assert hertz["applied_displacement"] > 0.0
+
+
+def test_hertz_3d_closed_forms():
+    e_star = generate_cases.effective_modulus(1000.0, 0.3)
+    h = generate_cases.hertz_3d(0.7, 1.0, e_star)
+    a, p0 = h["half_width"], h["peak_pressure"]
+    assert a ** 3 == pytest.approx(3.0 * 0.7 * 1.0 / (4.0 * e_star), rel=1e-12)
+    assert 2.0 * math.pi * a * a * p0 / 3.0 == pytest.approx(0.7, rel=1e-12)  # integral of the hemispherical pressure
+    assert generate_cases.force_for_half_width(3, a, 1.0, e_star) == pytest.approx(0.7, rel=1e-12)
+    assert h["approach"] == pytest.approx(a * a, rel=1e-12)
+
+
+def test_interior_faces_on_the_interface_are_rejected():
+    import numpy as np
+
+    cells = np.array([[0, 1, 2], [1, 3, 2]])  # two triangles sharing the edge 1-2
+    assert generate_cases.interface_faces(cells, np.array([0, 1])) == 1
+    with pytest.raises(RuntimeError, match="interior"):
+        generate_cases.interface_faces(cells, np.array([1, 2]))
