@@ -134,8 +134,15 @@ void MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::CalculateAll(Matr
   typename Kinematics::MasterMatrix x2;
   GatherKinematicsInput(x1, x2, n1);
   const MortarIntegrationSettings settings = IntegrationSettings(info);
-  const bool overlap = lhs ? kinematics.Compute(x1, x2, n1, settings) : kinematics.ComputeValues(x1, x2, n1, settings);
-  if (!overlap) return;  // the pair does not touch: no contribution
+  // A pair that does not touch still owns the multipliers of its slave nodes. With every mortar
+  // quantity zero the kernels add only the inactive rows (lambda = 0), which keeps the system
+  // regular for slave nodes that lie outside every overlap (Kratos instead flags them ISOLATED
+  // and its block builder fixes their multipliers).
+  if (lhs) {
+    kinematics.Compute(x1, x2, n1, settings);
+  } else {
+    kinematics.ComputeValues(x1, x2, n1, settings);
+  }
 
   Data data;
   data.kinematics = &kinematics;

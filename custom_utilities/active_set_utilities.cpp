@@ -8,7 +8,8 @@ namespace mc::ActiveSetUtilities {
 
 namespace {
 
-/// Applies `decide(node, k, eps) -> lambda_bar` to every SLAVE node, toggles ACTIVE and calls
+/// Applies `decide(node, k, eps) -> lambda_bar` to every SLAVE node, toggles ACTIVE (never on for
+/// ISOLATED nodes) and calls
 /// `activate(node, lambda_bar)` for the nodes that switch on. Serial: the change list and the
 /// count are cheap next to the assembly, and the order of `changed` stays deterministic.
 template <class Decide, class Activate>
@@ -25,7 +26,9 @@ std::size_t UpdateActiveSet(ModelPart& contact_part, ChangedNodes* changed, Deci
     const double augmented = decide(node, k, eps);
     node.SetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE, augmented);
     const bool was_active = node.Is(ACTIVE);
-    const bool active = IsActive(augmented);
+    // An ISOLATED slave node lies outside every mortar overlap: it cannot carry contact whatever
+    // its multiplier says (a pressure left from an earlier step must not keep it active).
+    const bool active = IsActive(augmented) && !node.Is(ISOLATED);
     node.Set(ACTIVE, active);
     if (active == was_active) continue;
     if (active) activate(node, k, augmented);

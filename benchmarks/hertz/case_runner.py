@@ -63,10 +63,13 @@ def _extract(model, get_variable, dim: int, flag_active) -> dict:
     top = [value(node, displacement) for node in root.GetSubModelPart("DISPLACEMENT_top").Nodes]
     info = {}
     for name in ("SCALE_FACTOR", "INITIAL_PENALTY"):
-        try:
-            info[name] = float(root.ProcessInfo[get_variable(name)])
-        except Exception:  # not set by this code
-            info[name] = None
+        info[name] = None
+        for read in (lambda v: root.ProcessInfo[v], lambda v: root.ProcessInfo.GetValue(v)):
+            try:
+                info[name] = float(read(get_variable(name)))
+                break
+            except Exception:  # this spelling of the API, or the value, is not available
+                continue
     return {"slave": slave, "reactions": reactions, "top_displacement": top[0] if top else None,
             "nodes": root.NumberOfNodes(), "process_info": info}
 

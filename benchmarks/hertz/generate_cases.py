@@ -219,10 +219,10 @@ def _boundary_faces(cells: np.ndarray) -> set:
     return {tuple(f) for f in unique[counts == 1]}
 
 
-def interface_faces(cells: np.ndarray, interface: np.ndarray) -> int:
-    """Number of element faces whose nodes all lie in ``interface`` (what a contact process builds
-    from a node-only interface part); raises if one of them is not on the boundary, which would
-    make the generated interface wrong."""
+def interface_faces(cells: np.ndarray, interface: np.ndarray) -> np.ndarray:
+    """Element faces (sorted node rows) whose nodes all lie in ``interface``: what a contact process
+    builds from a node-only interface part. Raises if one of them is not on the boundary, which
+    would make the generated interface wrong."""
     flags = np.zeros(int(cells.max()) + 1, dtype=bool)
     flags[interface] = True
     k = cells.shape[1]
@@ -232,7 +232,7 @@ def interface_faces(cells: np.ndarray, interface: np.ndarray) -> int:
     inner = [tuple(f) for f in faces if tuple(f) not in boundary]
     if inner:
         raise RuntimeError(f"{len(inner)} interior faces have all their nodes on the interface, e.g. {inner[0]}")
-    return len(faces)
+    return faces
 
 
 # -- writing ----------------------------------------------------------------------------------
@@ -254,6 +254,11 @@ def build_case(family: str, label: str) -> dict:
     on_curve = np.abs(np.linalg.norm(xc - centre, axis=1) - RADIUS) < 1e-7 * RADIUS
     slave = np.flatnonzero(on_curve & (xc[:, top_axis] < RADIUS - tol) & (radial(xc) <= 4.0 * a))
     master = np.flatnonzero((np.abs(xb[:, top_axis]) < tol) & (radial(xb) <= 5.0 * a))
+    # Keep only nodes of whole interface faces: a node without a face would get a multiplier that
+    # no condition couples (Kratos skips such nodes; a stricter code would find a singular system).
+    slave_faces = interface_faces(cc, slave)
+    master_faces = interface_faces(cb, master)
+    slave, master = np.unique(slave_faces), np.unique(master_faces)
     nc = len(xc)
     coords = np.vstack([xc, xb])
     parts = {
@@ -267,14 +272,12 @@ def build_case(family: str, label: str) -> dict:
         parts["DISPLACEMENT_sym_y"] = {"nodes": np.flatnonzero(np.abs(coords[:, 1]) < tol)}
     parts["Contact_slave"] = {"nodes": slave}
     parts["Contact_master"] = {"nodes": nc + master}
-    slave_faces = interface_faces(cc, slave)
-    master_faces = interface_faces(cb, master)
     for name in parts:
         if len(parts[name]["nodes"]) == 0:
             raise RuntimeError(f"{family}_{label}: sub-model-part {name} is empty")
     return {"family": family, "label": label, "dim": dim, "scale": scale, "coords": coords,
             "curved_cells": cc, "block_cells": cb + nc, "parts": parts,
-            "slave_faces": slave_faces, "master_faces": master_faces}
+            "slave_faces": len(slave_faces), "master_faces": len(master_faces)}
 
 
 def write_mdpa(path: str, case: dict) -> None:

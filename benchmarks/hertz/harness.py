@@ -15,7 +15,8 @@ divided by the scale factor k (ProcessInfo SCALE_FACTOR, automatic k = E/h): the
 contact pressure is p = -k * lambda (compression positive). With dual (biorthogonal) multiplier
 shape functions the nodal multiplier is already a pressure, not a nodal force, so no division by
 a tributary area is needed; AUGMENTED_NORMAL_CONTACT_PRESSURE = k * lambda + epsilon * weighted gap
-equals -p at converged active nodes (zero weighted gap). The harness checks this reading: the
+equals -p at converged active nodes (zero weighted gap) and is used when SCALE_FACTOR cannot be
+read. The harness checks this reading: the
 pressure integrated over the slave surface (piecewise linear, times the symmetry factor) must equal
 the reaction force.
 """
@@ -143,10 +144,10 @@ def evaluate(record: dict, hertz: dict) -> dict:
     e_star = hertz["effective_modulus"]
     force = abs(record["reactions"]["DISPLACEMENT_bottom"]) * symmetry
     theory = (generate_cases.hertz_2d if dim == 2 else generate_cases.hertz_3d)(force, radius, e_star)
-    scale = (record.get("process_info") or {}).get("SCALE_FACTOR") or 1.0
+    scale = (record.get("process_info") or {}).get("SCALE_FACTOR")
     nodes = []
     for n in record["slave"]:
-        if n["lm"] is not None:
+        if n["lm"] is not None and scale is not None:
             p = -scale * n["lm"]
         else:
             p = -(n["augmented"] or 0.0) if n["active"] else 0.0

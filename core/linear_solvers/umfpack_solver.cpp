@@ -21,6 +21,19 @@ std::string UmfpackStatusText(int status) {
   }
 }
 
+// Whether every diagonal entry is positive, as in a stiffness matrix. Saddle-point systems (the
+// multiplier rows of active contact nodes have a zero diagonal) legitimately factor with tiny
+// pivots, so the round-off singularity test applies only to the former.
+bool HasPositiveDiagonal(const SparseMatrix& M) {
+  for (Eigen::Index j = 0; j < M.outerSize(); ++j) {
+    double diagonal = 0.0;
+    for (SparseMatrix::InnerIterator it(M, j); it; ++it)
+      if (it.row() == j) diagonal = it.value();
+    if (!(diagonal > 0.0)) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 UmfpackSolver::~UmfpackSolver() { Clear(); }
@@ -55,7 +68,7 @@ void UmfpackSolver::Solve(const SparseMatrix& A, Vector& x, const Vector& b) {
   }
   // A structure free to move as a rigid body gives a pivot that is zero up to round-off rather
   // than exactly zero; its solution would be meaningless, so it is reported as singular too.
-  if (status == UMFPACK_OK && info[UMFPACK_RCOND] < kSingularReciprocalCondition) {
+  if (status == UMFPACK_OK && info[UMFPACK_RCOND] < kSingularReciprocalCondition && HasPositiveDiagonal(M)) {
     const long column = SmallestPivotColumn();
     FreeNumeric();
     throw SingularMatrixError(Concat("UMFPACK: numerically singular matrix (reciprocal condition estimate ",

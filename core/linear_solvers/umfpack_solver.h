@@ -23,7 +23,8 @@ class UmfpackSolver : public LinearSolver {
   void Initialize(const SparseMatrix& A) override;
   /// Throws SingularMatrixError naming the column (unknown) of the first zero pivot, or of the
   /// smallest pivot when UMFPACK's reciprocal condition estimate is below
-  /// kSingularReciprocalCondition (singular up to round-off).
+  /// kSingularReciprocalCondition for a matrix with a positive diagonal (a stiffness matrix
+  /// singular up to round-off: a rigid-body mode).
   void Solve(const SparseMatrix& A, Vector& x, const Vector& b) override;
   void Clear() override;
 

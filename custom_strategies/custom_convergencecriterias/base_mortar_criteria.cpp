@@ -48,7 +48,11 @@ bool BaseMortarConvergenceCriteria::PreCriteria(ModelPart& model_part, const Dof
   ModelPart* contact = FindContactModelPart(model_part);
   if (!contact || !updater_) return true;
   const ProcessInfo& info = model_part.GetProcessInfo();
-  if (info.GetValue(CONSIDER_NORMAL_VARIATION) != 0) updater_->UpdateNormals(model_part);
+  // The constraints live in the current configuration, so the nodal normals follow the mesh at
+  // every iteration; CONSIDER_NORMAL_VARIATION only decides whether the tangent includes their
+  // derivatives. (Kratos' text refreshes them only with normal variation, but its reference
+  // results — e.g. the inclined patch test's contact pressure — match current normals.)
+  updater_->UpdateNormals(model_part);
   const bool dynamic = model_part.HasNodalSolutionStepVariable(VELOCITY);
   const bool adapt_penalty = info.GetValue(ADAPT_PENALTY);
   if ((adapt_penalty || dynamic) && contact->HasNodalSolutionStepVariable(WEIGHTED_GAP))

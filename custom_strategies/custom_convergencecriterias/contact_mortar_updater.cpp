@@ -2,6 +2,7 @@
 #include "custom_strategies/custom_convergencecriterias/contact_mortar_updater.h"
 
 #include "core/model/model_part.h"
+#include "core/variables/kernel_variables.h"
 #include "custom_conditions/contact_condition_utilities.h"
 #include "custom_utilities/normal_calculation_utilities.h"
 
@@ -16,8 +17,17 @@ ModelPart* FindContactPart(ModelPart& model_part, const char* name) {
 }  // namespace
 
 void ContactMortarUpdater::ComputeWeightedGap(ModelPart& model_part) {
-  if (ModelPart* pairs = FindContactPart(model_part, "ComputingContact"))
-    ContactConditionUtilities::ComputeExplicitContributions(*pairs, true);
+  ModelPart* pairs = FindContactPart(model_part, "ComputingContact");
+  if (!pairs) return;
+  ContactConditionUtilities::ComputeExplicitContributions(*pairs, true);
+  // A slave node outside the overlap of every pair has no mortar operators: it cannot carry
+  // contact, so it is ISOLATED and inactive (its multiplier row is then the inactive one).
+  for (Condition* pair : pairs->Conditions())
+    for (Node* node : pair->GetGeometry().Nodes()) {
+      const bool isolated = node->GetValue(NODAL_AREA) <= 0.0;
+      node->Set(ISOLATED, isolated);
+      if (isolated) node->Set(ACTIVE, false);
+    }
 }
 
 void ContactMortarUpdater::UpdateNormals(ModelPart& model_part) {

@@ -121,6 +121,6 @@ def test_interior_faces_on_the_interface_are_rejected():
     import numpy as np
 
     cells = np.array([[0, 1, 2], [1, 3, 2]])  # two triangles sharing the edge 1-2
-    assert generate_cases.interface_faces(cells, np.array([0, 1])) == 1
+    assert generate_cases.interface_faces(cells, np.array([0, 1])).tolist() == [[0, 1]]
     with pytest.raises(RuntimeError, match="interior"):
         generate_cases.interface_faces(cells, np.array([1, 2]))
