@@ -26,7 +26,7 @@ install: deps
 	  --no-build-isolation --no-deps .
 
 demo: install
-	cd examples/plate_with_hole && $(PYTHON) -m mortarcontact run ProjectParameters.json && $(PYTHON) postprocess.py
+	cd examples/hertz_cylinder && $(PYTHON) run_demo.py
 
 test: install test-cpp test-python
 
@@ -36,8 +36,11 @@ test-cpp:
 test-python:
 	$(PYTHON) -m pytest -q tests/python
 
+# Structural block (0.1M-1M DoFs) and Hertz cases side by side with Kratos 10.4 (its wheels go
+# into a separate virtual environment created by the script, never into this one).
 bench: install
 	$(PYTHON) benchmarks/run_benchmarks.py
+	$(PYTHON) benchmarks/hertz/compare.py --cases hertz2d_2k,hertz2d_8k,hertz2d_30k,hertz3d_15k
 
 clean:
 	rm -rf build

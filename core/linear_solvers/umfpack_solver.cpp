@@ -42,8 +42,12 @@ void UmfpackSolver::Initialize(const SparseMatrix& A) {
   Clear();
   if (A.rows() != A.cols()) throw SolutionError(Concat("UMFPACK: matrix is ", A.rows(), "x", A.cols(), ", not square"));
   const SparseMatrix& M = CompressedView(A, compressed_);
-  const int status = umfpack_di_symbolic(static_cast<int>(M.rows()), static_cast<int>(M.cols()), M.outerIndexPtr(),
-                                         M.innerIndexPtr(), M.valuePtr(), &symbolic_, nullptr, nullptr);
+  // The 64-bit interface: with 32-bit sizes UMFPACK runs out of addressable workspace on 3D
+  // problems of ~1e5 equations long before memory is exhausted.
+  outer_.assign(M.outerIndexPtr(), M.outerIndexPtr() + M.outerSize() + 1);
+  inner_.assign(M.innerIndexPtr(), M.innerIndexPtr() + M.nonZeros());
+  const auto status = umfpack_dl_symbolic(M.rows(), M.cols(), outer_.data(), inner_.data(), M.valuePtr(), &symbolic_,
+                                          nullptr, nullptr);
   if (status != UMFPACK_OK) {
     symbolic_ = nullptr;
     throw SolutionError(Concat("UMFPACK symbolic analysis of a ", M.rows(), "-equation matrix failed: ",
@@ -59,8 +63,8 @@ void UmfpackSolver::Solve(const SparseMatrix& A, Vector& x, const Vector& b) {
   if (symbolic_ == nullptr || !pattern_.Matches(M)) Initialize(M);
   FreeNumeric();
   double info[UMFPACK_INFO];
-  const int status = umfpack_di_numeric(M.outerIndexPtr(), M.innerIndexPtr(), M.valuePtr(), symbolic_, &numeric_,
-                                        nullptr, info);
+  const auto status = umfpack_dl_numeric(outer_.data(), inner_.data(), M.valuePtr(), symbolic_, &numeric_, nullptr,
+                                         info);
   if (status == UMFPACK_WARNING_singular_matrix) {
     const long column = SmallestPivotColumn();
     FreeNumeric();
@@ -80,19 +84,19 @@ void UmfpackSolver::Solve(const SparseMatrix& A, Vector& x, const Vector& b) {
     throw SolutionError(Concat("UMFPACK numeric factorization failed: ", UmfpackStatusText(status)));
   }
   x.resize(M.cols());
-  const int solve_status = umfpack_di_solve(UMFPACK_A, M.outerIndexPtr(), M.innerIndexPtr(), M.valuePtr(), x.data(),
-                                            b.data(), numeric_, nullptr, nullptr);
+  const auto solve_status = umfpack_dl_solve(UMFPACK_A, outer_.data(), inner_.data(), M.valuePtr(), x.data(),
+                                             b.data(), numeric_, nullptr, nullptr);
   if (solve_status != UMFPACK_OK) throw SolutionError(Concat("UMFPACK solve failed: ", UmfpackStatusText(solve_status)));
 }
 
 // The diagonal of U in pivot order, with the column permutation Q, gives the original column of
 // the smallest pivot (the first zero one when there are exact zeros).
 long UmfpackSolver::SmallestPivotColumn() const {
-  int n_row = 0, n_col = 0, nz_diag = 0, lnz = 0, unz = 0, recip = 0;
-  if (umfpack_di_get_lunz(&lnz, &unz, &n_row, &n_col, &nz_diag, numeric_) != UMFPACK_OK) return -1;
-  std::vector<int> q(n_col);
+  SuiteSparse_long n_row = 0, n_col = 0, nz_diag = 0, lnz = 0, unz = 0, recip = 0;
+  if (umfpack_dl_get_lunz(&lnz, &unz, &n_row, &n_col, &nz_diag, numeric_) != UMFPACK_OK) return -1;
+  std::vector<SuiteSparse_long> q(n_col);
   std::vector<double> diagonal(std::min(n_row, n_col));
-  if (umfpack_di_get_numeric(nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, q.data(), diagonal.data(),
+  if (umfpack_dl_get_numeric(nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, q.data(), diagonal.data(),
                              &recip, nullptr, numeric_) != UMFPACK_OK) {
     return -1;
   }
@@ -106,13 +110,13 @@ long UmfpackSolver::SmallestPivotColumn() const {
 }
 
 void UmfpackSolver::FreeNumeric() {
-  if (numeric_ != nullptr) umfpack_di_free_numeric(&numeric_);
+  if (numeric_ != nullptr) umfpack_dl_free_numeric(&numeric_);
   numeric_ = nullptr;
 }
 
 void UmfpackSolver::Clear() {
   FreeNumeric();
-  if (symbolic_ != nullptr) umfpack_di_free_symbolic(&symbolic_);
+  if (symbolic_ != nullptr) umfpack_dl_free_symbolic(&symbolic_);
   symbolic_ = nullptr;
   pattern_.Clear();
 }

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "core/linear_solvers/linear_solver.h"
 #include "core/linear_solvers/sparse_pattern.h"
@@ -43,6 +44,8 @@ class UmfpackSolver : public LinearSolver {
   void* numeric_ = nullptr;
   SparsePattern pattern_;
   SparseMatrix compressed_;
+  std::vector<long> outer_;  ///< column pointers and row indices widened for umfpack_dl_*
+  std::vector<long> inner_;
   int symbolic_count_ = 0;
 };
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "core/solving/block_builder_and_solver.h"
+#include "core/solving/parallel_utilities.h"
 
 #include <cmath>
 
@@ -40,7 +41,7 @@ void BlockBuilderAndSolver::ApplyDirichletConditions(bool lhs, bool rhs) {
   scale_ = 1.0;
   if (diagonal_ == DirichletDiagonal::kMaxDiagonal) {
     double largest = 0.0;
-#pragma omp parallel for reduction(max : largest)
+#pragma omp parallel for reduction(max : largest) if (n >= kMinParallelDofs)
     for (long j = 0; j < n; ++j) {
       if (constrained_[j]) continue;
       for (int p = outer[j]; p < outer[j + 1]; ++p)
@@ -48,7 +49,7 @@ void BlockBuilderAndSolver::ApplyDirichletConditions(bool lhs, bool rhs) {
     }
     if (largest > 0.0) scale_ = largest;
   }
-#pragma omp parallel for
+#pragma omp parallel for if (n >= kMinParallelDofs)
   for (long j = 0; j < n; ++j) {
     if (constrained_[j]) {
       for (int p = outer[j]; p < outer[j + 1]; ++p) values[p] = inner[p] == j ? scale_ : 0.0;

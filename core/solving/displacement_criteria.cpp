@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "core/solving/displacement_criteria.h"
+#include "core/solving/parallel_utilities.h"
 
 #include <cmath>
 
@@ -15,7 +16,7 @@ bool DisplacementCriteria::PostCriteria(ModelPart& model_part, const DofsArray& 
   double value = 0.0;
   long n = 0;
   const long size = static_cast<long>(dofs.size());
-#pragma omp parallel for reduction(+ : increment, value, n)
+#pragma omp parallel for reduction(+ : increment, value, n) if (size >= kMinParallelDofs)
   for (long i = 0; i < size; ++i) {
     const Dof& d = *dofs[i];
     if (d.fixed) continue;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "core/solving/explicit_central_differences_scheme.h"
+#include "core/solving/parallel_utilities.h"
 
 #include "core/model/model_part.h"
 #include "core/solving/time_derivatives.h"
@@ -38,7 +39,7 @@ void ExplicitCentralDifferencesScheme::Advance(ModelPart& model_part, const Dofs
   const double velocity_step = started_ ? dt : 0.5 * dt;
   const long n = static_cast<long>(dofs.size());
   std::exception_ptr error;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kMinParallelDofs)
   for (long i = 0; i < n; ++i) {
     Dof& d = *dofs[i];
     if (d.fixed) continue;

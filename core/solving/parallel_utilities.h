@@ -7,6 +7,11 @@
 
 namespace mc {
 
+/// Entity count from which loops over elements or conditions run in parallel.
+inline constexpr long kMinParallelEntities = 256;
+/// Size from which cheap loops over DoFs or vector entries run in parallel.
+inline constexpr long kMinParallelDofs = 8192;
+
 /// Runs f(item) for every item of a node/element/condition container with OpenMP. An
 /// exception thrown in any thread stops nothing else but is rethrown (the first one) after
 /// the loop, since exceptions may not cross an OpenMP region.
@@ -15,7 +20,9 @@ void ParallelForEachEntity(const Container& items, F&& f) {
   const long n = static_cast<long>(items.size());  // sorts the container before the threads start
   auto first = items.begin();
   std::exception_ptr error;
-#pragma omp parallel for schedule(guided, 16)
+  // Below a few hundred entities a thread team costs more than it saves (and, on a busy machine,
+  // waiting for a descheduled thread dominates small problems), so those loops stay serial.
+#pragma omp parallel for schedule(guided, 16) if (n >= kMinParallelEntities)
   for (long i = 0; i < n; ++i) {
     try {
       f(*first[i]);

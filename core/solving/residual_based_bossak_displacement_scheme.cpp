@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "core/solving/residual_based_bossak_displacement_scheme.h"
+#include "core/solving/parallel_utilities.h"
 
 #include "core/model/model_part.h"
 #include "core/solving/time_derivatives.h"
@@ -34,7 +35,7 @@ void ResidualBasedBossakDisplacementScheme::UpdateDerivatives(const DofsArray& d
   const double a2 = 1.0 / (beta_ * dt_);
   const double a3 = 0.5 / beta_ - 1.0;
   const long n = static_cast<long>(dofs.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kMinParallelDofs)
   for (long i = 0; i < n; ++i) {
     const Dof& d = *dofs[i];
     const Variable<double>* vel = TimeDerivativeOf(*d.variable, 1);
@@ -52,7 +53,7 @@ void ResidualBasedBossakDisplacementScheme::UpdateDerivatives(const DofsArray& d
 
 void ResidualBasedBossakDisplacementScheme::Predict(ModelPart& model_part, const DofsArray& dofs) {
   const long n = static_cast<long>(dofs.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kMinParallelDofs)
   for (long i = 0; i < n; ++i) {
     const Dof& d = *dofs[i];
     if (d.fixed) continue;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "core/solving/residual_criteria.h"
+#include "core/solving/parallel_utilities.h"
 
 #include <cmath>
 
@@ -19,7 +20,7 @@ bool ResidualCriteria::PostCriteria(ModelPart& model_part, const DofsArray& dofs
   double norm = 0.0;
   long n = 0;
   const long size = static_cast<long>(dofs.size());
-#pragma omp parallel for reduction(+ : norm, n)
+#pragma omp parallel for reduction(+ : norm, n) if (size >= kMinParallelDofs)
   for (long i = 0; i < size; ++i) {
     const Dof& d = *dofs[i];
     if (d.fixed) continue;

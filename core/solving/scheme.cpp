@@ -34,7 +34,7 @@ void Scheme::FinalizeSolutionStep(ModelPart& model_part) {
 
 void Scheme::Update(ModelPart& model_part, const DofsArray& dofs, const Vector& dx) {
   const long n = static_cast<long>(dofs.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kMinParallelDofs)
   for (long i = 0; i < n; ++i) {
     Dof& dof = *dofs[i];
     if (!dof.fixed) dof.Value() += dx[dof.equation_id];
