@@ -17,13 +17,13 @@ PYBIND11_MODULE(_core, m) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const mc::InputError& e) {
-      input_error(e.what());
+      py::set_error(input_error, e.what());
     } catch (const mc::NotImplementedError& e) {
-      not_implemented(e.what());
+      py::set_error(not_implemented, e.what());
     } catch (const mc::SolutionError& e) {
-      solution_error(e.what());
+      py::set_error(solution_error, e.what());
     } catch (const mc::Error& e) {
-      error(e.what());
+      py::set_error(error, e.what());
     }
   });
 

@@ -61,6 +61,19 @@ bool ComputePair(const Eigen::Matrix<T, TNumNodes, TDim>& x1,
 }  // namespace
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
+void MortarPairKinematics<TDim, TNumNodes, TNumNodesMaster>::ClearValues() {
+  area = 0.0;
+  points.size = 0;
+  points.area = 0.0;
+  Ae.setZero();
+  D.setZero();
+  M.setZero();
+  nodal_area.setZero();
+  weighted_gap.setZero();
+  gap_vector.setZero();
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
 bool MortarPairKinematics<TDim, TNumNodes, TNumNodesMaster>::ComputeValues(
     const SlaveMatrix& x1, const MasterMatrix& x2, const SlaveMatrix& n1,
     const MortarIntegrationSettings& settings, DualBasisDomain dual_basis) {
@@ -71,15 +84,7 @@ bool MortarPairKinematics<TDim, TNumNodes, TNumNodesMaster>::ComputeValues(
   has_overlap = ComputePair<double, TDim, TNumNodes, TNumNodesMaster>(x1, x2, n1, settings,
                                                                       dual_basis, v);
   if (!has_overlap) {
-    area = 0.0;
-    points.size = 0;
-    points.area = 0.0;
-    Ae.setZero();
-    D.setZero();
-    M.setZero();
-    nodal_area.setZero();
-    weighted_gap.setZero();
-    gap_vector.setZero();
+    ClearValues();
     return false;
   }
   points = v.points;
@@ -124,15 +129,7 @@ bool MortarPairKinematics<TDim, TNumNodes, TNumNodesMaster>::Compute(
   d_nodal_area.setZero();
   d_area.setZero();
   if (!has_overlap) {
-    area = 0.0;
-    points.size = 0;
-    points.area = 0.0;
-    Ae.setZero();
-    D.setZero();
-    M.setZero();
-    nodal_area.setZero();
-    weighted_gap.setZero();
-    gap_vector.setZero();
+    ClearValues();
     return false;
   }
 

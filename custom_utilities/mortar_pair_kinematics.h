@@ -90,6 +90,10 @@ struct MortarPairKinematics {
   bool ComputeValues(const SlaveMatrix& x1, const MasterMatrix& x2, const SlaveMatrix& n1,
                      const MortarIntegrationSettings& settings,
                      DualBasisDomain dual_basis = DualBasisDomain::kSlaveElement);
+
+ private:
+  /// The values of a pair without overlap (all zero).
+  void ClearValues();
 };
 
 extern template struct MortarPairKinematics<2, 2, 2>;
