@@ -60,7 +60,8 @@ std::string MortarAndConvergenceCriteria::FormatRow(const std::vector<std::strin
   std::string line;
   for (const auto& cell : cells) {
     char buffer[64];
-    std::snprintf(buffer, sizeof buffer, "%*s", kColumnWidth, cell.c_str());
+    // Two spaces between columns keep headers as wide as the column apart.
+    std::snprintf(buffer, sizeof buffer, "  %*s", kColumnWidth, cell.c_str());
     line += buffer;
   }
   return line;
