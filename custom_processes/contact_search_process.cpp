@@ -339,7 +339,10 @@ ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
         tree.RadiusSearch(slave.center, radius + max_master_radius, found);
       }
       OrientedBox slave_obb;
-      if (with_obb) slave_obb = BuildOrientedBox(slave_geometry, slave.normal, box_factor * slave.length);
+      // Along its normal the slave box reaches as far as the search radius: a face near the edge of
+      // a contact zone that is re-searched with the bodies already pressed together must keep the
+      // masters it will touch later in the step; the thin lateral padding still rejects far faces.
+      if (with_obb) slave_obb = BuildOrientedBox(slave_geometry, slave.normal, box_factor * slave.length, radius);
       std::vector<std::size_t>& kept = candidates[s];
       for (std::size_t f : found) {
         const std::size_t m = masters[f];
@@ -450,8 +453,11 @@ void ContactSearchProcess::PredictActiveSet(const std::vector<std::pair<Conditio
     }
     if (gap == std::numeric_limits<double>::max()) continue;
     node->SetValue(NORMAL_GAP, gap);
-    if (gap < factor * ContactInterfaceBuilder::GetNodalH(*node)) node->Set(ACTIVE, true);
+    // Only the first search predicts the active set; afterwards it belongs to the strategy, whose
+    // converged set of the previous step is a better start than a geometric guess.
+    if (!active_set_predicted_ && gap < factor * ContactInterfaceBuilder::GetNodalH(*node)) node->Set(ACTIVE, true);
   }
+  active_set_predicted_ = true;
   for (Node* node : interface_.Nodes()) stats.active_nodes += (node->Is(SLAVE) && node->Is(ACTIVE)) ? 1 : 0;
 }
 

@@ -92,6 +92,7 @@ class ContactSearchProcess {
   std::string type_search_;
   std::string check_gap_;
   bool roles_assigned_ = false;
+  bool active_set_predicted_ = false;  ///< the first search predicts ACTIVE; later ones leave it alone
 };
 
 }  // namespace mc

@@ -51,7 +51,8 @@ double InterfaceCharacteristicLength(const Geometry& geometry) {
   return geometry.LocalSpaceDimension() == 1 ? size : std::sqrt(size);
 }
 
-OrientedBox BuildOrientedBox(const Geometry& geometry, const Array3& normal, double inflation) {
+OrientedBox BuildOrientedBox(const Geometry& geometry, const Array3& normal, double inflation,
+                             double normal_inflation) {
   OrientedBox box;
   box.center = geometry.Center();
   const Array3 t1 = FirstTangent(geometry, normal);
@@ -67,6 +68,7 @@ OrientedBox BuildOrientedBox(const Geometry& geometry, const Array3& normal, dou
   }
   box.center += box.axes * (0.5 * (lo + hi));
   box.half = (0.5 * (hi - lo)).array() + inflation;
+  if (normal_inflation >= 0.0) box.half[2] = 0.5 * (hi[2] - lo[2]) + normal_inflation;
   return box;
 }
 

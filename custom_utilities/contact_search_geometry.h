@@ -20,8 +20,10 @@ struct OrientedBox {
 double InterfaceCharacteristicLength(const Geometry& geometry);
 
 /// The tightest box aligned with the face (first edge, the other tangent, the normal) around
-/// its nodes, grown by `inflation` on every side.
-OrientedBox BuildOrientedBox(const Geometry& geometry, const Array3& normal, double inflation);
+/// its nodes, grown by `inflation` along the tangents and by `normal_inflation` along the
+/// normal (the same as `inflation` when negative).
+OrientedBox BuildOrientedBox(const Geometry& geometry, const Array3& normal, double inflation,
+                             double normal_inflation = -1.0);
 
 /// Separating-axis test of two oriented boxes (15 candidate axes).
 bool Intersect(const OrientedBox& a, const OrientedBox& b);
