@@ -23,13 +23,6 @@ namespace mc::python {
 
 namespace {
 
-/// Strategies run with the GIL released; Python callbacks take it back.
-template <class F>
-auto WithoutGil(F&& f) {
-  py::gil_scoped_release release;
-  return f();
-}
-
 /// A std::function that calls a Python callable (or nothing for None) holding the GIL.
 std::function<void(ModelPart&)> ModelPartCallback(py::object callable) {
   if (callable.is_none()) return {};

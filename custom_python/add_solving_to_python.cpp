@@ -20,16 +20,6 @@
 
 namespace mc::python {
 
-namespace {
-/// Strategy calls release the GIL: assembly and solves run in OpenMP threads, and the log sink
-/// takes the GIL back when it prints.
-template <class F>
-auto WithoutGil(F&& f) {
-  py::gil_scoped_release release;
-  return f();
-}
-}  // namespace
-
 void AddSolvingToPython(py::module_& m) {
   py::class_<Scheme, std::shared_ptr<Scheme>>(m, "Scheme").def("Name", &Scheme::Name);
   py::class_<ResidualBasedIncrementalUpdateStaticScheme, Scheme, std::shared_ptr<ResidualBasedIncrementalUpdateStaticScheme>>(

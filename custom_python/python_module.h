@@ -28,6 +28,14 @@ void AddContactConditionsToPython(py::module_& m);
 void AddContactStrategiesToPython(py::module_& m);
 void ExportRegisteredNames(py::module_& m);
 
+/// Runs f with the GIL released: strategy calls assemble and solve in OpenMP threads, and the
+/// log sink or Python callbacks take the GIL back when they need it.
+template <class F>
+auto WithoutGil(F&& f) {
+  py::gil_scoped_release release;
+  return f();
+}
+
 /// A Python value for a value of any variable type.
 inline py::object ToPython(const DataValueContainer::Value& value) {
   return std::visit([](const auto& v) -> py::object { return py::cast(v); }, value);

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from .. import _core
+from ..utilities import nearest
 from ..contact_solvers import create_contact_convergence_criteria, create_contact_strategy
 from .mechanical_solver import MechanicalSolver
 
@@ -18,14 +19,15 @@ KNOWN_MORTAR_TYPES = ("ALMContactFrictionless", "ALMContactFrictionlessComponent
 
 
 class ContactMechanicalSolver(MechanicalSolver):
+    #: contact criteria names are resolved by the contact factory (spec 3.2)
+    criteria_names = None
+
     def __init__(self, model, settings, **kwargs):
         contact = settings["contact_settings"]
         mortar_type = contact["mortar_type"].GetString()
         # Kratos dispatches on substrings, so suffixes such as "WithNormalUpdate" are tolerated.
         base = next((t for t in sorted(KNOWN_MORTAR_TYPES, key=len, reverse=True) if mortar_type.startswith(t)), None)
         if base is None:
-            from ..utilities import nearest
-
             raise _core.InputError(f"{contact.Where()}.mortar_type: unknown \"{mortar_type}\""
                                    f"{nearest(mortar_type, KNOWN_MORTAR_TYPES)}")
         if base not in MORTAR_TYPES:
@@ -38,11 +40,6 @@ class ContactMechanicalSolver(MechanicalSolver):
         settings["reform_dofs_at_each_step"].SetBool(True)
         self.sub_step_callbacks = (None, None)
         super().__init__(model, settings, **kwargs)
-
-    def _check_names(self) -> None:
-        """Contact criteria names are resolved by the contact factory (spec 3.2)."""
-        criterion = self.settings["convergence_criterion"].GetString().lower()
-        self.settings["convergence_criterion"].SetString(criterion)
 
     def AddVariables(self) -> None:
         super().AddVariables()
@@ -70,9 +67,8 @@ class ContactMechanicalSolver(MechanicalSolver):
         criteria = create_contact_convergence_criteria(s, self.echo_level, updater)
         linear_solver = _core.CreateLinearSolver(s["linear_solver_settings"])
         initialize, finalize = self.sub_step_callbacks
-        strategy = create_contact_strategy(part, s, self._create_scheme(part), linear_solver, criteria,
-                                           self.echo_level, updater, initialize, finalize)
-        return strategy
+        return create_contact_strategy(part, s, self._create_scheme(part), linear_solver, criteria,
+                                       self.echo_level, updater, initialize, finalize)
 
     def Initialize(self) -> None:
         super().Initialize()

@@ -18,6 +18,9 @@ CRITERIA = ("displacement_criterion", "residual_criterion", "and_criterion", "or
 
 
 class MechanicalSolver:
+    #: convergence_criterion values this solver builds (None: resolved later by a factory)
+    criteria_names = CRITERIA
+
     def __init__(self, model: _core.Model, settings: _core.Parameters, *, dynamic: bool, explicit: bool,
                  case_dir: str | None = None):
         self.model = model
@@ -63,7 +66,7 @@ class MechanicalSolver:
     def _check_names(self) -> None:
         criterion = self.settings["convergence_criterion"].GetString().lower()
         self.settings["convergence_criterion"].SetString(criterion)
-        if criterion not in CRITERIA:
+        if self.criteria_names is not None and criterion not in self.criteria_names:
             hint = " (contact criteria need contact_settings)" if "contact" in criterion else ""
             raise _core.InputError(f"{self.settings.Where()}.convergence_criterion: unknown criterion "
                                    f"\"{criterion}\"{nearest(criterion, CRITERIA)}{hint}")
@@ -106,22 +109,19 @@ class MechanicalSolver:
     def ImportModelPart(self) -> None:
         imports = self.settings["model_import_settings"]
         input_type = imports["input_type"].GetString()
-        if input_type == "use_input_model_part":
-            pass
-        elif input_type == "mdpa":
+        # Nodes are created with the buffer in force, so it is set before the mesh is read.
+        self.main_model_part.SetBufferSize(max(self.settings["buffer_size"].GetInt(), self.minimum_buffer_size()))
+        if input_type == "mdpa":
             filename = imports["input_filename"].GetString()
             if not filename:
                 raise _core.InputError(f"{imports.Where()}.input_filename: required for input_type \"mdpa\"")
             path = self._locate(filename if filename.endswith(".mdpa") else filename + ".mdpa",
                                 f"{imports.Where()}.input_filename")
-            buffer_size = max(self.settings["buffer_size"].GetInt(), self.minimum_buffer_size())
-            self.main_model_part.SetBufferSize(buffer_size)
             self.pending_fixities = _core.ReadModelPart(
                 self.main_model_part, path, imports["ignore_variables_not_in_solution_step_data"].GetBool())
-        else:
+        elif input_type != "use_input_model_part":
             raise _core.NotImplementedFeatureError(f"{imports.Where()}.input_type: \"{input_type}\" is not "
                                                    "supported; use \"mdpa\"")
-        self.main_model_part.SetBufferSize(max(self.settings["buffer_size"].GetInt(), self.minimum_buffer_size()))
         self._import_materials()
 
     def _import_materials(self) -> None:
