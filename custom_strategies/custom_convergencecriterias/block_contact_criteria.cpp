@@ -20,8 +20,9 @@ constexpr double kRoundOffIncrement = 256.0 * std::numeric_limits<double>::epsil
 // Column names: the symbol of the unknown of each family, and of its residual.
 constexpr std::array<const char*, kDofFamilies> kIncrementRatio = {"|du|/|u|", "|dw|/|w|", "|dlm|/|lm|"};
 constexpr std::array<const char*, kDofFamilies> kIncrementAbsolute = {"|du|/n", "|dw|/n", "|dlm|/n"};
-constexpr std::array<const char*, kDofFamilies> kResidualRatio = {"|r_u|/|r_u0|", "|r_w|/|r_w0|", "|r_lm|/|r_lm0|"};
-constexpr std::array<const char*, kDofFamilies> kResidualAbsolute = {"|r_u|/n", "|r_w|/n", "|r_lm|/n"};
+constexpr std::array<const char*, kDofFamilies> kResidualRatio = {"|r_u|^2/|r_u0|^2", "|r_w|^2/|r_w0|^2",
+                                                                   "|r_lm|^2/|r_lm0|^2"};
+constexpr std::array<const char*, kDofFamilies> kResidualAbsolute = {"|r_u|^2/n", "|r_w|^2/n", "|r_lm|^2/n"};
 
 }  // namespace
 
@@ -70,7 +71,7 @@ bool BlockContactCriteria::PostCriteria(ModelPart& model_part, const DofsArray& 
                                    "active_check_factor) or set ensure_contact to false"));
       // No contact: nothing to converge in this family.
       r.ratio = 0.0;
-      r.absolute = s.count > 0 ? std::sqrt(block.measure == Measure::kIncrement ? s.increment : s.residual) /
+      r.absolute = s.count > 0 ? (block.measure == Measure::kIncrement ? std::sqrt(s.increment) : s.residual) /
                                      static_cast<double>(s.count)
                                : 0.0;
       r.converged = true;
@@ -82,7 +83,10 @@ bool BlockContactCriteria::PostCriteria(ModelPart& model_part, const DofsArray& 
       norm = std::sqrt(s.increment);
       reference = value_norm;
     } else {
-      norm = std::sqrt(s.residual);
+      // The residual tolerances of the contact criteria are defined on squared norms (Kratos
+      // compares sum r^2 / sum r0^2 and sum r^2 / n): a Kratos file's residual tolerances keep
+      // their meaning, and its cases stop at the same iteration.
+      norm = s.residual;
       if (!initial_residual_set_) initial_residual_[f] = norm;
       reference = initial_residual_[f];
     }

@@ -15,9 +15,11 @@ namespace mc {
 /// into families (displacement, rotation, Lagrange multiplier, see FamilyOf) and each family
 /// that is configured and present is measured on its own, by increment or by residual:
 ///
-///   increment:  ratio = |dx| / |x|      (x after the update; |x| taken as 1 when it is 0)
-///   residual:   ratio = |r| / |r_0|     (r_0: the residual at the first check of the step)
-///   absolute  = |.| / n                 (n: number of free DoFs of the family)
+///   increment:  ratio = |dx| / |x|        absolute = |dx| / n
+///   residual:   ratio = |r|^2 / |r_0|^2   absolute = |r|^2 / n
+/// (x after the update, |x| taken as 1 when it is 0; r_0 the residual at the first check of the
+/// step; n the number of free DoFs of the family). Residuals are squared as in Kratos, whose
+/// tolerance values the input files carry.
 ///
 /// A family converges when ratio <= relative tolerance or absolute <= absolute tolerance; the
 /// criterion converges when every family does. A multiplier family whose values are all zero

@@ -36,7 +36,7 @@ class ALMContactProcess(SearchBaseProcess):
     mortar_types = {"Frictionless": "ALMContactFrictionless",
                     "FrictionlessComponents": "ALMContactFrictionlessComponents",
                     "Frictional": "ALMContactFrictional", "FrictionalPureSlip": "ALMContactFrictionalPureSlip"}
-    implemented = ("Frictionless",)
+    implemented = ("Frictionless", "FrictionlessComponents")
     penalty_multiplier = 1.0
     penalty_floor = 1.0
 
@@ -63,6 +63,12 @@ class ALMContactProcess(SearchBaseProcess):
                 f"{self.python_module}: advance_ALM_parameters.adapt_penalty is not implemented yet")
 
     @property
+    def multiplier_variable(self):
+        """The multiplier of the contact type: a scalar pressure or a vector (components)."""
+        vector = self.contact_type != "Frictionless"
+        return _core.VECTOR_LAGRANGE_MULTIPLIER if vector else _core.LAGRANGE_MULTIPLIER_CONTACT_PRESSURE
+
+    @property
     def mortar_type(self) -> str:
         return self.mortar_types[self.contact_type]
 
@@ -78,8 +84,8 @@ class ALMContactProcess(SearchBaseProcess):
         expected = self.mortar_type
         if not has(_core.WEIGHTED_GAP):
             problem = "adds no contact variables (mortar_type empty?)"
-        elif self.method == "ALM" and not has(_core.LAGRANGE_MULTIPLIER_CONTACT_PRESSURE):
-            problem = "has no LAGRANGE_MULTIPLIER_CONTACT_PRESSURE (mortar_type of another family?)"
+        elif self.method == "ALM" and not has(self.multiplier_variable):
+            problem = f"has no {self.multiplier_variable.Name()} (mortar_type of another family?)"
         elif self.method == "Penalty" and has(_core.LAGRANGE_MULTIPLIER_CONTACT_PRESSURE):
             problem = "has LAGRANGE_MULTIPLIER_CONTACT_PRESSURE (an ALM mortar_type?)"
         else:

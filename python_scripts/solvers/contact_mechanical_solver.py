@@ -11,6 +11,9 @@ from .mechanical_solver import MechanicalSolver
 MORTAR_TYPES = {
     "ALMContactFrictionless": (["LAGRANGE_MULTIPLIER_CONTACT_PRESSURE", "WEIGHTED_GAP", "WEIGHTED_SCALAR_RESIDUAL"],
                                [("LAGRANGE_MULTIPLIER_CONTACT_PRESSURE", "WEIGHTED_SCALAR_RESIDUAL")]),
+    "ALMContactFrictionlessComponents": (
+        ["VECTOR_LAGRANGE_MULTIPLIER", "WEIGHTED_GAP", "WEIGHTED_VECTOR_RESIDUAL"],
+        [(f"VECTOR_LAGRANGE_MULTIPLIER_{c}", f"WEIGHTED_VECTOR_RESIDUAL_{c}") for c in "XYZ"]),
     "PenaltyContactFrictionless": (["WEIGHTED_GAP"], []),
 }
 KNOWN_MORTAR_TYPES = ("ALMContactFrictionless", "ALMContactFrictionlessComponents", "ALMContactFrictional",
@@ -64,6 +67,7 @@ class ContactMechanicalSolver(MechanicalSolver):
             raise _core.NotImplementedFeatureError(
                 f"{s.Where()}: explicit contact solvers are not implemented yet")
         updater = _core.ContactMortarUpdater()
+        self.mortar_updater = updater  # its timings are read by the benchmarks
         criteria = create_contact_convergence_criteria(s, self.echo_level, updater)
         linear_solver = _core.CreateLinearSolver(s["linear_solver_settings"])
         initialize, finalize = self.sub_step_callbacks

@@ -5,8 +5,7 @@ import os
 
 import pytest
 
-SHARED_CASES = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", "..", "shared", "cases",
-                                            "kratos_csma"))
+from shared_cases import SHARED_CASES
 
 
 @pytest.fixture

@@ -14,54 +14,114 @@ import pytest
 
 import mortarcontact as mc
 from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
-from mortarcontact.processes.model_part_resolution import resolve_model_part
 from mortarcontact.project_parameters import read_project_parameters
+from shared_cases import (FRICTIONLESS_CASES, KRATOS_SNAPSHOTS, SHARED_CASES, check_blocks, reference_values,
+                          use_components)
 
-# (case, strict relative tolerance against the reference). The tri-on-quad case agrees with Kratos
-# to 4e-3 only (noted on issue 3); it still passes its own Kratos check.
-CASES = [
-    ("ALM_frictionless_contact_test_2D/hyper_simple_patch_test", 1e-3),
-    ("ALM_frictionless_contact_test_2D/hyper_simple_slope_patch_test", 1e-3),
-    ("ALM_frictionless_contact_test_3D/3D_contact_simplest_patch_matching_triquad_test", 5e-3),
-]
+# Strict relative tolerance against the shared reference files, per case. Kratos 10.4 itself no
+# longer reproduces some of them (benchmarks/kratos_cases/snapshot_kratos.py): the slope patch
+# reference is 9e-4 from the exact -0.15 / -0.05 that both Kratos 10.4 and we compute, and the
+# tri-on-quad reference is 3.7e-3 from us and 9.6e-3 from Kratos 10.4. The dynamic Taylor patch
+# reference differs from Kratos 10.4 by up to 60 % and is compared with Kratos 10.4 only.
+SHARED_TOLERANCE = {
+    "hyper_simple_patch_test": 1e-3,
+    "hyper_simple_slope_patch_test": 1e-3,
+    "hyper_simple_triangle_patch_test": 1e-3,
+    "3D_contact_simplest_patch_matching_triquad_test": 5e-3,
+}
+# Tolerance against Kratos 10.4.4 on the same files (tests/cases/kratos_10_4), relative to the
+# largest magnitude of each variable over the checked nodes. The tri-on-quad case differs by 7.6e-3:
+# Kratos 10.4's master normals there are tilted by 0.1 although the deformed master face is flat
+# to 3e-3, and its converged weighted gaps stay at 1e-6 (ours close to 1e-11); noted on issue 3.
+KRATOS_TOLERANCE = {
+    "hyper_simple_patch_test": 1e-9,
+    "hyper_simple_slope_patch_test": 1e-9,
+    "hyper_simple_triangle_patch_test": 1e-9,
+    "3D_contact_simplest_patch_matching_triquad_test": 1e-2,
+    "taylor_patch_dynamic_test": 1e-3,
+}
+RUNS = [(case, formulation) for case, formulations in FRICTIONLESS_CASES for formulation in formulations]
 
 
-def run_shared_case(case_dir: str, case: str):
-    params = read_project_parameters(os.path.join(case_dir, f"{case}_parameters.json"))
-    analysis = StructuralMechanicsAnalysis(mc.Model(), params, progress=False)
+class SnapshotAnalysis(StructuralMechanicsAnalysis):
+    """Keeps the requested nodal values at one time (the reference's check time)."""
+
+    def __init__(self, model, params, time, nodes):
+        super().__init__(model, params, progress=False)
+        self.snapshot_time, self.snapshot_nodes, self.snapshot = time, nodes, {}
+
+    def FinalizeSolutionStep(self):
+        super().FinalizeSolutionStep()
+        part = self.model[self.parameters["solver_settings"]["model_part_name"].GetString()]
+        time = part.ProcessInfo.GetValue(mc.GetVariable("TIME"))
+        if abs(time - self.snapshot_time) > 1e-9 * max(1.0, abs(time)):
+            return
+        for key, names in self.snapshot_nodes.items():
+            node = part.GetNode(int(key[len("NODE_"):]))
+            self.snapshot[key] = {
+                name: node.GetValue(mc.GetVariable(name)) if name in NON_HISTORICAL
+                else node.GetSolutionStepValue(mc.GetVariable(name)) for name in names}
+
+
+NON_HISTORICAL = {"AUGMENTED_NORMAL_CONTACT_PRESSURE"}
+
+
+def run_shared_case(case: str, formulation: str = "scalar"):
+    params = read_project_parameters(os.path.join(SHARED_CASES, f"{case}_parameters.json"))
+    if formulation == "components":
+        use_components(params)
+    time, nodes = reference_values(case)
+    analysis = SnapshotAnalysis(mc.Model(), params, time, nodes)
     analysis.Run()  # the case's own json checks raise on failure
+    assert analysis.snapshot, f"{case}: the check time {time} was never reached"
     return analysis, params
 
 
-@pytest.mark.parametrize("case,tolerance", CASES, ids=[c for c, _ in CASES])
-def test_frictionless_case_matches_reference(shared_cases, monkeypatch, case, tolerance):
+def worst_difference(values: dict, expected: dict) -> float:
+    """max |value - expected| / max |expected| per variable, over the nodes; the worst variable."""
+    worst = 0.0
+    for name in {n for node in expected.values() for n in node}:
+        pairs = [(values[key][name], node[name]) for key, node in expected.items() if name in node]
+        scale = max(abs(e) for _, e in pairs) or 1.0
+        worst = max(worst, max(abs(v - e) for v, e in pairs) / scale)
+    return worst
+
+
+@pytest.mark.parametrize("case,formulation", RUNS, ids=[f"{os.path.basename(c)}-{f}" for c, f in RUNS])
+def test_frictionless_case(shared_cases, monkeypatch, case, formulation):
+    """Runs unchanged (its own Kratos checks pass), in no more Newton iterations than Kratos 10.4;
+    matches the shared reference to the strict tolerance and Kratos 10.4 on the same run."""
     monkeypatch.chdir(shared_cases)
-    analysis, params = run_shared_case(shared_cases, case)
-    max_iteration = params["solver_settings"]["max_iteration"].GetInt()
+    analysis, params = run_shared_case(case, formulation)
+    name = os.path.basename(case)
     iterations = [it for _, _, it, _, _ in analysis.step_log]
-    print(f"{case}: Newton iterations per step {iterations}")
     assert all(converged for _, _, _, converged, _ in analysis.step_log)
-    assert max(iterations) <= max_iteration
-    checks = params["processes"]["json_check_process"]
-    compared = 0
-    for i in range(checks.size()):
-        settings = checks[i]["Parameters"]
-        with open(settings["input_file_name"].GetString()) as f:
-            reference = json.load(f)
-        part = resolve_model_part(analysis.model, settings["model_part_name"].GetString())
-        historical = not settings.Has("historical_value") or settings["historical_value"].GetBool()
-        for node in part.Nodes:
-            key = f"NODE_{node.Id}"
-            if key not in reference:
-                continue
-            for name in settings["check_variables"].GetStringArray():
-                variable = mc.GetVariable(name)
-                value = node.GetSolutionStepValue(variable) if historical else node.GetValue(variable)
-                expected = reference[key][name][-1]
-                assert value == pytest.approx(expected, rel=tolerance, abs=1e-9 * max(1.0, abs(expected))), \
-                    f"{case}: {key} {name}"
-                compared += 1
-    assert compared >= 4
+    assert max(iterations) <= params["solver_settings"]["max_iteration"].GetInt()
+
+    if name in SHARED_TOLERANCE:
+        compared = 0
+        for input_file, _, variables, _ in check_blocks(case):
+            with open(input_file) as f:
+                reference = json.load(f)
+            for key, node in analysis.snapshot.items():
+                for variable in variables:
+                    if key not in reference or variable not in reference[key]:
+                        continue
+                    expected = reference[key][variable][-1]
+                    assert node[variable] == pytest.approx(expected, rel=SHARED_TOLERANCE[name],
+                                                           abs=1e-9 * max(1.0, abs(expected))), f"{key} {variable}"
+                    compared += 1
+        assert compared >= 4
+
+    with open(os.path.join(KRATOS_SNAPSHOTS, f"{name}_{formulation}.json")) as f:
+        kratos = json.load(f)
+    assert kratos["time"] == pytest.approx(analysis.snapshot_time)
+    difference = worst_difference(analysis.snapshot, kratos["nodes"])
+    print(f"{name} ({formulation}): {sum(iterations)} Newton iterations in {len(iterations)} steps "
+          f"(Kratos 10.4: {sum(kratos['newton_iterations'])}), difference to Kratos 10.4: {difference:.1e}")
+    assert difference <= KRATOS_TOLERANCE[name]
+    assert len(iterations) == len(kratos["newton_iterations"])
+    assert sum(iterations) <= sum(kratos["newton_iterations"])
 
 
 @pytest.mark.skipif(importlib.util.find_spec("gmsh") is None, reason="gmsh is not installed")
@@ -85,16 +145,6 @@ def test_hertz_2d_cylinder_matches_theory(tmp_path):
     assert abs(result["peak_pressure_error"]) < 0.03
     assert abs(result["half_width_fit_error"]) < 0.05
     assert math.isclose(result["force_from_pressure"], result["force"], rel_tol=0.03)
-
-
-def test_dynamic_taylor_patch_passes_its_own_check(shared_cases, monkeypatch):
-    """182 Bossak steps with Rayleigh damping and contact; the case's from_json_check_result_process
-    (Kratos' tolerances) runs at t = 15. Our values agree with the reference to ~1e-4 absolute
-    (relative differences up to 10 % on the small horizontal displacements; noted on issue 3)."""
-    monkeypatch.chdir(shared_cases)
-    analysis, _ = run_shared_case(shared_cases, "ALM_frictionless_contact_test_2D/taylor_patch_dynamic_test")
-    assert len(analysis.step_log) == 182
-    assert all(converged for _, _, _, converged, _ in analysis.step_log)
 
 
 def test_penalty_3d_patch_closes_the_gap(shared_cases, monkeypatch):

@@ -99,8 +99,7 @@ def test_mesh_tying_partial_search_parameters_come_from_the_base_defaults():
     assert MeshTyingProcess.GetDefaultParameters()["search_parameters"]["database_step_update"].GetInt() == 999999999
 
 
-@pytest.mark.parametrize("contact_type", ["Frictional", "FrictionalPureSlip", "FrictionalWithNormalUpdate",
-                                          "FrictionlessComponents"])
+@pytest.mark.parametrize("contact_type", ["Frictional", "FrictionalPureSlip", "FrictionalWithNormalUpdate"])
 def test_not_yet_implemented_contact_types(contact_type):
     with pytest.raises(mc.NotImplementedFeatureError, match=contact_type):
         ALMContactProcess(_core.Model(), _core.Parameters(json.dumps({"contact_type": contact_type})))

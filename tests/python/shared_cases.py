@@ -1,0 +1,55 @@
+"""The frictionless shared Kratos CSMA cases (../shared/cases/kratos_csma) and how to run them in
+either multiplier formulation; used by test_contact_cases.py and by
+benchmarks/kratos_cases/snapshot_kratos.py, which stores Kratos 10.4's values for the same runs."""
+from __future__ import annotations
+
+import json
+import os
+
+SHARED_CASES = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", "..", "shared", "cases",
+                                            "kratos_csma"))
+KRATOS_SNAPSHOTS = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "cases", "kratos_10_4"))
+
+#: case -> formulations Kratos' suite runs it with (the triangle patch fixes vector multiplier
+#: components, so it exists in the components formulation only)
+FRICTIONLESS_CASES = [
+    ("ALM_frictionless_contact_test_2D/hyper_simple_patch_test", ("scalar", "components")),
+    ("ALM_frictionless_contact_test_2D/hyper_simple_slope_patch_test", ("scalar", "components")),
+    ("ALM_frictionless_contact_test_2D/hyper_simple_triangle_patch_test", ("components",)),
+    ("ALM_frictionless_contact_test_3D/3D_contact_simplest_patch_matching_triquad_test", ("scalar", "components")),
+    ("ALM_frictionless_contact_test_2D/taylor_patch_dynamic_test", ("scalar", "components")),
+]
+
+
+def use_components(params) -> None:
+    """The switch of Kratos' components test classes: vector multiplier for every contact process."""
+    params["solver_settings"]["contact_settings"]["mortar_type"].SetString("ALMContactFrictionlessComponents")
+    processes = params["processes"]["contact_process_list"]
+    for i in range(processes.size()):
+        processes[i]["Parameters"]["contact_type"].SetString("FrictionlessComponents")
+
+
+def check_blocks(case: str):
+    """(input file, model part, variables, historical) of each json check of the case's parameters."""
+    with open(os.path.join(SHARED_CASES, f"{case}_parameters.json")) as f:
+        params = json.load(f)
+    blocks = []
+    for check in params["processes"].get("json_check_process", []):
+        settings = check["Parameters"]
+        blocks.append((settings["input_file_name"], settings["model_part_name"], settings["check_variables"],
+                       settings.get("historical_value", True)))
+    return blocks
+
+
+def reference_values(case: str):
+    """(last check time, {"NODE_<id>": [variables]}) over every reference file of the case."""
+    time, nodes = None, {}
+    for input_file, _, variables, _ in check_blocks(case):
+        with open(os.path.join(SHARED_CASES, input_file)) as f:
+            reference = json.load(f)
+        time = reference["TIME"][-1]
+        for key in reference:
+            if key.startswith("NODE_"):
+                nodes.setdefault(key, [])
+                nodes[key] += [v for v in variables if v in reference[key] and v not in nodes[key]]
+    return time, nodes
