@@ -7,8 +7,11 @@ A formulation describes, for one slave node j, the residual functional R_j of ea
   rhs        = dR_j/dw                  (w = test functions, in the DoF order)
   lhs (part) = -d rhs / d unknowns       (explicit dependence: the multipliers)
   cD, cM, cG = -d rhs / dD(j, :), -d rhs / dM(j, :), -d rhs / dg_j
+  cN         = -d rhs / dn_j             (explicit dependence on the slave nodal normal)
 and the C++ code contracts cD, cM, cG with the derivative arrays dD[q], dM[q],
-d_weighted_gap(j, q) of MortarPairKinematics (chain rule), so that lhs = -d rhs / d dofs exactly.
+d_weighted_gap(j, q) of MortarPairKinematics (chain rule), so that lhs = -d rhs / d dofs exactly
+at fixed normals. When asked (normal variation) it also adds cN and the same contraction over the
+normal indices q to the sensitivity S = -d rhs / d n, which the NV conditions chain with dn/du.
 """
 
 from __future__ import annotations
@@ -136,11 +139,12 @@ class Branch:
     cD: dict  # (row, b) -> expr          (= -d rhs/d D(j, b))
     cM: dict  # (row, l) -> expr          (= -d rhs/d M(j, l))
     cG: dict  # row -> expr               (= -d rhs/d g(j))
+    cN: dict  # (row, c) -> expr          (= -d rhs/d n1(j, c), explicit)
 
 
 def derive(sym: Symbols, j: int, functional, multipliers: bool) -> Branch:
     dofs = sym.dofs(multipliers)
-    rhs, explicit, cD, cM, cG = {}, {}, {}, {}, {}
+    rhs, explicit, cD, cM, cG, cN = {}, {}, {}, {}, {}, {}
     for row, (w, _) in enumerate(dofs):
         r = sympy.diff(functional, w)
         if r == 0:
@@ -161,12 +165,16 @@ def derive(sym: Symbols, j: int, functional, multipliers: bool) -> Branch:
         e = -sympy.diff(r, sym.g[j])
         if e != 0:
             cG[row] = e
-    return Branch(rhs, explicit, cD, cM, cG)
+        for c in range(sym.case.dim):
+            e = -sympy.diff(r, sym.n1[j][c])
+            if e != 0:
+                cN[(row, c)] = e
+    return Branch(rhs, explicit, cD, cM, cG, cN)
 
 
-def _cse_lines(exprs, indent: str):
+def _cse_lines(exprs, indent: str, prefix: str = "t"):
     """CSE of exprs; returns (lines of temporaries, reduced expressions)."""
-    replacements, reduced = sympy.cse(exprs, symbols=sympy.numbered_symbols("t"), optimizations="basic", order="canonical")
+    replacements, reduced = sympy.cse(exprs, symbols=sympy.numbered_symbols(prefix), optimizations="basic", order="canonical")
     lines = [f"{indent}const double {cxx(s)} = {cxx(e)};" for s, e in replacements]
     return lines, reduced
 
@@ -191,12 +199,28 @@ def emit_lhs_branch(branch: Branch, j: int, indent: str):
     red_d, reduced = reduced[: len(keys_d)], reduced[len(keys_d) :]
     red_m, red_g = reduced[: len(keys_m)], reduced[len(keys_m) :]
     lines += [f"{indent}lhs({r}, {c}) += {cxx(e)};" for (r, c), e in zip(keys_x, red_x)]
-    if keys_d or keys_m or keys_g:
-        lines += [f"{indent}cD.setZero();", f"{indent}cM.setZero();", f"{indent}cG.setZero();"]
+    chain = bool(keys_d or keys_m or keys_g)
+    zero = [f"{indent}cD.setZero();", f"{indent}cM.setZero();", f"{indent}cG.setZero();"]
+    if chain:
+        lines += zero
         lines += [f"{indent}cD({r}, {b}) = {cxx(e)};" for (r, b), e in zip(keys_d, red_d)]
         lines += [f"{indent}cM({r}, {l}) = {cxx(e)};" for (r, l), e in zip(keys_m, red_m)]
         lines += [f"{indent}cG({r}) = {cxx(e)};" for r, e in zip(keys_g, red_g)]
         lines.append(f"{indent}AddOperatorChainRule(kinematics, {j}, cD, cM, cG, lhs);")
+    keys_n = sorted(branch.cN)
+    if chain or keys_n:
+        # Normal variation only: the explicit normal partials get their own CSE (prefix s) so
+        # that the fixed-normal tangent pays nothing for them.
+        inner = indent + "  "
+        lines.append(f"{indent}if (normal_sensitivity) {{")
+        n_lines, red_n = _cse_lines([branch.cN[k] for k in keys_n], inner, "s")
+        lines += n_lines
+        if not chain:
+            lines += [inner + line.strip() for line in zero]
+        lines.append(f"{inner}cN.setZero();")
+        lines += [f"{inner}cN({r}, {c}) = {cxx(e)};" for (r, c), e in zip(keys_n, red_n)]
+        lines.append(f"{inner}AddNormalChainRule(kinematics, {j}, cD, cM, cG, cN, *normal_sensitivity);")
+        lines.append(f"{indent}}}")
     return lines
 
 

@@ -91,7 +91,7 @@ def translation_unit(folder: str, f, case: codegen.Case) -> str:
 
     rhs_body = node_branches(f, sym, case, lambda b, j: codegen.emit_rhs_branch(b, "    "))
     lhs_body = node_branches(f, sym, case, lambda b, j: codegen.emit_lhs_branch(b, j, "    "))
-    uses_chain = any("AddOperatorChainRule" in line for line in lhs_body)
+    uses_chain = any("ChainRule(kinematics" in line for line in lhs_body)
 
     out = [
         "// SPDX-License-Identifier: BSD-3-Clause",
@@ -106,13 +106,16 @@ def translation_unit(folder: str, f, case: codegen.Case) -> str:
     ]
     out += preamble(codegen.used_names(rhs_body), f, False)
     out += rhs_body
-    out += ["}", "", f"void {f.FUNCTION}LHS(const {data_type}& data, Matrix& lhs) {{"]
+    out += ["}", "", f"void {f.FUNCTION}LHS(const {data_type}& data, Matrix& lhs, Matrix* normal_sensitivity) {{"]
     out.append(f"  assert(lhs.rows() == {size} && lhs.cols() == {size});")
+    out.append(f"  assert(!normal_sensitivity || (normal_sensitivity->rows() == {size} && "
+               f"normal_sensitivity->cols() == {case.dim * case.slave}));")
     out += preamble(codegen.used_names(lhs_body), f, uses_chain)
     if uses_chain:
         out.append(f"  Eigen::Matrix<double, {size}, {case.slave}> cD;")
         out.append(f"  Eigen::Matrix<double, {size}, {case.master}> cM;")
         out.append(f"  Eigen::Matrix<double, {size}, 1> cG;")
+        out.append(f"  Eigen::Matrix<double, {size}, {case.dim}> cN;")
     out += lhs_body
     out += ["}", "", "}  // namespace mc::generated", ""]
     return "\n".join(out)
@@ -123,8 +126,10 @@ def header(modules) -> str:
         "// SPDX-License-Identifier: BSD-3-Clause",
         codegen.STAMP.format(source="automatic_differentiation/codegen.py"),
         "// Local kernels of the frictionless mortar contact conditions, one overload per geometry case.",
-        "// RHS: adds the pair's residual (external-force sign) to rhs; LHS: adds -d rhs/d dofs to lhs.",
-        "// Both expect a zeroed, correctly sized argument (DoF order: master u, slave u, multipliers).",
+        "// RHS: adds the pair's residual (external-force sign) to rhs; LHS: adds -d rhs/d dofs to lhs at",
+        "// fixed slave normals and, given normal_sensitivity, -d rhs/d n (columns: slave node-major",
+        "// normal components) to it. All expect zeroed, correctly sized arguments (DoF order: master u,",
+        "// slave u, multipliers).",
         "#pragma once",
         "",
         "#include <cassert>",
@@ -138,7 +143,7 @@ def header(modules) -> str:
         for case in codegen.CASES:
             data_type = f"FrictionlessMortarData<{case.dim}, {case.slave}, {case.master}>"
             out.append(f"void {f.FUNCTION}RHS(const {data_type}& data, Vector& rhs);")
-            out.append(f"void {f.FUNCTION}LHS(const {data_type}& data, Matrix& lhs);")
+            out.append(f"void {f.FUNCTION}LHS(const {data_type}& data, Matrix& lhs, Matrix* normal_sensitivity = nullptr);")
         out.append("")
     out += ["}  // namespace mc::generated", ""]
     return "\n".join(out)

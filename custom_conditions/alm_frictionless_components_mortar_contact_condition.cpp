@@ -42,8 +42,8 @@ void ALMFrictionlessComponentsMortarContactCondition<TDim, TNumNodes, TNumNodesM
 }
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
-void ALMFrictionlessComponentsMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::AddLHS(const Data& data, Matrix& lhs) const {
-  generated::ALMFrictionlessComponentsLHS(data, lhs);
+void ALMFrictionlessComponentsMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::AddLHS(const Data& data, Matrix& lhs, Matrix* normal_sensitivity) const {
+  generated::ALMFrictionlessComponentsLHS(data, lhs, normal_sensitivity);
 }
 
 template class ALMFrictionlessComponentsMortarContactCondition<2, 2, 2>;

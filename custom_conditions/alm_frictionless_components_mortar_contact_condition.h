@@ -34,7 +34,7 @@ class ALMFrictionlessComponentsMortarContactCondition : public MortarContactCond
   const Variable<double>& MultiplierVariable(int c) const override;
   void GatherMultipliers(Data& data) const override;
   void AddRHS(const Data& data, Vector& rhs) const override;
-  void AddLHS(const Data& data, Matrix& lhs) const override;
+  void AddLHS(const Data& data, Matrix& lhs, Matrix* normal_sensitivity) const override;
 };
 
 extern template class ALMFrictionlessComponentsMortarContactCondition<2, 2, 2>;

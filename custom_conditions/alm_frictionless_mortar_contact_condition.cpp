@@ -39,8 +39,8 @@ void ALMFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::Ad
 }
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
-void ALMFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::AddLHS(const Data& data, Matrix& lhs) const {
-  generated::ALMFrictionlessLHS(data, lhs);
+void ALMFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::AddLHS(const Data& data, Matrix& lhs, Matrix* normal_sensitivity) const {
+  generated::ALMFrictionlessLHS(data, lhs, normal_sensitivity);
 }
 
 template class ALMFrictionlessMortarContactCondition<2, 2, 2>;

@@ -39,4 +39,22 @@ void AddOperatorChainRule(const TKinematics& kinematics, int j, const TCD& cD, c
   }
 }
 
+/// The same contraction over the slave-normal indices, plus the explicit normal partials cN of
+/// branch j, for the normal variation: with p = (i, c) the slave normal component (node-major)
+/// and q = SlaveNormalIndex(i, c),
+///   S(r, p) += sum_b cD(r, b) dD[q](j, b) + sum_l cM(r, l) dM[q](j, l) + cG(r) dg_j/dq
+///              + [i == j] cN(r, c),
+/// so that S = -d rhs / d n in total; the NV conditions chain it with dn/du.
+template <class TKinematics, class TCD, class TCM, class TCG, class TCN>
+void AddNormalChainRule(const TKinematics& kinematics, int j, const TCD& cD, const TCM& cM, const TCG& cG,
+                        const TCN& cN, Matrix& sensitivity) {
+  for (int p = 0; p < TKinematics::kNumSlaveDofs; ++p) {
+    const int q = TKinematics::kNumDisplacementDofs + p;
+    const auto dD = kinematics.dD[q].row(j).transpose();
+    const auto dM = kinematics.dM[q].row(j).transpose();
+    sensitivity.col(p).noalias() += cD * dD + cM * dM + cG * kinematics.d_weighted_gap(j, q);
+  }
+  sensitivity.middleCols(j * TKinematics::kDim, TKinematics::kDim) += cN;
+}
+
 }  // namespace mc

@@ -2,6 +2,7 @@
 #include "custom_conditions/mortar_contact_condition.h"
 
 #include <atomic>
+#include <cassert>
 
 #include "core/utilities/error.h"
 #include "core/variables/kernel_variables.h"
@@ -86,6 +87,7 @@ MortarIntegrationSettings MortarContactCondition<TDim, TNumNodes, TNumNodesMaste
     if (properties.Has(CONSIDER_TESSELLATION)) settings.consider_tessellation = properties.GetValue(CONSIDER_TESSELLATION);
   }
   if (info.Has(ZERO_TOLERANCE_FACTOR)) settings.zero_tolerance_factor = info.GetValue(ZERO_TOLERANCE_FACTOR);
+  settings.axisymmetric = IsAxisymmetric();
   return settings;
 }
 
@@ -93,12 +95,18 @@ template <int TDim, int TNumNodes, int TNumNodesMaster>
 void MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::GatherKinematicsInput(
     typename Kinematics::SlaveMatrix& x1, typename Kinematics::MasterMatrix& x2,
     typename Kinematics::SlaveMatrix& n1) const {
+  GatherCoordinates(x1, x2);
+  const Geometry& slave = GetGeometry();
+  for (int i = 0; i < TNumNodes; ++i)
+    n1.row(i) = NormalCalculationUtilities::GetNodalNormal(slave[i]).template head<TDim>().transpose();
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+void MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::GatherCoordinates(
+    typename Kinematics::SlaveMatrix& x1, typename Kinematics::MasterMatrix& x2) const {
   const Geometry& slave = GetGeometry();
   const Geometry& master = GetPairedGeometry();
-  for (int i = 0; i < TNumNodes; ++i) {
-    x1.row(i) = slave[i].Coordinates().template head<TDim>().transpose();
-    n1.row(i) = NormalCalculationUtilities::GetNodalNormal(slave[i]).template head<TDim>().transpose();
-  }
+  for (int i = 0; i < TNumNodes; ++i) x1.row(i) = slave[i].Coordinates().template head<TDim>().transpose();
   for (int l = 0; l < TNumNodesMaster; ++l) x2.row(l) = master[l].Coordinates().template head<TDim>().transpose();
 }
 
@@ -125,14 +133,26 @@ void MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::FillData(Data& da
 template <int TDim, int TNumNodes, int TNumNodesMaster>
 void MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::CalculateAll(Matrix* lhs, Vector* rhs,
                                                                             const ProcessInfo& info) {
-  const int size = LocalSize();
-  if (lhs) lhs->setZero(size, size);
-  if (rhs) rhs->setZero(size);
-
-  Kinematics& kinematics = ThreadKinematics<Kinematics>();
   typename Kinematics::SlaveMatrix x1, n1;
   typename Kinematics::MasterMatrix x2;
   GatherKinematicsInput(x1, x2, n1);
+  CalculatePairSystem(lhs, rhs, info, n1, nullptr);
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+void MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::CalculatePairSystem(
+    Matrix* lhs, Vector* rhs, const ProcessInfo& info, const typename Kinematics::SlaveMatrix& n1,
+    Matrix* normal_sensitivity) {
+  assert(!normal_sensitivity || lhs);
+  const int size = LocalSize();
+  if (lhs) lhs->setZero(size, size);
+  if (rhs) rhs->setZero(size);
+  if (normal_sensitivity) normal_sensitivity->setZero(size, TDim * TNumNodes);
+
+  Kinematics& kinematics = ThreadKinematics<Kinematics>();
+  typename Kinematics::SlaveMatrix x1;
+  typename Kinematics::MasterMatrix x2;
+  GatherCoordinates(x1, x2);
   const MortarIntegrationSettings settings = IntegrationSettings(info);
   // A pair that does not touch still owns the multipliers of its slave nodes. With every mortar
   // quantity zero the kernels add only the inactive rows (lambda = 0), which keeps the system
@@ -148,7 +168,7 @@ void MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::CalculateAll(Matr
   data.kinematics = &kinematics;
   FillData(data, info);
   if (rhs) AddRHS(data, *rhs);
-  if (lhs) AddLHS(data, *lhs);
+  if (lhs) AddLHS(data, *lhs, normal_sensitivity);
 }
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>

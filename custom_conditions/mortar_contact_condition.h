@@ -63,15 +63,26 @@ class MortarContactCondition : public PairedCondition {
   virtual const Variable<double>& MultiplierVariable(int c) const;
   /// Reads the formulation's nodal multipliers into data.
   virtual void GatherMultipliers(Data& data) const {}
-  /// The generated kernels; rhs / lhs are sized and zeroed.
+  /// The generated kernels; rhs / lhs are sized and zeroed. Given normal_sensitivity (sized
+  /// LocalSize() x TDim * TNumNodes, zeroed), AddLHS also adds -d rhs / d n to it (slave normal
+  /// components, node-major), for the normal variation.
   virtual void AddRHS(const Data& data, Vector& rhs) const = 0;
-  virtual void AddLHS(const Data& data, Matrix& lhs) const = 0;
+  virtual void AddLHS(const Data& data, Matrix& lhs, Matrix* normal_sensitivity) const = 0;
 
-  /// Integration settings of the pair (properties and ProcessInfo).
+  /// Whether the mortar integrals are weighted by 2 pi r (axisymmetric variants).
+  virtual bool IsAxisymmetric() const { return false; }
+  /// Integration settings of the pair (properties, ProcessInfo, IsAxisymmetric()).
   MortarIntegrationSettings IntegrationSettings(const ProcessInfo& info) const;
+  /// Current slave / master coordinates.
+  void GatherCoordinates(typename Kinematics::SlaveMatrix& x1, typename Kinematics::MasterMatrix& x2) const;
   /// Current slave / master coordinates and slave nodal normals.
   void GatherKinematicsInput(typename Kinematics::SlaveMatrix& x1, typename Kinematics::MasterMatrix& x2,
                              typename Kinematics::SlaveMatrix& n1) const;
+  /// The pair's local system (LocalSize()) at the current coordinates and the given slave
+  /// normals n1; with normal_sensitivity (needs lhs) also S = -d rhs / d n1 (LocalSize() x
+  /// TDim * TNumNodes). Null outputs are skipped.
+  void CalculatePairSystem(Matrix* lhs, Vector* rhs, const ProcessInfo& info,
+                           const typename Kinematics::SlaveMatrix& n1, Matrix* normal_sensitivity);
 
  private:
   void CalculateAll(Matrix* lhs, Vector* rhs, const ProcessInfo& info);

@@ -8,6 +8,8 @@
 
 namespace mc {
 
+class NodalNormalSupport;
+
 /// Base of every mortar pair condition (contact, mesh tying): a condition on the nodes of one
 /// slave interface condition that also knows the master interface condition it is paired with.
 /// Its own geometry is the slave geometry; the master geometry is a copy of the master
@@ -41,6 +43,12 @@ class PairedCondition : public Condition {
   /// Explicit (RHS-only) update of nodal mortar quantities, e.g. the contact conditions add
   /// their weighted gap to WEIGHTED_GAP. Thread-safe across pairs; default: nothing.
   virtual void AddExplicitContribution(const ProcessInfo& info) {}
+
+  /// Pairs whose tangent includes the variation of the slave nodal normals (the NV names) need
+  /// the interface faces around their slave nodes: the contact search builds one
+  /// NodalNormalSupport per search and hands it to every pair that asks. Default: not needed.
+  virtual bool NeedsNodalNormalSupport() const { return false; }
+  virtual void SetNodalNormalSupport(std::shared_ptr<const NodalNormalSupport> support) {}
 
  private:
   Geometry paired_geometry_;

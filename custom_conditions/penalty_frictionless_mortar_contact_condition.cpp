@@ -27,8 +27,8 @@ void PenaltyFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>
 }
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
-void PenaltyFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::AddLHS(const Data& data, Matrix& lhs) const {
-  generated::PenaltyFrictionlessLHS(data, lhs);
+void PenaltyFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::AddLHS(const Data& data, Matrix& lhs, Matrix* normal_sensitivity) const {
+  generated::PenaltyFrictionlessLHS(data, lhs, normal_sensitivity);
 }
 
 template class PenaltyFrictionlessMortarContactCondition<2, 2, 2>;

@@ -29,7 +29,7 @@ class PenaltyFrictionlessMortarContactCondition : public MortarContactCondition<
   const char* Stem() const override { return "PenaltyFrictionlessMortarContactCondition"; }
   int MultiplierComponents() const override { return 0; }
   void AddRHS(const Data& data, Vector& rhs) const override;
-  void AddLHS(const Data& data, Matrix& lhs) const override;
+  void AddLHS(const Data& data, Matrix& lhs, Matrix* normal_sensitivity) const override;
 };
 
 extern template class PenaltyFrictionlessMortarContactCondition<2, 2, 2>;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <set>
 #include <numeric>
@@ -22,6 +23,7 @@
 #include "custom_utilities/contact_search_geometry.h"
 #include "custom_utilities/contact_search_tree.h"
 #include "custom_utilities/contact_variables.h"
+#include "custom_utilities/nodal_normal_support.h"
 #include "custom_utilities/normal_calculation_utilities.h"
 
 namespace mc {
@@ -394,11 +396,20 @@ ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
   if (root_.NumberOfConditions() > 0) next_id = root_.Conditions()[root_.NumberOfConditions() - 1]->Id() + 1;
   const int property_id = settings_["contact_property_id"].GetInt();
   Properties* pair_properties = property_id > 0 ? &root_.GetProperties(property_id) : nullptr;
+  // NV pairs: the faces around each slave node, from the part whose nodal NORMAL the mortar
+  // updater refreshes ("Contact"), built once per search and shared.
+  std::shared_ptr<const NodalNormalSupport> normal_support;
   for (const auto& [slave, master] : pairs) {
     const std::string* name = nullptr;
     const PairedCondition& prototype = Prototype(slave->GetGeometry(), master->GetGeometry(), &name);
     Properties* properties = pair_properties ? pair_properties : slave->pGetProperties();
     std::unique_ptr<PairedCondition> pair = prototype.CreatePaired(next_id++, *slave, *master, properties);
+    if (pair->NeedsNodalNormalSupport()) {
+      if (!normal_support)
+        normal_support = std::make_shared<const NodalNormalSupport>(
+            root_.HasSubModelPart("Contact") ? root_.GetSubModelPart("Contact") : interface_);
+      pair->SetNodalNormalSupport(normal_support);
+    }
     pair->SetRegisteredName(name);
     pair->Set(SLAVE, true);
     computing_.AddCondition(std::unique_ptr<Condition>(std::move(pair)));
@@ -418,6 +429,8 @@ ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
         "(or check assume_master_slave and the distance between the surfaces)"));
   }
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  total_seconds_ += stats.seconds;
+  ++searches_;
   return stats;
 }
 

@@ -77,6 +77,10 @@ class ContactSearchProcess {
   const std::string& SearchType() const noexcept { return type_search_; }
   const std::string& CheckGap() const noexcept { return check_gap_; }
 
+  /// Wall-clock seconds of every UpdateMortarConditions so far, and how many ran (benchmarks).
+  double TotalSeconds() const noexcept { return total_seconds_; }
+  std::size_t NumberOfSearches() const noexcept { return searches_; }
+
  private:
   struct Candidate;
   void AssignAutomaticRoles(const std::vector<Condition*>& conditions,
@@ -93,6 +97,8 @@ class ContactSearchProcess {
   std::string check_gap_;
   bool roles_assigned_ = false;
   bool active_set_predicted_ = false;  ///< the first search predicts ACTIVE; later ones leave it alone
+  double total_seconds_ = 0.0;
+  std::size_t searches_ = 0;
 };
 
 }  // namespace mc

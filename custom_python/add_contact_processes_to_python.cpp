@@ -62,7 +62,9 @@ void AddContactProcessesToPython(py::module_& m) {
       .def("InterfacePart", &ContactSearchProcess::InterfacePart, py::return_value_policy::reference)
       .def("ComputingPart", &ContactSearchProcess::ComputingPart, py::return_value_policy::reference)
       .def("SearchType", &ContactSearchProcess::SearchType)
-      .def("CheckGap", &ContactSearchProcess::CheckGap);
+      .def("CheckGap", &ContactSearchProcess::CheckGap)
+      .def("TotalSeconds", &ContactSearchProcess::TotalSeconds, "Wall-clock seconds of all searches so far.")
+      .def("NumberOfSearches", &ContactSearchProcess::NumberOfSearches);
 
   py::class_<ALMVariablesCalculationProcess>(m, "ALMVariablesCalculationProcess",
                                              "Automatic ALM penalty and scale factor (thesis eq. 4.11).")

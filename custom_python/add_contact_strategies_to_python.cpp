@@ -100,7 +100,19 @@ void AddContactStrategiesToPython(py::module_& m) {
   py::class_<ContactMortarUpdater, MortarUpdater, std::shared_ptr<ContactMortarUpdater>>(
       m, "ContactMortarUpdater",
       "Normals of the Contact interface and weighted gap of the ComputingContact pair conditions.")
-      .def(py::init<>());
+      .def(py::init<>())
+      .def(
+          "GetTimings",
+          [](const ContactMortarUpdater& self) {
+            const auto& t = self.GetTimings();
+            py::dict timings;
+            timings["weighted_gap"] = t.weighted_gap;
+            timings["normals"] = t.normals;
+            timings["weighted_gap_calls"] = t.weighted_gap_calls;
+            timings["normals_calls"] = t.normals_calls;
+            return timings;
+          },
+          "Cumulative wall-clock seconds and calls of ComputeWeightedGap and UpdateNormals.");
 
   py::class_<BlockContactCriteria, ConvergenceCriteria, std::shared_ptr<BlockContactCriteria>>(
       m, "BlockContactCriteria", "Contact criteria measuring displacements, rotations and multipliers separately.")

@@ -58,7 +58,9 @@ void AddSolvingToPython(py::module_& m) {
       .def_readonly("dof_setup", &BuilderAndSolver::Timings::dof_setup)
       .def_readonly("sparsity", &BuilderAndSolver::Timings::sparsity)
       .def_readonly("build", &BuilderAndSolver::Timings::build)
-      .def_readonly("solve", &BuilderAndSolver::Timings::solve);
+      .def_readonly("solve", &BuilderAndSolver::Timings::solve)
+      .def_readonly("elements", &BuilderAndSolver::Timings::elements)
+      .def_readonly("conditions", &BuilderAndSolver::Timings::conditions);
   py::class_<BuilderAndSolver, std::shared_ptr<BuilderAndSolver>>(m, "BuilderAndSolver")
       .def("Name", &BuilderAndSolver::Name)
       .def("NumberOfDofs", &BuilderAndSolver::NumberOfDofs)

@@ -18,6 +18,9 @@ struct MortarIntegrationSettings {
   double zero_tolerance_factor = 1.0;
   /// CONSIDER_TESSELLATION: Delaunay instead of a fan; not implemented (NotImplementedError).
   bool consider_tessellation = false;
+  /// 2D only, x = radius, y = axis: the mortar integrals are taken over the surface of
+  /// revolution, each weight times 2 pi r at the point (MortarPairKinematics applies it).
+  bool axisymmetric = false;
 };
 
 /// One mortar integration point of a (slave, master) pair.

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "custom_utilities/mortar_pair_kinematics.h"
 
+#include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "core/utilities/error.h"
 #include "custom_utilities/mortar_autodiff.h"
@@ -11,6 +13,26 @@ namespace mc {
 namespace {
 
 using mortar_detail::ValueOf;
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+/// A_e of a 2D slave line for the axisymmetric inner product int (.) 2 pi r ds.
+template <class T, int TNumNodes>
+Eigen::Matrix<T, TNumNodes, TNumNodes> AxisymmetricAe(const Eigen::Matrix<T, TNumNodes, 2>& x1) {
+  using SF1 = MortarShapeFunctions<TNumNodes>;
+  const T half_length = 0.5 * (x1.row(1) - x1.row(0)).norm();
+  Eigen::Matrix<T, TNumNodes, 1> d = Eigen::Matrix<T, TNumNodes, 1>::Zero();
+  Eigen::Matrix<T, TNumNodes, TNumNodes> m = Eigen::Matrix<T, TNumNodes, TNumNodes>::Zero();
+  for (const double xi : {-1.0 / std::sqrt(3.0), 1.0 / std::sqrt(3.0)}) {
+    typename SF1::template Local<T> local;
+    local(0) = T(xi);
+    const Eigen::Matrix<T, TNumNodes, 1> n = SF1::template N<T>(local);
+    const T weight = half_length * kTwoPi * n.dot(x1.col(0));
+    d += weight * n;
+    m += weight * n * n.transpose();
+  }
+  return DualLagrangeMultiplier<2, TNumNodes>::template AeFromIntegrals<T>(d, m);
+}
 
 /// Values of the pair in scalar type T (double, or AutoDiff seeded by the caller).
 template <class T, int TDim, int TNumNodes, int TNumNodesMaster>
@@ -22,6 +44,20 @@ struct PairValues {
   Eigen::Matrix<T, TNumNodes, 1> weighted_gap;
 };
 
+/// D, M and the gaps once the points and A_e are known.
+template <class T, int TDim, int TNumNodes, int TNumNodesMaster>
+bool FinishPair(const Eigen::Matrix<T, TNumNodes, TDim>& x1, const Eigen::Matrix<T, TNumNodesMaster, TDim>& x2,
+                const Eigen::Matrix<T, TNumNodes, TDim>& n1, PairValues<T, TDim, TNumNodes, TNumNodesMaster>& out) {
+  if (!std::isfinite(ValueOf(out.ae(0, 0))))
+    throw Error(Concat("mortar integration: degenerate slave element (zero or negative measure), "
+                       "first node at (",
+                       ValueOf(x1(0, 0)), ", ", ValueOf(x1(0, 1)), ")"));
+  out.op.Compute(out.points, out.ae);
+  out.gap_vector = out.op.D * x1 - out.op.M * x2;
+  for (int j = 0; j < TNumNodes; ++j) out.weighted_gap(j) = -n1.row(j).dot(out.gap_vector.row(j));
+  return true;
+}
+
 template <class T, int TDim, int TNumNodes, int TNumNodesMaster>
 bool ComputePair(const Eigen::Matrix<T, TNumNodes, TDim>& x1,
                  const Eigen::Matrix<T, TNumNodesMaster, TDim>& x2,
@@ -32,6 +68,23 @@ bool ComputePair(const Eigen::Matrix<T, TNumNodes, TDim>& x1,
   using Dual = DualLagrangeMultiplier<TDim, TNumNodes>;
   using SF1 = MortarShapeFunctions<TNumNodes>;
   if (!Exact::template Compute<T>(x1, x2, n1, settings, out.points)) return false;
+  if constexpr (TDim == 2) {
+    if (settings.axisymmetric) {
+      for (int g = 0; g < out.points.size; ++g) {
+        auto& p = out.points.points[g];
+        p.weight *= kTwoPi * SF1::template N<T>(p.slave_local).dot(x1.col(0));
+      }
+      // The dual basis must be biorthogonal in the same (2 pi r weighted) inner product as D and
+      // M, or D would not be diagonal: A_e from r-weighted element integrals. N_i N_j r is cubic
+      // on the line, so 2-point Gauss is exact.
+      if (dual_basis == DualBasisDomain::kSlaveElement) {
+        out.ae = AxisymmetricAe<T, TNumNodes>(x1);
+        return FinishPair(x1, x2, n1, out);
+      }
+    }
+  } else if (settings.axisymmetric) {
+    throw Error("mortar integration: the axisymmetric formulation exists in 2D only");
+  }
 
   bool have_ae = false;
   if (dual_basis == DualBasisDomain::kPairOverlap) {
@@ -47,15 +100,7 @@ bool ComputePair(const Eigen::Matrix<T, TNumNodes, TDim>& x1,
     have_ae = std::isfinite(ValueOf(out.ae(0, 0)));
   }
   if (!have_ae) out.ae = Dual::template ComputeAe<T>(x1);
-  if (!std::isfinite(ValueOf(out.ae(0, 0))))
-    throw Error(Concat("mortar integration: degenerate slave element (zero or negative measure), "
-                       "first node at (",
-                       ValueOf(x1(0, 0)), ", ", ValueOf(x1(0, 1)), ")"));
-
-  out.op.Compute(out.points, out.ae);
-  out.gap_vector = out.op.D * x1 - out.op.M * x2;
-  for (int j = 0; j < TNumNodes; ++j) out.weighted_gap(j) = -n1.row(j).dot(out.gap_vector.row(j));
-  return true;
+  return FinishPair(x1, x2, n1, out);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include "core/geometries/reference_element.h"
 #include "core/variables/kernel_variables.h"
+#include "custom_utilities/nodal_normal_support.h"
 
 namespace mc {
 
@@ -27,7 +28,8 @@ void NormalCalculationUtilities::ComputeNodalNormals(ModelPart& part) {
   sums.reserve(part.NumberOfNodes());
   for (Condition* condition : part.Conditions()) {
     const Geometry& geometry = condition->GetGeometry();
-    const Array3 weighted = geometry.DomainSize() * condition->GetValue(NORMAL);
+    // The same area vector as NodalNormalSupport, whose derivatives the NV conditions use.
+    const Array3 weighted = NodalNormalSupport::AreaVector(geometry);
     for (Node* node : geometry.Nodes()) {
       auto [it, inserted] = sums.try_emplace(node, Array3::Zero());
       it->second += weighted;

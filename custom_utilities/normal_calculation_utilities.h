@@ -10,8 +10,10 @@ namespace mc {
 /// Condition normal: the unit normal at the condition's local centre (Geometry::UnitNormal, so a
 /// line in 2D uses the tangent rotated by -90 degrees and a face generated from an element
 /// points out of it). Nodal normal: the area-weighted average of the unit normals of the
-/// part's conditions that hold the node, n_i = normalise(sum_c |c| n_c), so a node on a kink
-/// gets the bisector weighted by the sizes of its faces.
+/// part's conditions that hold the node, n_i = normalise(sum_c a_c) with the area vector
+/// a_c = |c| n_c (NodalNormalSupport::AreaVector; for a bilinear quad the closed form
+/// (x2 - x0) x (x3 - x1) / 2), so a node on a kink gets the bisector weighted by the sizes of
+/// its faces, and NodalNormalSupport gives the exact derivatives of the same n_i.
 class NormalCalculationUtilities {
  public:
   /// Writes condition value NORMAL on every condition of `part` (lines in 2D, surfaces in 3D).

@@ -187,6 +187,9 @@ def summarize(records: list[dict], hertz: dict) -> dict:
         first = records[0] if records else {}
         return {"status": first.get("status", "failed"), "error": first.get("error", "")}
     last = ok[-1]
+    phases = None
+    if all(r.get("phases") for r in ok):
+        phases = {k: statistics.median(r["phases"][k] for r in ok) for k in ok[0]["phases"]}
     return {
         "status": "ok", "runs": len(ok),
         "analysis_seconds": statistics.median(r["analysis_seconds"] for r in ok),
@@ -197,6 +200,8 @@ def summarize(records: list[dict], hertz: dict) -> dict:
         "converged": all(s["converged"] is not False for s in last["steps"]),
         "step_seconds": [s["seconds"] for s in last["steps"]],
         "hertz": evaluate(last, hertz),
+        "phases": phases,
+        "blas": last.get("blas", []),
     }
 
 

@@ -3,6 +3,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "core/linear_solvers/sparse_types.h"
 #include "core/utilities/error.h"
@@ -10,6 +11,7 @@
 namespace mc {
 
 class Parameters;
+struct Dof;
 
 /// Raised by a direct solver whose factorization met a zero pivot; `Equation()` is the row or
 /// column of the system at fault (-1 if unknown), which the builder translates into the node
@@ -41,6 +43,11 @@ class LinearSolver {
   virtual void Clear() = 0;
   /// Iterations of the last solve (1 for direct solvers).
   virtual int IterationsNumber() const { return 1; }
+  /// Whether the solver needs the DoF of each row (e.g. to split the system into physical
+  /// blocks); the builder then calls ProvideAdditionalData before every Solve.
+  virtual bool AdditionalPhysicalDataIsNeeded() const { return false; }
+  /// `dof_of_equation[i]` is the DoF of row i of A (entries beyond A.rows() are not rows).
+  virtual void ProvideAdditionalData(const SparseMatrix& A, const std::vector<Dof*>& dof_of_equation) {}
 };
 
 /// Builds a solver from `linear_solver_settings` (Kratos names, normalised as in spec 7.1:

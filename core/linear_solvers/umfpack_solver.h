@@ -11,7 +11,7 @@ namespace mc {
 
 /// Sparse LU by UMFPACK (unsymmetric multifrontal), the default direct solver. `Initialize`
 /// runs the symbolic analysis (column ordering), which every later `Solve` on the same pattern
-/// reuses; `Solve` factorizes the current values and solves with iterative refinement.
+/// reuses; `Solve` factorizes the current values and solves (no iterative refinement).
 class UmfpackSolver : public LinearSolver {
  public:
   UmfpackSolver() = default;
@@ -47,6 +47,7 @@ class UmfpackSolver : public LinearSolver {
   std::vector<long> outer_;  ///< column pointers and row indices widened for umfpack_dl_*
   std::vector<long> inner_;
   int symbolic_count_ = 0;
+  double control_[20] = {};  ///< UMFPACK_CONTROL parameters, set by Initialize
 };
 
 }  // namespace mc

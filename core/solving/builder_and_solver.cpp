@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <map>
+#include <type_traits>
 
 #include "core/model/master_slave_constraint.h"
 #include "core/model/model_part.h"
@@ -232,7 +233,9 @@ void BuilderAndSolver::Assemble(Scheme& scheme, ModelPart& model_part, Mode mode
 
   // Elements and conditions keep separate per-thread buffers (one instantiation each): their
   // local systems usually differ in size and a shared buffer would be reallocated at each switch.
-  auto assemble = [&](auto& e) {
+  // Scatter adds are atomic only when threads share the loop: an atomic add of a double is a
+  // compare-and-swap loop, several times the cost of the plain add of a serial run.
+  auto assemble = [&](auto& e, auto concurrent) {
     if (!e.IsActive()) return;
     static thread_local Matrix local_lhs;
     static thread_local Vector local_rhs;
@@ -251,11 +254,16 @@ void BuilderAndSolver::Assemble(Scheme& scheme, ModelPart& model_part, Mode mode
       if (id < 0 || id >= n_all)
         throw Error(Concat(e.Info(), " ", e.Id(), " has a DoF outside the DoF set: call SetUpDofSet after "
                            "changing elements, conditions or their DoFs"));
-    if (rhs) {
-      for (Eigen::Index i = 0; i < n; ++i) {
+    auto add = [](double& target, double value) {
+      if constexpr (decltype(concurrent)::value) {
 #pragma omp atomic
-        b[ids[static_cast<std::size_t>(i)]] += local_rhs[i];
+        target += value;
+      } else {
+        target += value;
       }
+    };
+    if (rhs) {
+      for (Eigen::Index i = 0; i < n; ++i) add(b[ids[static_cast<std::size_t>(i)]], local_rhs[i]);
     }
     if (!lhs) return;
     for (Eigen::Index j = 0; j < n; ++j) {
@@ -268,13 +276,27 @@ void BuilderAndSolver::Assemble(Scheme& scheme, ModelPart& model_part, Mode mode
         if (I >= n_matrix) continue;
         const int* pos = std::lower_bound(first, last, static_cast<int>(I));
         assert(pos != last && *pos == I);
-#pragma omp atomic
-        values[pos - inner] += local_lhs(i, j);
+        add(values[pos - inner], local_lhs(i, j));
       }
     }
   };
-  ParallelForEachEntity(model_part.Elements(), [&](Element& e) { assemble(e); });
-  ParallelForEachEntity(model_part.Conditions(), [&](Condition& c) { assemble(c); });
+  // Mirrors the condition under which ParallelForEachEntity starts a thread team.
+  auto shared = [](const auto& items) {
+    return omp_get_max_threads() > 1 && static_cast<long>(items.size()) >= kMinParallelEntities;
+  };
+  auto assemble_all = [&](auto& items) {
+    using Item = std::remove_reference_t<decltype(*items[0])>;
+    if (shared(items))
+      ParallelForEachEntity(items, [&](Item& e) { assemble(e, std::true_type{}); });
+    else
+      ParallelForEachEntity(items, [&](Item& e) { assemble(e, std::false_type{}); });
+  };
+  {
+    ScopedTimer timer(timings_.elements);
+    assemble_all(model_part.Elements());
+  }
+  ScopedTimer timer(timings_.conditions);
+  assemble_all(model_part.Conditions());
 }
 
 void BuilderAndSolver::FinishResidual() {
@@ -396,6 +418,14 @@ void BuilderAndSolver::SolveSystem() {
     if (solver_pattern_version_ != pattern_version_) {
       linear_solver_->Initialize(A_);
       solver_pattern_version_ = pattern_version_;
+    }
+    if (linear_solver_->AdditionalPhysicalDataIsNeeded()) {
+      // Rows of the reduced system T^T K T mix the DoFs of a constraint: no row has one DoF.
+      if (!slave_of_.empty() || n_system_ != n_assembled_)
+        throw NotImplementedError(Concat("linear solver ", linear_solver_->Name(),
+                                         " with master-slave constraints: its system rows must map one-to-one to "
+                                         "DoFs (", slave_of_.size(), " constrained DoFs here)"));
+      linear_solver_->ProvideAdditionalData(A_, dofs_by_equation_);
     }
     x_system_.setZero(static_cast<Eigen::Index>(n_system_));
     try {

@@ -40,6 +40,8 @@ class BuilderAndSolver {
     double sparsity = 0.0;   ///< pattern (and constraint matrix) construction
     double build = 0.0;      ///< assembly, constraint reduction and Dirichlet conditions
     double solve = 0.0;      ///< linear solver (symbolic and numeric)
+    double elements = 0.0;   ///< part of `build`: the element loop of the assembly
+    double conditions = 0.0; ///< part of `build`: the condition loop (loads, contact pairs)
   };
 
   /// `linear_solver` may be null for builders that only assemble residuals (explicit).

@@ -56,8 +56,9 @@ void ALMFrictionlessRHS(const FrictionlessMortarData<2, 2, 2>& data, Vector& rhs
   }
 }
 
-void ALMFrictionlessLHS(const FrictionlessMortarData<2, 2, 2>& data, Matrix& lhs) {
+void ALMFrictionlessLHS(const FrictionlessMortarData<2, 2, 2>& data, Matrix& lhs, Matrix* normal_sensitivity) {
   assert(lhs.rows() == 10 && lhs.cols() == 10);
+  assert(!normal_sensitivity || (normal_sensitivity->rows() == 10 && normal_sensitivity->cols() == 4));
   const auto& kinematics = *data.kinematics;
   const auto& D = kinematics.D;
   const auto& M = kinematics.M;
@@ -70,6 +71,7 @@ void ALMFrictionlessLHS(const FrictionlessMortarData<2, 2, 2>& data, Matrix& lhs
   Eigen::Matrix<double, 10, 2> cD;
   Eigen::Matrix<double, 10, 2> cM;
   Eigen::Matrix<double, 10, 1> cG;
+  Eigen::Matrix<double, 10, 2> cN;
   // slave node 0
   if (data.active[0]) {
     const double t0 = df(0)*k;
@@ -116,6 +118,23 @@ void ALMFrictionlessLHS(const FrictionlessMortarData<2, 2, 2>& data, Matrix& lhs
     cG(7) = -n1(0, 1)*t14;
     cG(8) = -k;
     AddOperatorChainRule(kinematics, 0, cD, cM, cG, lhs);
+    if (normal_sensitivity) {
+      const double s0 = df(0)*(eps(0)*g(0) + k*lm(0));
+      const double s1 = M(0, 0)*s0;
+      const double s2 = M(0, 1)*s0;
+      const double s3 = -D(0, 0)*s0;
+      const double s4 = -D(0, 1)*s0;
+      cN.setZero();
+      cN(0, 0) = s1;
+      cN(1, 1) = s1;
+      cN(2, 0) = s2;
+      cN(3, 1) = s2;
+      cN(4, 0) = s3;
+      cN(5, 1) = s3;
+      cN(6, 0) = s4;
+      cN(7, 1) = s4;
+      AddNormalChainRule(kinematics, 0, cD, cM, cG, cN, *normal_sensitivity);
+    }
   } else {
     lhs(8, 8) += k*k/eps(0);
   }
@@ -165,6 +184,23 @@ void ALMFrictionlessLHS(const FrictionlessMortarData<2, 2, 2>& data, Matrix& lhs
     cG(7) = -n1(1, 1)*t14;
     cG(9) = -k;
     AddOperatorChainRule(kinematics, 1, cD, cM, cG, lhs);
+    if (normal_sensitivity) {
+      const double s0 = df(1)*(eps(1)*g(1) + k*lm(1));
+      const double s1 = M(1, 0)*s0;
+      const double s2 = M(1, 1)*s0;
+      const double s3 = -D(1, 0)*s0;
+      const double s4 = -D(1, 1)*s0;
+      cN.setZero();
+      cN(0, 0) = s1;
+      cN(1, 1) = s1;
+      cN(2, 0) = s2;
+      cN(3, 1) = s2;
+      cN(4, 0) = s3;
+      cN(5, 1) = s3;
+      cN(6, 0) = s4;
+      cN(7, 1) = s4;
+      AddNormalChainRule(kinematics, 1, cD, cM, cG, cN, *normal_sensitivity);
+    }
   } else {
     lhs(9, 9) += k*k/eps(1);
   }

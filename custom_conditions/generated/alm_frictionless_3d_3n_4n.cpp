@@ -123,8 +123,9 @@ void ALMFrictionlessRHS(const FrictionlessMortarData<3, 3, 4>& data, Vector& rhs
   }
 }
 
-void ALMFrictionlessLHS(const FrictionlessMortarData<3, 3, 4>& data, Matrix& lhs) {
+void ALMFrictionlessLHS(const FrictionlessMortarData<3, 3, 4>& data, Matrix& lhs, Matrix* normal_sensitivity) {
   assert(lhs.rows() == 24 && lhs.cols() == 24);
+  assert(!normal_sensitivity || (normal_sensitivity->rows() == 24 && normal_sensitivity->cols() == 9));
   const auto& kinematics = *data.kinematics;
   const auto& D = kinematics.D;
   const auto& M = kinematics.M;
@@ -137,6 +138,7 @@ void ALMFrictionlessLHS(const FrictionlessMortarData<3, 3, 4>& data, Matrix& lhs
   Eigen::Matrix<double, 24, 3> cD;
   Eigen::Matrix<double, 24, 4> cM;
   Eigen::Matrix<double, 24, 1> cG;
+  Eigen::Matrix<double, 24, 3> cN;
   // slave node 0
   if (data.active[0]) {
     const double t0 = df(0)*k;
@@ -230,6 +232,39 @@ void ALMFrictionlessLHS(const FrictionlessMortarData<3, 3, 4>& data, Matrix& lhs
     cG(20) = -n1(0, 2)*t22;
     cG(21) = -k;
     AddOperatorChainRule(kinematics, 0, cD, cM, cG, lhs);
+    if (normal_sensitivity) {
+      const double s0 = df(0)*(eps(0)*g(0) + k*lm(0));
+      const double s1 = M(0, 0)*s0;
+      const double s2 = M(0, 1)*s0;
+      const double s3 = M(0, 2)*s0;
+      const double s4 = M(0, 3)*s0;
+      const double s5 = -D(0, 0)*s0;
+      const double s6 = -D(0, 1)*s0;
+      const double s7 = -D(0, 2)*s0;
+      cN.setZero();
+      cN(0, 0) = s1;
+      cN(1, 1) = s1;
+      cN(2, 2) = s1;
+      cN(3, 0) = s2;
+      cN(4, 1) = s2;
+      cN(5, 2) = s2;
+      cN(6, 0) = s3;
+      cN(7, 1) = s3;
+      cN(8, 2) = s3;
+      cN(9, 0) = s4;
+      cN(10, 1) = s4;
+      cN(11, 2) = s4;
+      cN(12, 0) = s5;
+      cN(13, 1) = s5;
+      cN(14, 2) = s5;
+      cN(15, 0) = s6;
+      cN(16, 1) = s6;
+      cN(17, 2) = s6;
+      cN(18, 0) = s7;
+      cN(19, 1) = s7;
+      cN(20, 2) = s7;
+      AddNormalChainRule(kinematics, 0, cD, cM, cG, cN, *normal_sensitivity);
+    }
   } else {
     lhs(21, 21) += k*k/eps(0);
   }
@@ -326,6 +361,39 @@ void ALMFrictionlessLHS(const FrictionlessMortarData<3, 3, 4>& data, Matrix& lhs
     cG(20) = -n1(1, 2)*t22;
     cG(22) = -k;
     AddOperatorChainRule(kinematics, 1, cD, cM, cG, lhs);
+    if (normal_sensitivity) {
+      const double s0 = df(1)*(eps(1)*g(1) + k*lm(1));
+      const double s1 = M(1, 0)*s0;
+      const double s2 = M(1, 1)*s0;
+      const double s3 = M(1, 2)*s0;
+      const double s4 = M(1, 3)*s0;
+      const double s5 = -D(1, 0)*s0;
+      const double s6 = -D(1, 1)*s0;
+      const double s7 = -D(1, 2)*s0;
+      cN.setZero();
+      cN(0, 0) = s1;
+      cN(1, 1) = s1;
+      cN(2, 2) = s1;
+      cN(3, 0) = s2;
+      cN(4, 1) = s2;
+      cN(5, 2) = s2;
+      cN(6, 0) = s3;
+      cN(7, 1) = s3;
+      cN(8, 2) = s3;
+      cN(9, 0) = s4;
+      cN(10, 1) = s4;
+      cN(11, 2) = s4;
+      cN(12, 0) = s5;
+      cN(13, 1) = s5;
+      cN(14, 2) = s5;
+      cN(15, 0) = s6;
+      cN(16, 1) = s6;
+      cN(17, 2) = s6;
+      cN(18, 0) = s7;
+      cN(19, 1) = s7;
+      cN(20, 2) = s7;
+      AddNormalChainRule(kinematics, 1, cD, cM, cG, cN, *normal_sensitivity);
+    }
   } else {
     lhs(22, 22) += k*k/eps(1);
   }
@@ -422,6 +490,39 @@ void ALMFrictionlessLHS(const FrictionlessMortarData<3, 3, 4>& data, Matrix& lhs
     cG(20) = -n1(2, 2)*t22;
     cG(23) = -k;
     AddOperatorChainRule(kinematics, 2, cD, cM, cG, lhs);
+    if (normal_sensitivity) {
+      const double s0 = df(2)*(eps(2)*g(2) + k*lm(2));
+      const double s1 = M(2, 0)*s0;
+      const double s2 = M(2, 1)*s0;
+      const double s3 = M(2, 2)*s0;
+      const double s4 = M(2, 3)*s0;
+      const double s5 = -D(2, 0)*s0;
+      const double s6 = -D(2, 1)*s0;
+      const double s7 = -D(2, 2)*s0;
+      cN.setZero();
+      cN(0, 0) = s1;
+      cN(1, 1) = s1;
+      cN(2, 2) = s1;
+      cN(3, 0) = s2;
+      cN(4, 1) = s2;
+      cN(5, 2) = s2;
+      cN(6, 0) = s3;
+      cN(7, 1) = s3;
+      cN(8, 2) = s3;
+      cN(9, 0) = s4;
+      cN(10, 1) = s4;
+      cN(11, 2) = s4;
+      cN(12, 0) = s5;
+      cN(13, 1) = s5;
+      cN(14, 2) = s5;
+      cN(15, 0) = s6;
+      cN(16, 1) = s6;
+      cN(17, 2) = s6;
+      cN(18, 0) = s7;
+      cN(19, 1) = s7;
+      cN(20, 2) = s7;
+      AddNormalChainRule(kinematics, 2, cD, cM, cG, cN, *normal_sensitivity);
+    }
   } else {
     lhs(23, 23) += k*k/eps(2);
   }

@@ -78,8 +78,9 @@ void ALMFrictionlessComponentsRHS(const FrictionlessMortarData<2, 2, 2>& data, V
   }
 }
 
-void ALMFrictionlessComponentsLHS(const FrictionlessMortarData<2, 2, 2>& data, Matrix& lhs) {
+void ALMFrictionlessComponentsLHS(const FrictionlessMortarData<2, 2, 2>& data, Matrix& lhs, Matrix* normal_sensitivity) {
   assert(lhs.rows() == 12 && lhs.cols() == 12);
+  assert(!normal_sensitivity || (normal_sensitivity->rows() == 12 && normal_sensitivity->cols() == 4));
   const auto& kinematics = *data.kinematics;
   const auto& D = kinematics.D;
   const auto& M = kinematics.M;
@@ -92,6 +93,7 @@ void ALMFrictionlessComponentsLHS(const FrictionlessMortarData<2, 2, 2>& data, M
   Eigen::Matrix<double, 12, 2> cD;
   Eigen::Matrix<double, 12, 2> cM;
   Eigen::Matrix<double, 12, 1> cG;
+  Eigen::Matrix<double, 12, 2> cN;
   // slave node 0
   if (data.active[0]) {
     const double t0 = df(0)*k;
@@ -148,6 +150,42 @@ void ALMFrictionlessComponentsLHS(const FrictionlessMortarData<2, 2, 2>& data, M
     cG(8) = -k*n1(0, 0);
     cG(9) = -k*n1(0, 1);
     AddOperatorChainRule(kinematics, 0, cD, cM, cG, lhs);
+    if (normal_sensitivity) {
+      const double s0 = df(0)*eps(0)*g(0);
+      const double s1 = M(0, 0)*s0;
+      const double s2 = M(0, 1)*s0;
+      const double s3 = -D(0, 0)*s0;
+      const double s4 = -D(0, 1)*s0;
+      const double s5 = 1.0/eps(0);
+      const double s6 = n1(0, 1)*n1(0, 1);
+      const double s7 = lm(0, 0)*n1(0, 0);
+      const double s8 = n1(0, 0)*n1(0, 0);
+      const double s9 = s8 - 1;
+      const double s10 = lm(0, 1)*n1(0, 1);
+      const double s11 = s10 + 2*s7;
+      const double s12 = s10 + s7;
+      const double s13 = n1(0, 0)*s12;
+      const double s14 = n1(0, 0)*(lm(0, 0) - s13);
+      const double s15 = n1(0, 1)*s12;
+      const double s16 = n1(0, 1)*(lm(0, 1) - s15);
+      const double s17 = 2*s10 + s7;
+      const double s18 = k*k*s5;
+      const double s19 = s6 - 1;
+      cN.setZero();
+      cN(0, 0) = s1;
+      cN(1, 1) = s1;
+      cN(2, 0) = s2;
+      cN(3, 1) = s2;
+      cN(4, 0) = s3;
+      cN(5, 1) = s3;
+      cN(6, 0) = s4;
+      cN(7, 1) = s4;
+      cN(8, 0) = k*(-g(0) + k*s5*(s11*s9 - 2*s14 - s16 + s6*s7));
+      cN(8, 1) = -n1(0, 0)*s18*(-lm(0, 1)*s9 + lm(0, 1) - n1(0, 1)*s17 - s15);
+      cN(9, 0) = -n1(0, 1)*s18*(-lm(0, 0)*s19 + lm(0, 0) - n1(0, 0)*s11 - s13);
+      cN(9, 1) = k*(-g(0) + k*s5*(s10*s8 - s14 - 2*s16 + s17*s19));
+      AddNormalChainRule(kinematics, 0, cD, cM, cG, cN, *normal_sensitivity);
+    }
   } else {
     const double t0 = k*k/eps(0);
     lhs(8, 8) += t0;
@@ -209,6 +247,42 @@ void ALMFrictionlessComponentsLHS(const FrictionlessMortarData<2, 2, 2>& data, M
     cG(10) = -k*n1(1, 0);
     cG(11) = -k*n1(1, 1);
     AddOperatorChainRule(kinematics, 1, cD, cM, cG, lhs);
+    if (normal_sensitivity) {
+      const double s0 = df(1)*eps(1)*g(1);
+      const double s1 = M(1, 0)*s0;
+      const double s2 = M(1, 1)*s0;
+      const double s3 = -D(1, 0)*s0;
+      const double s4 = -D(1, 1)*s0;
+      const double s5 = 1.0/eps(1);
+      const double s6 = n1(1, 1)*n1(1, 1);
+      const double s7 = lm(1, 0)*n1(1, 0);
+      const double s8 = n1(1, 0)*n1(1, 0);
+      const double s9 = s8 - 1;
+      const double s10 = lm(1, 1)*n1(1, 1);
+      const double s11 = s10 + 2*s7;
+      const double s12 = s10 + s7;
+      const double s13 = n1(1, 0)*s12;
+      const double s14 = n1(1, 0)*(lm(1, 0) - s13);
+      const double s15 = n1(1, 1)*s12;
+      const double s16 = n1(1, 1)*(lm(1, 1) - s15);
+      const double s17 = 2*s10 + s7;
+      const double s18 = k*k*s5;
+      const double s19 = s6 - 1;
+      cN.setZero();
+      cN(0, 0) = s1;
+      cN(1, 1) = s1;
+      cN(2, 0) = s2;
+      cN(3, 1) = s2;
+      cN(4, 0) = s3;
+      cN(5, 1) = s3;
+      cN(6, 0) = s4;
+      cN(7, 1) = s4;
+      cN(10, 0) = k*(-g(1) + k*s5*(s11*s9 - 2*s14 - s16 + s6*s7));
+      cN(10, 1) = -n1(1, 0)*s18*(-lm(1, 1)*s9 + lm(1, 1) - n1(1, 1)*s17 - s15);
+      cN(11, 0) = -n1(1, 1)*s18*(-lm(1, 0)*s19 + lm(1, 0) - n1(1, 0)*s11 - s13);
+      cN(11, 1) = k*(-g(1) + k*s5*(s10*s8 - s14 - 2*s16 + s17*s19));
+      AddNormalChainRule(kinematics, 1, cD, cM, cG, cN, *normal_sensitivity);
+    }
   } else {
     const double t0 = k*k/eps(1);
     lhs(10, 10) += t0;

@@ -48,8 +48,9 @@ void PenaltyFrictionlessRHS(const FrictionlessMortarData<2, 2, 2>& data, Vector&
   }
 }
 
-void PenaltyFrictionlessLHS(const FrictionlessMortarData<2, 2, 2>& data, Matrix& lhs) {
+void PenaltyFrictionlessLHS(const FrictionlessMortarData<2, 2, 2>& data, Matrix& lhs, Matrix* normal_sensitivity) {
   assert(lhs.rows() == 8 && lhs.cols() == 8);
+  assert(!normal_sensitivity || (normal_sensitivity->rows() == 8 && normal_sensitivity->cols() == 4));
   const auto& kinematics = *data.kinematics;
   const auto& D = kinematics.D;
   const auto& M = kinematics.M;
@@ -60,6 +61,7 @@ void PenaltyFrictionlessLHS(const FrictionlessMortarData<2, 2, 2>& data, Matrix&
   Eigen::Matrix<double, 8, 2> cD;
   Eigen::Matrix<double, 8, 2> cM;
   Eigen::Matrix<double, 8, 1> cG;
+  Eigen::Matrix<double, 8, 2> cN;
   // slave node 0
   if (data.active[0]) {
     const double t0 = df(0)*eps(0);
@@ -92,6 +94,23 @@ void PenaltyFrictionlessLHS(const FrictionlessMortarData<2, 2, 2>& data, Matrix&
     cG(6) = -n1(0, 0)*t9;
     cG(7) = -n1(0, 1)*t9;
     AddOperatorChainRule(kinematics, 0, cD, cM, cG, lhs);
+    if (normal_sensitivity) {
+      const double s0 = df(0)*eps(0)*g(0);
+      const double s1 = M(0, 0)*s0;
+      const double s2 = M(0, 1)*s0;
+      const double s3 = -D(0, 0)*s0;
+      const double s4 = -D(0, 1)*s0;
+      cN.setZero();
+      cN(0, 0) = s1;
+      cN(1, 1) = s1;
+      cN(2, 0) = s2;
+      cN(3, 1) = s2;
+      cN(4, 0) = s3;
+      cN(5, 1) = s3;
+      cN(6, 0) = s4;
+      cN(7, 1) = s4;
+      AddNormalChainRule(kinematics, 0, cD, cM, cG, cN, *normal_sensitivity);
+    }
   }
   // slave node 1
   if (data.active[1]) {
@@ -125,6 +144,23 @@ void PenaltyFrictionlessLHS(const FrictionlessMortarData<2, 2, 2>& data, Matrix&
     cG(6) = -n1(1, 0)*t9;
     cG(7) = -n1(1, 1)*t9;
     AddOperatorChainRule(kinematics, 1, cD, cM, cG, lhs);
+    if (normal_sensitivity) {
+      const double s0 = df(1)*eps(1)*g(1);
+      const double s1 = M(1, 0)*s0;
+      const double s2 = M(1, 1)*s0;
+      const double s3 = -D(1, 0)*s0;
+      const double s4 = -D(1, 1)*s0;
+      cN.setZero();
+      cN(0, 0) = s1;
+      cN(1, 1) = s1;
+      cN(2, 0) = s2;
+      cN(3, 1) = s2;
+      cN(4, 0) = s3;
+      cN(5, 1) = s3;
+      cN(6, 0) = s4;
+      cN(7, 1) = s4;
+      AddNormalChainRule(kinematics, 1, cD, cM, cG, cN, *normal_sensitivity);
+    }
   }
 }
 

@@ -144,8 +144,9 @@ void PenaltyFrictionlessRHS(const FrictionlessMortarData<3, 4, 3>& data, Vector&
   }
 }
 
-void PenaltyFrictionlessLHS(const FrictionlessMortarData<3, 4, 3>& data, Matrix& lhs) {
+void PenaltyFrictionlessLHS(const FrictionlessMortarData<3, 4, 3>& data, Matrix& lhs, Matrix* normal_sensitivity) {
   assert(lhs.rows() == 21 && lhs.cols() == 21);
+  assert(!normal_sensitivity || (normal_sensitivity->rows() == 21 && normal_sensitivity->cols() == 12));
   const auto& kinematics = *data.kinematics;
   const auto& D = kinematics.D;
   const auto& M = kinematics.M;
@@ -156,6 +157,7 @@ void PenaltyFrictionlessLHS(const FrictionlessMortarData<3, 4, 3>& data, Matrix&
   Eigen::Matrix<double, 21, 4> cD;
   Eigen::Matrix<double, 21, 3> cM;
   Eigen::Matrix<double, 21, 1> cG;
+  Eigen::Matrix<double, 21, 3> cN;
   // slave node 0
   if (data.active[0]) {
     const double t0 = df(0)*eps(0);
@@ -219,6 +221,39 @@ void PenaltyFrictionlessLHS(const FrictionlessMortarData<3, 4, 3>& data, Matrix&
     cG(19) = -n1(0, 1)*t14;
     cG(20) = -n1(0, 2)*t14;
     AddOperatorChainRule(kinematics, 0, cD, cM, cG, lhs);
+    if (normal_sensitivity) {
+      const double s0 = df(0)*eps(0)*g(0);
+      const double s1 = M(0, 0)*s0;
+      const double s2 = M(0, 1)*s0;
+      const double s3 = M(0, 2)*s0;
+      const double s4 = -D(0, 0)*s0;
+      const double s5 = -D(0, 1)*s0;
+      const double s6 = -D(0, 2)*s0;
+      const double s7 = -D(0, 3)*s0;
+      cN.setZero();
+      cN(0, 0) = s1;
+      cN(1, 1) = s1;
+      cN(2, 2) = s1;
+      cN(3, 0) = s2;
+      cN(4, 1) = s2;
+      cN(5, 2) = s2;
+      cN(6, 0) = s3;
+      cN(7, 1) = s3;
+      cN(8, 2) = s3;
+      cN(9, 0) = s4;
+      cN(10, 1) = s4;
+      cN(11, 2) = s4;
+      cN(12, 0) = s5;
+      cN(13, 1) = s5;
+      cN(14, 2) = s5;
+      cN(15, 0) = s6;
+      cN(16, 1) = s6;
+      cN(17, 2) = s6;
+      cN(18, 0) = s7;
+      cN(19, 1) = s7;
+      cN(20, 2) = s7;
+      AddNormalChainRule(kinematics, 0, cD, cM, cG, cN, *normal_sensitivity);
+    }
   }
   // slave node 1
   if (data.active[1]) {
@@ -283,6 +318,39 @@ void PenaltyFrictionlessLHS(const FrictionlessMortarData<3, 4, 3>& data, Matrix&
     cG(19) = -n1(1, 1)*t14;
     cG(20) = -n1(1, 2)*t14;
     AddOperatorChainRule(kinematics, 1, cD, cM, cG, lhs);
+    if (normal_sensitivity) {
+      const double s0 = df(1)*eps(1)*g(1);
+      const double s1 = M(1, 0)*s0;
+      const double s2 = M(1, 1)*s0;
+      const double s3 = M(1, 2)*s0;
+      const double s4 = -D(1, 0)*s0;
+      const double s5 = -D(1, 1)*s0;
+      const double s6 = -D(1, 2)*s0;
+      const double s7 = -D(1, 3)*s0;
+      cN.setZero();
+      cN(0, 0) = s1;
+      cN(1, 1) = s1;
+      cN(2, 2) = s1;
+      cN(3, 0) = s2;
+      cN(4, 1) = s2;
+      cN(5, 2) = s2;
+      cN(6, 0) = s3;
+      cN(7, 1) = s3;
+      cN(8, 2) = s3;
+      cN(9, 0) = s4;
+      cN(10, 1) = s4;
+      cN(11, 2) = s4;
+      cN(12, 0) = s5;
+      cN(13, 1) = s5;
+      cN(14, 2) = s5;
+      cN(15, 0) = s6;
+      cN(16, 1) = s6;
+      cN(17, 2) = s6;
+      cN(18, 0) = s7;
+      cN(19, 1) = s7;
+      cN(20, 2) = s7;
+      AddNormalChainRule(kinematics, 1, cD, cM, cG, cN, *normal_sensitivity);
+    }
   }
   // slave node 2
   if (data.active[2]) {
@@ -347,6 +415,39 @@ void PenaltyFrictionlessLHS(const FrictionlessMortarData<3, 4, 3>& data, Matrix&
     cG(19) = -n1(2, 1)*t14;
     cG(20) = -n1(2, 2)*t14;
     AddOperatorChainRule(kinematics, 2, cD, cM, cG, lhs);
+    if (normal_sensitivity) {
+      const double s0 = df(2)*eps(2)*g(2);
+      const double s1 = M(2, 0)*s0;
+      const double s2 = M(2, 1)*s0;
+      const double s3 = M(2, 2)*s0;
+      const double s4 = -D(2, 0)*s0;
+      const double s5 = -D(2, 1)*s0;
+      const double s6 = -D(2, 2)*s0;
+      const double s7 = -D(2, 3)*s0;
+      cN.setZero();
+      cN(0, 0) = s1;
+      cN(1, 1) = s1;
+      cN(2, 2) = s1;
+      cN(3, 0) = s2;
+      cN(4, 1) = s2;
+      cN(5, 2) = s2;
+      cN(6, 0) = s3;
+      cN(7, 1) = s3;
+      cN(8, 2) = s3;
+      cN(9, 0) = s4;
+      cN(10, 1) = s4;
+      cN(11, 2) = s4;
+      cN(12, 0) = s5;
+      cN(13, 1) = s5;
+      cN(14, 2) = s5;
+      cN(15, 0) = s6;
+      cN(16, 1) = s6;
+      cN(17, 2) = s6;
+      cN(18, 0) = s7;
+      cN(19, 1) = s7;
+      cN(20, 2) = s7;
+      AddNormalChainRule(kinematics, 2, cD, cM, cG, cN, *normal_sensitivity);
+    }
   }
   // slave node 3
   if (data.active[3]) {
@@ -411,6 +512,39 @@ void PenaltyFrictionlessLHS(const FrictionlessMortarData<3, 4, 3>& data, Matrix&
     cG(19) = -n1(3, 1)*t14;
     cG(20) = -n1(3, 2)*t14;
     AddOperatorChainRule(kinematics, 3, cD, cM, cG, lhs);
+    if (normal_sensitivity) {
+      const double s0 = df(3)*eps(3)*g(3);
+      const double s1 = M(3, 0)*s0;
+      const double s2 = M(3, 1)*s0;
+      const double s3 = M(3, 2)*s0;
+      const double s4 = -D(3, 0)*s0;
+      const double s5 = -D(3, 1)*s0;
+      const double s6 = -D(3, 2)*s0;
+      const double s7 = -D(3, 3)*s0;
+      cN.setZero();
+      cN(0, 0) = s1;
+      cN(1, 1) = s1;
+      cN(2, 2) = s1;
+      cN(3, 0) = s2;
+      cN(4, 1) = s2;
+      cN(5, 2) = s2;
+      cN(6, 0) = s3;
+      cN(7, 1) = s3;
+      cN(8, 2) = s3;
+      cN(9, 0) = s4;
+      cN(10, 1) = s4;
+      cN(11, 2) = s4;
+      cN(12, 0) = s5;
+      cN(13, 1) = s5;
+      cN(14, 2) = s5;
+      cN(15, 0) = s6;
+      cN(16, 1) = s6;
+      cN(17, 2) = s6;
+      cN(18, 0) = s7;
+      cN(19, 1) = s7;
+      cN(20, 2) = s7;
+      AddNormalChainRule(kinematics, 3, cD, cM, cG, cN, *normal_sensitivity);
+    }
   }
 }
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "custom_strategies/custom_convergencecriterias/contact_mortar_updater.h"
 
+#include <chrono>
+
 #include "core/model/model_part.h"
 #include "core/variables/kernel_variables.h"
 #include "custom_conditions/contact_condition_utilities.h"
@@ -9,6 +11,10 @@
 namespace mc {
 
 namespace {
+double SecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 // The contact sub-model-parts hang from the root; the strategies may solve on a sub-part.
 ModelPart* FindContactPart(ModelPart& model_part, const char* name) {
   ModelPart& root = model_part.GetRootModelPart();
@@ -19,6 +25,7 @@ ModelPart* FindContactPart(ModelPart& model_part, const char* name) {
 void ContactMortarUpdater::ComputeWeightedGap(ModelPart& model_part) {
   ModelPart* pairs = FindContactPart(model_part, "ComputingContact");
   if (!pairs) return;
+  const auto start = std::chrono::steady_clock::now();
   ContactConditionUtilities::ComputeExplicitContributions(*pairs, true);
   // A slave node outside the overlap of every pair has no mortar operators: it cannot carry
   // contact, so it is ISOLATED and inactive (its multiplier row is then the inactive one).
@@ -28,11 +35,17 @@ void ContactMortarUpdater::ComputeWeightedGap(ModelPart& model_part) {
       node->Set(ISOLATED, isolated);
       if (isolated) node->Set(ACTIVE, false);
     }
+  timings_.weighted_gap += SecondsSince(start);
+  ++timings_.weighted_gap_calls;
 }
 
 void ContactMortarUpdater::UpdateNormals(ModelPart& model_part) {
-  if (ModelPart* interface = FindContactPart(model_part, "Contact"))
-    NormalCalculationUtilities::ComputeNodalNormals(*interface);
+  ModelPart* interface = FindContactPart(model_part, "Contact");
+  if (!interface) return;
+  const auto start = std::chrono::steady_clock::now();
+  NormalCalculationUtilities::ComputeNodalNormals(*interface);
+  timings_.normals += SecondsSince(start);
+  ++timings_.normals_calls;
 }
 
 }  // namespace mc

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include <cstddef>
+
 #include "custom_strategies/custom_convergencecriterias/mortar_updater.h"
 
 namespace mc {
@@ -10,8 +12,20 @@ namespace mc {
 /// the explicit contribution of every pair condition of `ComputingContact`.
 class ContactMortarUpdater : public MortarUpdater {
  public:
+  /// Cumulative wall-clock seconds and calls, for benchmarks.
+  struct Timings {
+    double weighted_gap = 0.0;
+    double normals = 0.0;
+    std::size_t weighted_gap_calls = 0;
+    std::size_t normals_calls = 0;
+  };
+
   void ComputeWeightedGap(ModelPart& model_part) override;
   void UpdateNormals(ModelPart& model_part) override;
+  const Timings& GetTimings() const noexcept { return timings_; }
+
+ private:
+  Timings timings_;
 };
 
 }  // namespace mc

@@ -55,9 +55,11 @@ class ALMContactProcess(SearchBaseProcess):
             raise _core.NotImplementedFeatureError(
                 f"{self.python_module}: contact_type '{self.settings['contact_type'].GetString()}' is not "
                 f"implemented yet (available: {', '.join(self.implemented)})")
-        if self.settings["alternative_formulations"]["axisymmetric"].GetBool():
+        self.axisymmetric = self.settings["alternative_formulations"]["axisymmetric"].GetBool()
+        if self.axisymmetric and self.contact_type != "Frictionless":
             raise _core.NotImplementedFeatureError(
-                f"{self.python_module}: alternative_formulations.axisymmetric is not implemented yet")
+                f"{self.python_module}: alternative_formulations.axisymmetric exists for contact_type "
+                f"'Frictionless' only (got '{self.settings['contact_type'].GetString()}')")
         if self.settings["advance_ALM_parameters"]["adapt_penalty"].GetBool():
             raise _core.NotImplementedFeatureError(
                 f"{self.python_module}: advance_ALM_parameters.adapt_penalty is not implemented yet")
@@ -75,11 +77,16 @@ class ALMContactProcess(SearchBaseProcess):
     def condition_stem(self) -> str:
         nv = "NV" if self.normal_variation == "nodal_elemental_derivatives" else ""
         friction = self.contact_type.replace("PureSlip", "")
-        return f"{self.method}{nv}{friction}MortarContactCondition"
+        axisym = "Axisym" if self.axisymmetric else ""
+        return f"{self.method}{nv}{friction}{axisym}MortarContactCondition"
 
     def check_solver_variables(self) -> None:
         """The solver adds the variables of its mortar_type before the mesh is read (spec 2.10):
-        their absence reveals a missing or mismatched mortar_type."""
+        their absence reveals a missing or mismatched mortar_type. Axisymmetry needs a 2D model."""
+        dimension = self.root.GetProcessInfo().GetValue(_core.DOMAIN_SIZE)
+        if self.axisymmetric and dimension != 2:
+            raise _core.InputError(f"{self.settings['alternative_formulations'].Where()}.axisymmetric: true needs "
+                                   f"domain_size 2 (x = radius, y = axis), got {dimension}")
         has = self.root.HasNodalSolutionStepVariable
         expected = self.mortar_type
         if not has(_core.WEIGHTED_GAP):

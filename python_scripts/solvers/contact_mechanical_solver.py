@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from .. import _core
-from ..utilities import nearest
+from ..utilities import nearest, warn
 from ..contact_solvers import create_contact_convergence_criteria, create_contact_strategy
 from .mechanical_solver import MechanicalSolver
 
@@ -69,10 +69,30 @@ class ContactMechanicalSolver(MechanicalSolver):
         updater = _core.ContactMortarUpdater()
         self.mortar_updater = updater  # its timings are read by the benchmarks
         criteria = create_contact_convergence_criteria(s, self.echo_level, updater)
-        linear_solver = _core.CreateLinearSolver(s["linear_solver_settings"])
+        linear_solver = self._create_contact_linear_solver()
         initialize, finalize = self.sub_step_callbacks
         return create_contact_strategy(part, s, self._create_scheme(part), linear_solver, criteria,
                                        self.echo_level, updater, initialize, finalize)
+
+    def _create_contact_linear_solver(self):
+        """The user's solver, optionally rescaled, wrapped in the condensing MixedULM solver for the
+        vector-multiplier formulations (spec 2.7.1): the scalar system cannot be condensed."""
+        s = self.settings
+        contact = s["contact_settings"]
+        settings = s["linear_solver_settings"].Clone()
+        if contact["rescale_linear_solver"].GetBool():
+            if not settings.Has("scaling"):
+                settings.AddValue("scaling", _core.Parameters("false"))
+            settings["scaling"].SetBool(True)
+        linear_solver = _core.CreateLinearSolver(settings)
+        condensable = self.mortar_type == "ALMContactFrictionlessComponents"
+        mixed = contact["mixed_ulm_solver_parameters"]
+        if condensable and contact["use_mixed_ulm_solver"].GetBool():
+            if mixed["solver_type"].GetString() == "mixed_ulm_linear_solver":
+                return _core.CreateMixedULMLinearSolver(linear_solver)
+            warn(f"{mixed.Where()}.solver_type: \"{mixed['solver_type'].GetString()}\" is not "
+                 "\"mixed_ulm_linear_solver\": the contact system is solved without condensation")
+        return linear_solver
 
     def Initialize(self) -> None:
         super().Initialize()

@@ -18,7 +18,13 @@ FRICTIONLESS_CASES = [
     ("ALM_frictionless_contact_test_2D/hyper_simple_triangle_patch_test", ("components",)),
     ("ALM_frictionless_contact_test_3D/3D_contact_simplest_patch_matching_triquad_test", ("scalar", "components")),
     ("ALM_frictionless_contact_test_2D/taylor_patch_dynamic_test", ("scalar", "components")),
+    ("ALM_frictionless_contact_test_3D/3D_contact_simplest_patch_matching_test", ("scalar", "components")),
 ]
+
+#: Cases whose reference time is never reached with their own time stepping: the reference file
+#: (t = 1.1) and the parameters (dt 0.5 up to 0.99) come from different Kratos revisions. The
+#: values are taken at the last step instead, for the comparison with Kratos 10.4 only.
+SNAPSHOT_TIME = {"ALM_frictionless_contact_test_3D/3D_contact_simplest_patch_matching_test": 1.0}
 
 
 def use_components(params) -> None:
@@ -42,7 +48,8 @@ def check_blocks(case: str):
 
 
 def reference_values(case: str):
-    """(last check time, {"NODE_<id>": [variables]}) over every reference file of the case."""
+    """(last check time, {"NODE_<id>": [variables]}) over every reference file of the case; the
+    time is SNAPSHOT_TIME's when the case has one."""
     time, nodes = None, {}
     for input_file, _, variables, _ in check_blocks(case):
         with open(os.path.join(SHARED_CASES, input_file)) as f:
@@ -52,4 +59,4 @@ def reference_values(case: str):
             if key.startswith("NODE_"):
                 nodes.setdefault(key, [])
                 nodes[key] += [v for v in variables if v in reference[key] and v not in nodes[key]]
-    return time, nodes
+    return SNAPSHOT_TIME.get(case, time), nodes

@@ -39,7 +39,13 @@ KRATOS_TOLERANCE = {
     "hyper_simple_triangle_patch_test": 1e-9,
     "3D_contact_simplest_patch_matching_triquad_test": 1e-2,
     "taylor_patch_dynamic_test": 1e-3,
+    # 50 % compression of two hyperelastic cubes (the law alone matches Kratos 10.4 to 3e-12 there)
+    "3D_contact_simplest_patch_matching_test": 3e-3,
 }
+# Kratos 10.4's components run of this case stops at max_iteration in its second step with zero
+# lateral displacements (its scalar run gives 0.146): both formulations must give the same
+# solution, so ours is held to Kratos' scalar run.
+KRATOS_YARDSTICK = {("3D_contact_simplest_patch_matching_test", "components"): "scalar"}
 RUNS = [(case, formulation) for case, formulations in FRICTIONLESS_CASES for formulation in formulations]
 
 
@@ -113,7 +119,8 @@ def test_frictionless_case(shared_cases, monkeypatch, case, formulation):
                     compared += 1
         assert compared >= 4
 
-    with open(os.path.join(KRATOS_SNAPSHOTS, f"{name}_{formulation}.json")) as f:
+    yardstick = KRATOS_YARDSTICK.get((name, formulation), formulation)
+    with open(os.path.join(KRATOS_SNAPSHOTS, f"{name}_{yardstick}.json")) as f:
         kratos = json.load(f)
     assert kratos["time"] == pytest.approx(analysis.snapshot_time)
     difference = worst_difference(analysis.snapshot, kratos["nodes"])
@@ -124,27 +131,46 @@ def test_frictionless_case(shared_cases, monkeypatch, case, formulation):
     assert sum(iterations) <= sum(kratos["newton_iterations"])
 
 
-@pytest.mark.skipif(importlib.util.find_spec("gmsh") is None, reason="gmsh is not installed")
-def test_hertz_2d_cylinder_matches_theory(tmp_path):
-    """Plane-strain cylinder on a block (gmsh mesh, ~2k DoFs, 4 displacement steps): peak pressure
-    within 3 % and contact half-width within 5 % of Hertz for the computed force."""
+def run_hertz(kind: str, size: str, folder: str) -> dict:
+    """Runs a gmsh-generated Hertz case (benchmarks/hertz) and evaluates it against Hertz theory."""
     hertz_dir = os.path.join(os.path.dirname(__file__), "..", "..", "benchmarks", "hertz")
     sys.path.insert(0, os.path.abspath(hertz_dir))
     import case_runner
     import generate_cases
     import harness
 
-    folder = generate_cases.write_case("hertz2d", "2k", str(tmp_path))
+    case = generate_cases.write_case(kind, size, folder)
     record = {"steps": [], "status": "ok"}
-    case_runner.run_mortarcontact(os.path.join(folder, "ProjectParameters.json"), 2, record)
+    case_runner.run_mortarcontact(os.path.join(case, "ProjectParameters.json"), 3 if kind == "hertz3d" else 2, record)
     assert all(step["converged"] for step in record["steps"])
-    result = harness.evaluate(record, harness.load_hertz(folder))
-    print(f"Hertz 2D: peak pressure error {result['peak_pressure_error']:+.2%}, "
-          f"half-width error {result['half_width_fit_error']:+.2%}, "
-          f"iterations {[s['iterations'] for s in record['steps']]}")
+    result = harness.evaluate(record, harness.load_hertz(case))
+    result["iterations"] = [s["iterations"] for s in record["steps"]]
+    print(f"{kind} {size}: peak pressure error {result['peak_pressure_error']:+.2%}, "
+          f"half-width error {result['half_width_fit_error']:+.2%}, iterations {result['iterations']}")
+    return result
+
+
+@pytest.mark.skipif(importlib.util.find_spec("gmsh") is None, reason="gmsh is not installed")
+def test_hertz_2d_cylinder_matches_theory(tmp_path):
+    """Plane-strain cylinder on a block (gmsh mesh, ~2k DoFs, 4 displacement steps): peak pressure
+    within 3 % and contact half-width within 5 % of Hertz for the computed force."""
+    result = run_hertz("hertz2d", "2k", str(tmp_path))
     assert abs(result["peak_pressure_error"]) < 0.03
     assert abs(result["half_width_fit_error"]) < 0.05
     assert math.isclose(result["force_from_pressure"], result["force"], rel_tol=0.03)
+
+
+@pytest.mark.slow
+@pytest.mark.skipif(importlib.util.find_spec("gmsh") is None, reason="gmsh is not installed")
+def test_hertz_3d_sphere_matches_theory(tmp_path):
+    """Quarter sphere on a block (15k DoFs, about 2 minutes): contact radius within 5 % of Hertz and
+    the nodal peak pressure within 8 % (a coarse 3D mesh overshoots at the centre node; Kratos 10.4
+    gives +7.8 % on the same mesh), in the Newton iterations Kratos needs (5, 4, 4, 4)."""
+    result = run_hertz("hertz3d", "15k", str(tmp_path))
+    assert abs(result["half_width_fit_error"]) < 0.05
+    assert abs(result["p0_fit_error"]) < 0.03
+    assert abs(result["peak_pressure_error"]) < 0.08
+    assert sum(result["iterations"]) <= 17
 
 
 def test_penalty_3d_patch_closes_the_gap(shared_cases, monkeypatch):

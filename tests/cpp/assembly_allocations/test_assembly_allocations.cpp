@@ -2,20 +2,14 @@
 // Issue 2 (speed): once the sparsity pattern exists, a Build() of the block builder does no
 // heap allocation (beyond the one-off creation of a thread's buffers), with the real structural
 // elements (small displacement hexahedra and tetrahedra with LinearElastic3DLaw, total
-// Lagrangian ones with HyperElastic3DLaw) and follower-pressure surface conditions. Allocations are counted by replacing the global
-// operator new and the C allocation functions of this executable.
+// Lagrangian ones with HyperElastic3DLaw) and follower-pressure surface conditions. Allocations are
+// counted by replacing the global operator new and the C allocation functions of this executable
+// (tests/cpp/common/allocation_counter.h), those of the OpenMP runtime apart.
 #include <gtest/gtest.h>
-#include <link.h>
 #include <omp.h>
 
 #include <algorithm>
-#include <atomic>
-#include <cerrno>
 #include <cmath>
-#include <cstdint>
-#include <cstdlib>
-#include <cstring>
-#include <new>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -27,123 +21,7 @@
 #include "core/solving/residual_based_incremental_update_static_scheme.h"
 #include "core/variables/kernel_variables.h"
 #include "structural/application/register_structural_mechanics.h"
-
-// glibc's own allocator, called by the interposed C allocation functions below.
-extern "C" {
-void* __libc_malloc(std::size_t);
-void* __libc_calloc(std::size_t, std::size_t);
-void* __libc_realloc(void*, std::size_t);
-void* __libc_memalign(std::size_t, std::size_t);
-void __libc_free(void*);
-}
-
-namespace {
-
-std::atomic<long> g_allocations{0};
-std::atomic<long> g_openmp_allocations{0};
-std::atomic<bool> g_counting{false};
-// Executable code of the OpenMP runtime: libgomp allocates a team for every parallel region run
-// by a single thread (and work shares now and then), which no caller can avoid; counted apart.
-std::uintptr_t g_openmp_begin = 0;
-std::uintptr_t g_openmp_end = 0;
-
-int FindOpenMpRuntime(dl_phdr_info* info, std::size_t, void*) {
-  if (info->dlpi_name == nullptr || std::strstr(info->dlpi_name, "libgomp") == nullptr) return 0;
-  for (int i = 0; i < info->dlpi_phnum; ++i) {
-    const ElfW(Phdr)& segment = info->dlpi_phdr[i];
-    if (segment.p_type != PT_LOAD || !(segment.p_flags & PF_X)) continue;
-    g_openmp_begin = info->dlpi_addr + segment.p_vaddr;
-    g_openmp_end = g_openmp_begin + segment.p_memsz;
-  }
-  return 1;
-}
-
-// Not inlined, so that a debugger can break on it to see where a counted allocation comes from.
-[[gnu::noinline]] void CountAllocation(const void* caller) {
-  const auto address = reinterpret_cast<std::uintptr_t>(caller);
-  if (address >= g_openmp_begin && address < g_openmp_end)
-    g_openmp_allocations.fetch_add(1, std::memory_order_relaxed);
-  else
-    g_allocations.fetch_add(1, std::memory_order_relaxed);
-}
-
-inline void Count(const void* caller) {
-  if (g_counting.load(std::memory_order_relaxed)) CountAllocation(caller);
-}
-
-void* NewOrThrow(std::size_t size, std::size_t alignment) {
-  void* p = alignment > alignof(std::max_align_t) ? __libc_memalign(alignment, size ? size : 1) : __libc_malloc(size ? size : 1);
-  if (p == nullptr) throw std::bad_alloc();
-  return p;
-}
-
-}  // namespace
-
-// Eigen allocates with malloc, the standard containers with operator new: count both, in this
-// executable and in every library it loads.
-#define MC_CALLER __builtin_return_address(0)
-extern "C" {
-void* malloc(std::size_t size) {
-  Count(MC_CALLER);
-  return __libc_malloc(size);
-}
-void* calloc(std::size_t n, std::size_t size) {
-  Count(MC_CALLER);
-  return __libc_calloc(n, size);
-}
-void* realloc(void* p, std::size_t size) {
-  Count(MC_CALLER);
-  return __libc_realloc(p, size);
-}
-void* memalign(std::size_t alignment, std::size_t size) {
-  Count(MC_CALLER);
-  return __libc_memalign(alignment, size);
-}
-void* aligned_alloc(std::size_t alignment, std::size_t size) {
-  Count(MC_CALLER);
-  return __libc_memalign(alignment, size);
-}
-int posix_memalign(void** p, std::size_t alignment, std::size_t size) {
-  Count(MC_CALLER);
-  *p = __libc_memalign(alignment, size);
-  return *p ? 0 : ENOMEM;
-}
-void free(void* p) { __libc_free(p); }
-}
-
-void* operator new(std::size_t size) {
-  Count(MC_CALLER);
-  return NewOrThrow(size, 0);
-}
-void* operator new[](std::size_t size) {
-  Count(MC_CALLER);
-  return NewOrThrow(size, 0);
-}
-void* operator new(std::size_t size, std::align_val_t a) {
-  Count(MC_CALLER);
-  return NewOrThrow(size, std::size_t(a));
-}
-void* operator new[](std::size_t size, std::align_val_t a) {
-  Count(MC_CALLER);
-  return NewOrThrow(size, std::size_t(a));
-}
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
-  Count(MC_CALLER);
-  return __libc_malloc(size ? size : 1);
-}
-void* operator new[](std::size_t size, const std::nothrow_t&) noexcept {
-  Count(MC_CALLER);
-  return __libc_malloc(size ? size : 1);
-}
-void operator delete(void* p) noexcept { __libc_free(p); }
-void operator delete[](void* p) noexcept { __libc_free(p); }
-void operator delete(void* p, std::size_t) noexcept { __libc_free(p); }
-void operator delete[](void* p, std::size_t) noexcept { __libc_free(p); }
-void operator delete(void* p, std::align_val_t) noexcept { __libc_free(p); }
-void operator delete[](void* p, std::align_val_t) noexcept { __libc_free(p); }
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept { __libc_free(p); }
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { __libc_free(p); }
-#undef MC_CALLER
+#include "tests/cpp/common/allocation_counter.h"
 
 namespace mc {
 namespace {
@@ -152,14 +30,12 @@ namespace {
 class AllocationScope {
  public:
   AllocationScope() {
-    if (g_openmp_end == 0) dl_iterate_phdr(FindOpenMpRuntime, nullptr);
-    g_allocations = 0;
-    g_openmp_allocations = 0;
-    g_counting = true;
+    test::Reset();
+    test::StartCounting();
   }
-  ~AllocationScope() { g_counting = false; }
-  long Count() const { return g_allocations.load(); }
-  long OpenMpCount() const { return g_openmp_allocations.load(); }
+  ~AllocationScope() { test::StopCounting(); }
+  long Count() const { return test::Allocations(); }
+  long OpenMpCount() const { return test::OpenMpAllocations(); }
 };
 
 struct BuildAllocations {
@@ -246,7 +122,7 @@ TEST(AllocationCounter, CountsOperatorNewAndMalloc) {
   Matrix m(30, 30);  // Eigen allocates with malloc
   EXPECT_EQ(scope.Count(), 2);
   EXPECT_EQ(scope.OpenMpCount(), 0);
-  EXPECT_GT(g_openmp_end, g_openmp_begin);  // the runtime's code was found
+  EXPECT_TRUE(test::OpenMpRuntimeFound());  // the runtime's code was found
 }
 
 /// Allocations of each of `repetitions` builds after a first one, with `threads` OpenMP threads.

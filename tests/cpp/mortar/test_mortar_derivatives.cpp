@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Issue 3: exact derivatives of the mortar pair data (D, M, weighted gap, nodal area, overlap
 // area) with respect to master/slave displacements and slave nodal normals, checked against
-// central finite differences (relative 1e-6) on partially overlapping 2D and 3D pairs.
+// central finite differences (relative 1e-6) on partially overlapping 2D (also axisymmetric) and
+// 3D pairs.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -29,9 +30,11 @@ struct Errors {
 template <class K>
 void CheckAgainstFiniteDifferences(const typename K::SlaveMatrix& x1, const typename K::MasterMatrix& x2,
                                    const typename K::SlaveMatrix& n1, int order,
-                                   DualBasisDomain dual = DualBasisDomain::kSlaveElement) {
+                                   DualBasisDomain dual = DualBasisDomain::kSlaveElement, bool axisymmetric = false) {
+  MortarIntegrationSettings settings = Order(order);
+  settings.axisymmetric = axisymmetric;
   K k;
-  ASSERT_TRUE(k.Compute(x1, x2, n1, Order(order), dual));
+  ASSERT_TRUE(k.Compute(x1, x2, n1, settings, dual));
   const double h = 1e-6;
   Errors e_d, e_m, e_gap, e_area, e_nodal;
   K plus, minus;
@@ -45,7 +48,7 @@ void CheckAgainstFiniteDifferences(const typename K::SlaveMatrix& x1, const type
         y1((q - K::kNumMasterDofs) / K::kDim, (q - K::kNumMasterDofs) % K::kDim) += delta;
       else
         m1((q - K::kNumDisplacementDofs) / K::kDim, (q - K::kNumDisplacementDofs) % K::kDim) += delta;
-      ASSERT_TRUE(out.ComputeValues(y1, y2, m1, Order(order), dual));
+      ASSERT_TRUE(out.ComputeValues(y1, y2, m1, settings, dual));
       ASSERT_EQ(out.points.size, k.points.size) << "segmentation pattern changed at q = " << q;
     };
     perturbed(h, plus);
@@ -91,6 +94,15 @@ TEST(MortarDerivatives, Line2D2PartialOverlap) {
   // Master inside the slave (both master ends projected inside).
   const auto x2_inside = Rows<K::MasterMatrix>({0.7, 0.1, 0.2, 0.08});
   CheckAgainstFiniteDifferences<K>(x1, x2_inside, TiltedNormals<K>(x1), 2);
+}
+
+TEST(MortarDerivatives, AxisymmetricLine2D2) {
+  // x = radius: the 2 pi r weight and the r-weighted dual basis are differentiated too.
+  using K = MortarPairKinematics<2, 2, 2>;
+  const auto x1 = Rows<K::SlaveMatrix>({1.8, 0.05, 0.6, -0.02});
+  const auto x2 = Rows<K::MasterMatrix>({0.9, 0.1, 2.2, 0.2});
+  CheckAgainstFiniteDifferences<K>(x1, x2, TiltedNormals<K>(x1), 2, DualBasisDomain::kSlaveElement, true);
+  CheckAgainstFiniteDifferences<K>(x1, x2, TiltedNormals<K>(x1), 3, DualBasisDomain::kPairOverlap, true);
 }
 
 TEST(MortarDerivatives, TrianglesCrossing) {

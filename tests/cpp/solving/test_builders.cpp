@@ -110,6 +110,10 @@ TEST_P(BothBuilders, PatternIsBuiltOncePerDofSet) {
   EXPECT_GT(t.build, 0.0);
   EXPECT_GT(t.solve, 0.0);
   EXPECT_GE(t.sparsity, 0.0);
+  // Issue 4: the element and condition loops are timed apart, both inside `build`.
+  EXPECT_GT(t.elements, 0.0);
+  EXPECT_GT(t.conditions, 0.0);
+  EXPECT_LE(t.elements + t.conditions, t.build);
 
   strategy.SetReformDofsAtEachStep(true);
   for (int step = 4; step <= 5; ++step) {

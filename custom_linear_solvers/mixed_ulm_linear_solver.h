@@ -1,0 +1,142 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/linear_solvers/linear_solver.h"
+
+namespace mc {
+
+/// Static condensation of dual Lagrange multipliers (thesis eqs. 4.37-4.40) around an inner
+/// solver, for the components formulations (VECTOR_LAGRANGE_MULTIPLIER).
+///
+/// The rows of the assembled system are split by their DoF (ProvideAdditionalData):
+///   N other | M master | S_A, S_I active / inactive slave displacements |
+///   LM_A, LM_I active / inactive multipliers (nodal ACTIVE flag).
+/// Each S_A row s is paired with the LM_A unknown l of the same node and component. With dual
+/// multipliers K_{S_A,LM_A} = k D_AA^T is diagonal in that pairing, so row s gives
+///   dlambda_l = (b_s - sum_{c != l} K_sc dx_c) / K_sl                        (eq. 4.40b)
+/// and eliminating dlambda_l from every other row r (r -= K_rl / K_sl * row s) leaves a square
+/// system in displacements whose S_A rows are the former LM_A rows (eqs. 4.38-4.39: P for the
+/// master rows, C for the multiplier rows). The LM_I rows are diagonal (k^2/eps I): dlambda_I is
+/// solved first and its columns move to the right-hand side. The inner solver then solves
+///   A' = A_RC - A_RL K_SL^-1 A_SC,   R = rows \ (S_A, LM_I),  C = columns \ (LM_A, LM_I).
+///
+/// Fixed DoFs (identity rows of the block builder, absent rows of the elimination builder) are
+/// "other": a fixed multiplier leaves its slave row unpaired and vice versa; unpaired rows and
+/// unknowns stay in the condensed system, which is exact for them too.
+///
+/// The result equals the monolithic solution. When the pairing is not diagonal (off-diagonal
+/// |K_sl'| > kDiagonalTolerance * row max, e.g. a dual basis of a partially covered slave
+/// element) or an LM_I row is not diagonal, the full system is solved by the inner solver and
+/// the reason is logged once.
+///
+/// Work per solve with an unchanged pattern and active set: one pass over precomputed index
+/// lists (no search, no allocation); the inner solver is initialized again only when the
+/// condensed pattern changes.
+class MixedULMLinearSolver : public LinearSolver {
+ public:
+  enum class BlockType : std::uint8_t { kOther, kMaster, kSlaveInactive, kSlaveActive, kLmInactive, kLmActive };
+
+  /// Relative size of an entry of K_{S_A,LM_A} (or of an LM_I row) off the pairing, against the
+  /// largest entry of its row, below which the block counts as diagonal.
+  static constexpr double kDiagonalTolerance = 1e-10;
+
+  explicit MixedULMLinearSolver(std::unique_ptr<LinearSolver> inner);
+  MixedULMLinearSolver(const MixedULMLinearSolver&) = delete;
+  MixedULMLinearSolver& operator=(const MixedULMLinearSolver&) = delete;
+  ~MixedULMLinearSolver() override;
+
+  /// "mixed_ulm_linear_solver(<inner name>)".
+  std::string Name() const override;
+  bool IsDirect() const override { return inner_->IsDirect(); }
+  /// Records the new pattern of A; the inner solver is initialized at the next Solve, for the
+  /// condensed or the full system as needed.
+  void Initialize(const SparseMatrix& A) override;
+  /// Without a preceding ProvideAdditionalData for this pattern, solves the full system.
+  /// SingularMatrixError of the inner solver names the row of A, not of the condensed system.
+  void Solve(const SparseMatrix& A, Vector& x, const Vector& b) override;
+  void Clear() override;
+  int IterationsNumber() const override { return inner_->IterationsNumber(); }
+
+  bool AdditionalPhysicalDataIsNeeded() const override { return true; }
+  /// Classifies every row from its DoF (ACTIVE, SLAVE, MASTER flags of the node, fixity).
+  void ProvideAdditionalData(const SparseMatrix& A, const std::vector<Dof*>& dof_of_equation) override;
+
+  const LinearSolver& Inner() const noexcept { return *inner_; }
+  /// Block of each row of the last ProvideAdditionalData (fixed DoFs are kOther).
+  const std::vector<BlockType>& BlockTypes() const noexcept { return types_; }
+  /// Whether the last Solve went through the condensed system.
+  bool LastSolveWasCondensed() const noexcept { return last_condensed_; }
+  /// Why the last Solve solved the full system (empty when it was condensed).
+  const std::string& FallbackReason() const noexcept { return fallback_reason_; }
+  /// Size of the last condensed system and number of (S_A, LM_A) pairs eliminated.
+  long CondensedSize() const noexcept { return static_cast<long>(cond_to_column_.size()); }
+  long NumberOfPairs() const noexcept { return static_cast<long>(pair_slave_.size()); }
+  /// Times the inner solver was initialized (for the condensed or the full system).
+  int InnerInitializations() const noexcept { return inner_initializations_; }
+
+ private:
+  enum class InnerState { kNone, kFull, kCondensed };
+  /// One term K_rl K_sc / K_sl of a condensed entry: positions in A's values and the pair.
+  struct Correction {
+    int rl;
+    int sc;
+    int pair;
+  };
+
+  void BuildStructure(const SparseMatrix& A);
+  void BuildRowLists(const SparseMatrix& A);
+  /// Empty when the pairing and the LM_I rows are diagonal; else the reason, naming the DoFs.
+  std::string CheckDiagonalBlocks(const SparseMatrix& A);
+  /// Solves A x = b with the inner solver; `warn` logs the reason (once per solver).
+  void SolveFull(const SparseMatrix& A, Vector& x, const Vector& b, std::string reason, bool warn);
+  void SolveCondensed(const SparseMatrix& A, Vector& x, const Vector& b);
+  std::string DofName(int row) const;
+
+  std::unique_ptr<LinearSolver> inner_;
+  InnerState inner_state_ = InnerState::kNone;
+  int inner_initializations_ = 0;
+
+  // Classification (ProvideAdditionalData).
+  std::vector<BlockType> types_;
+  std::vector<BlockType> new_types_;
+  std::vector<Dof*> dofs_;
+  bool data_valid_ = false;       ///< types_ and dofs_ describe the rows of the current pattern
+  bool structure_valid_ = false;  ///< the index lists below match types_ and the pattern of A
+
+  // Structure (BuildStructure), rebuilt when the pattern or the classification changes.
+  std::vector<int> pair_slave_;       ///< row s of each pair
+  std::vector<int> pair_lm_;          ///< column l of each pair
+  std::vector<int> pair_pivot_;       ///< position of K_sl in A's values
+  std::vector<int> lm_inactive_;      ///< LM_I rows
+  std::vector<int> lm_inactive_diag_; ///< position of their diagonal (-1 if absent)
+  std::vector<int> row_to_cond_;      ///< condensed row of each row of A, -1 if eliminated
+  std::vector<int> column_to_cond_;   ///< condensed column of each column of A, -1 if eliminated
+  std::vector<int> cond_to_column_;
+  std::vector<int> eliminated_pair_;  ///< pair of each eliminated LM_A column, -1 otherwise
+  /// Entries of the S_A and LM_I rows: (position in A's values, column), CSR-like.
+  std::vector<int> tracked_row_;      ///< index into row_offsets_ of each row, -1 if untracked
+  std::vector<int> row_offsets_;
+  std::vector<int> row_positions_;
+  std::vector<int> row_columns_;
+  SparseMatrix condensed_;
+  std::vector<int> cond_source_;      ///< position in A's values of each condensed entry, -1 if none
+  std::vector<int> cond_offsets_;     ///< corrections of each condensed entry
+  std::vector<Correction> corrections_;
+
+  // Work vectors.
+  Vector inv_pivot_;
+  Vector b_work_;
+  Vector b_condensed_;
+  Vector x_condensed_;
+
+  bool last_condensed_ = false;
+  std::string fallback_reason_;
+  bool warned_ = false;
+};
+
+}  // namespace mc
