@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "custom_processes/contact_search_process.h"
 
+#include "core/solving/parallel_utilities.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -14,6 +16,7 @@
 
 #include "core/geometries/reference_element.h"
 #include "core/model/registry.h"
+#include "core/solving/parallel_utilities.h"
 #include "core/utilities/error.h"
 #include "core/utilities/logger.h"
 #include "core/utilities/string_utilities.h"
@@ -294,8 +297,7 @@ ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
   stats.master_conditions = masters.size();
 
   std::vector<FaceData> faces(all.size());
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < all.size(); ++i) faces[i] = MakeFaceData(all[i]);
+  ParallelForEachIndex(all.size(), [&](std::size_t i) { faces[i] = MakeFaceData(all[i]); });
 
   std::vector<Array3> centers;
   centers.reserve(masters.size());

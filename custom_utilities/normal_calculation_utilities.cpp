@@ -5,19 +5,18 @@
 #include <vector>
 
 #include "core/geometries/reference_element.h"
+#include "core/solving/parallel_utilities.h"
 #include "core/variables/kernel_variables.h"
 #include "custom_utilities/nodal_normal_support.h"
 
 namespace mc {
 
 void NormalCalculationUtilities::ComputeConditionsNormals(ModelPart& part) {
-  const std::size_t n = part.NumberOfConditions();
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    Condition& condition = *part.Conditions()[i];
+  // A degenerate (e.g. collapsed) face throws: the helper carries the error out of the threads.
+  ParallelForEachEntity(part.Conditions(), [](Condition& condition) {
     const Geometry& geometry = condition.GetGeometry();
     condition.SetValue(NORMAL, geometry.UnitNormal(geometry.Reference().LocalCenter()));
-  }
+  });
 }
 
 void NormalCalculationUtilities::ComputeNodalNormals(ModelPart& part) {
