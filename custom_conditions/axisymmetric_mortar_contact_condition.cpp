@@ -26,17 +26,13 @@ template <class TFormulation>
 std::unique_ptr<Condition> AxisymmetricMortarContactCondition<TFormulation>::Create(IndexType id,
                                                                                   Geometry::NodesArray nodes,
                                                                                   Properties* properties) const {
-  return std::make_unique<AxisymmetricMortarContactCondition>(
-      id, Geometry(this->GetGeometry().Type(), std::move(nodes)), properties, this->GetPairedGeometry());
+  return this->CreateOfType(*this, id, std::move(nodes), properties);
 }
 
 template <class TFormulation>
 std::unique_ptr<PairedCondition> AxisymmetricMortarContactCondition<TFormulation>::CreatePaired(
     IndexType id, Condition& slave, Condition& master, Properties* properties) const {
-  auto pair = std::make_unique<AxisymmetricMortarContactCondition>(id, slave.GetGeometry(), properties,
-                                                                   master.GetGeometry());
-  pair->SetPair(&slave, &master);
-  return pair;
+  return this->template CreatePairedOfType<AxisymmetricMortarContactCondition>(id, slave, master, properties);
 }
 
 template class AxisymmetricMortarContactCondition<ALMFrictionlessMortarContactCondition<2, 2, 2>>;

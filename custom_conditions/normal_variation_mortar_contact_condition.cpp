@@ -49,17 +49,13 @@ template <class TFormulation>
 std::unique_ptr<Condition> NormalVariationMortarContactCondition<TFormulation>::Create(IndexType id,
                                                                                      Geometry::NodesArray nodes,
                                                                                      Properties* properties) const {
-  return std::make_unique<NormalVariationMortarContactCondition>(
-      id, Geometry(this->GetGeometry().Type(), std::move(nodes)), properties, this->GetPairedGeometry());
+  return this->CreateOfType(*this, id, std::move(nodes), properties);
 }
 
 template <class TFormulation>
 std::unique_ptr<PairedCondition> NormalVariationMortarContactCondition<TFormulation>::CreatePaired(
     IndexType id, Condition& slave, Condition& master, Properties* properties) const {
-  auto pair = std::make_unique<NormalVariationMortarContactCondition>(id, slave.GetGeometry(), properties,
-                                                                      master.GetGeometry());
-  pair->SetPair(&slave, &master);
-  return pair;
+  return this->template CreatePairedOfType<NormalVariationMortarContactCondition>(id, slave, master, properties);
 }
 
 template <class TFormulation>

@@ -50,6 +50,23 @@ class PairedCondition : public Condition {
   virtual bool NeedsNodalNormalSupport() const { return false; }
   virtual void SetNodalNormalSupport(std::shared_ptr<const NodalNormalSupport> support) {}
 
+ protected:
+  /// Create and CreatePaired of a concrete pair class T (constructed like PairedCondition): a
+  /// condition on `nodes` with the prototype's geometry types, and a pair on `slave`'s nodes.
+  template <class T>
+  static std::unique_ptr<Condition> CreateOfType(const T& prototype, IndexType id, Geometry::NodesArray nodes,
+                                                 Properties* properties) {
+    return std::make_unique<T>(id, Geometry(prototype.GetGeometry().Type(), std::move(nodes)), properties,
+                               prototype.GetPairedGeometry());
+  }
+  template <class T>
+  static std::unique_ptr<PairedCondition> CreatePairedOfType(IndexType id, Condition& slave, Condition& master,
+                                                             Properties* properties) {
+    auto pair = std::make_unique<T>(id, slave.GetGeometry(), properties, master.GetGeometry());
+    pair->SetPair(&slave, &master);
+    return pair;
+  }
+
  private:
   Geometry paired_geometry_;
   Condition* slave_ = nullptr;

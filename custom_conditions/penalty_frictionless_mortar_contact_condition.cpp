@@ -9,16 +9,13 @@ namespace mc {
 template <int TDim, int TNumNodes, int TNumNodesMaster>
 std::unique_ptr<Condition> PenaltyFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::Create(IndexType id, Geometry::NodesArray nodes,
                                                                   Properties* properties) const {
-  return std::make_unique<PenaltyFrictionlessMortarContactCondition>(id, Geometry(this->GetGeometry().Type(), std::move(nodes)), properties,
-                                                 this->GetPairedGeometry());
+  return this->CreateOfType(*this, id, std::move(nodes), properties);
 }
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
 std::unique_ptr<PairedCondition> PenaltyFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::CreatePaired(IndexType id, Condition& slave, Condition& master,
                                                                                Properties* properties) const {
-  auto pair = std::make_unique<PenaltyFrictionlessMortarContactCondition>(id, slave.GetGeometry(), properties, master.GetGeometry());
-  pair->SetPair(&slave, &master);
-  return pair;
+  return this->template CreatePairedOfType<PenaltyFrictionlessMortarContactCondition>(id, slave, master, properties);
 }
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>

@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "custom_processes/contact_search_process.h"
 
-#include "core/solving/parallel_utilities.h"
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>

@@ -16,7 +16,8 @@ using mortar_detail::ValueOf;
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
-/// A_e of a 2D slave line for the axisymmetric inner product int (.) 2 pi r ds.
+/// A_e of a 2D slave line for the axisymmetric inner product int (.) 2 pi r ds (N_i N_j r is cubic
+/// on the line, so 2-point Gauss is exact).
 template <class T, int TNumNodes>
 Eigen::Matrix<T, TNumNodes, TNumNodes> AxisymmetricAe(const Eigen::Matrix<T, TNumNodes, 2>& x1) {
   using SF1 = MortarShapeFunctions<TNumNodes>;
@@ -44,20 +45,6 @@ struct PairValues {
   Eigen::Matrix<T, TNumNodes, 1> weighted_gap;
 };
 
-/// D, M and the gaps once the points and A_e are known.
-template <class T, int TDim, int TNumNodes, int TNumNodesMaster>
-bool FinishPair(const Eigen::Matrix<T, TNumNodes, TDim>& x1, const Eigen::Matrix<T, TNumNodesMaster, TDim>& x2,
-                const Eigen::Matrix<T, TNumNodes, TDim>& n1, PairValues<T, TDim, TNumNodes, TNumNodesMaster>& out) {
-  if (!std::isfinite(ValueOf(out.ae(0, 0))))
-    throw Error(Concat("mortar integration: degenerate slave element (zero or negative measure), "
-                       "first node at (",
-                       ValueOf(x1(0, 0)), ", ", ValueOf(x1(0, 1)), ")"));
-  out.op.Compute(out.points, out.ae);
-  out.gap_vector = out.op.D * x1 - out.op.M * x2;
-  for (int j = 0; j < TNumNodes; ++j) out.weighted_gap(j) = -n1.row(j).dot(out.gap_vector.row(j));
-  return true;
-}
-
 template <class T, int TDim, int TNumNodes, int TNumNodesMaster>
 bool ComputePair(const Eigen::Matrix<T, TNumNodes, TDim>& x1,
                  const Eigen::Matrix<T, TNumNodesMaster, TDim>& x2,
@@ -69,19 +56,11 @@ bool ComputePair(const Eigen::Matrix<T, TNumNodes, TDim>& x1,
   using SF1 = MortarShapeFunctions<TNumNodes>;
   if (!Exact::template Compute<T>(x1, x2, n1, settings, out.points)) return false;
   if constexpr (TDim == 2) {
-    if (settings.axisymmetric) {
+    if (settings.axisymmetric)
       for (int g = 0; g < out.points.size; ++g) {
         auto& p = out.points.points[g];
         p.weight *= kTwoPi * SF1::template N<T>(p.slave_local).dot(x1.col(0));
       }
-      // The dual basis must be biorthogonal in the same (2 pi r weighted) inner product as D and
-      // M, or D would not be diagonal: A_e from r-weighted element integrals. N_i N_j r is cubic
-      // on the line, so 2-point Gauss is exact.
-      if (dual_basis == DualBasisDomain::kSlaveElement) {
-        out.ae = AxisymmetricAe<T, TNumNodes>(x1);
-        return FinishPair(x1, x2, n1, out);
-      }
-    }
   } else if (settings.axisymmetric) {
     throw Error("mortar integration: the axisymmetric formulation exists in 2D only");
   }
@@ -99,8 +78,23 @@ bool ComputePair(const Eigen::Matrix<T, TNumNodes, TDim>& x1,
     out.ae = Dual::template AeFromIntegrals<T>(d, m);
     have_ae = std::isfinite(ValueOf(out.ae(0, 0)));
   }
-  if (!have_ae) out.ae = Dual::template ComputeAe<T>(x1);
-  return FinishPair(x1, x2, n1, out);
+  if (!have_ae) {
+    // The dual basis must be biorthogonal in the inner product of D and M (2 pi r weighted in
+    // axisymmetry), or D would not be diagonal.
+    if constexpr (TDim == 2)
+      out.ae = settings.axisymmetric ? AxisymmetricAe<T, TNumNodes>(x1) : Dual::template ComputeAe<T>(x1);
+    else
+      out.ae = Dual::template ComputeAe<T>(x1);
+  }
+  if (!std::isfinite(ValueOf(out.ae(0, 0))))
+    throw Error(Concat("mortar integration: degenerate slave element (zero or negative measure), "
+                       "first node at (",
+                       ValueOf(x1(0, 0)), ", ", ValueOf(x1(0, 1)), ")"));
+
+  out.op.Compute(out.points, out.ae);
+  out.gap_vector = out.op.D * x1 - out.op.M * x2;
+  for (int j = 0; j < TNumNodes; ++j) out.weighted_gap(j) = -n1.row(j).dot(out.gap_vector.row(j));
+  return true;
 }
 
 }  // namespace

@@ -20,8 +20,9 @@ void NormalCalculationUtilities::ComputeConditionsNormals(ModelPart& part) {
 }
 
 void NormalCalculationUtilities::ComputeNodalNormals(ModelPart& part) {
-  // Conditions are few per node: accumulate serially in a map keyed by node to stay simple
-  // and deterministic; the per-condition normals (the costly part) are computed in parallel.
+  // The condition normals are kept for the search and the interface checks. Conditions are few
+  // per node: the area vectors are accumulated serially in a map keyed by node, which stays
+  // simple and deterministic.
   ComputeConditionsNormals(part);
   std::unordered_map<Node*, Array3> sums;
   sums.reserve(part.NumberOfNodes());
