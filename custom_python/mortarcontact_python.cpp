@@ -2,10 +2,22 @@
 // The extension module `mortarcontact._core`.
 #include "custom_python/python_module.h"
 
+#include <cstdlib>
+#include <string>
+
+#include "core/utilities/heap_tuning.h"
+
 namespace py = pybind11;
 
 PYBIND11_MODULE(_core, m) {
   m.doc() = "mortarcontact C++ core: kernel, structural substrate and solvers";
+
+  const char* heap_tuning = std::getenv("MORTARCONTACT_HEAP_TUNING");
+  const bool tuned = !(heap_tuning && std::string(heap_tuning) == "0") && mc::TuneHeapForRepeatedFactorizations();
+  m.attr("HEAP_TUNED") = tuned;
+  m.def("TuneHeapForRepeatedFactorizations", &mc::TuneHeapForRepeatedFactorizations,
+        "Keep freed heap memory for the next factorization (glibc); applied on import unless "
+        "MORTARCONTACT_HEAP_TUNING=0.");
 
   // User mistakes, missing features and failed solutions map to their own Python types so
   // that the command line can print them without a traceback.

@@ -51,6 +51,9 @@ class ConstitutiveLaw {
   virtual int StrainSize() const = 0;
   /// True when the law needs the deformation gradient (hyperelastic laws).
   virtual bool IsFiniteStrain() const { return false; }
+  /// True when the tangent does not depend on the strain (a linear law): an element with
+  /// linear kinematics then has a stiffness that stays the same through a solution step.
+  virtual bool HasConstantTangent() const { return false; }
 
   /// Validates the properties: throws InputError naming the property id, the variable and
   /// the offending value (missing, negative, zero, NaN, out of range).

@@ -217,11 +217,24 @@ void BuilderAndSolver::BuildConstraintMatrix() {
 
 // Assembly --------------------------------------------------------------------------------------
 
+bool BuilderAndSolver::ElementMatrixIsConstant(const Scheme& scheme, const ModelPart& model_part) const {
+  if (!scheme.PassesEntityLeftHandSide()) return false;
+  const auto& elements = model_part.Elements();
+  return std::all_of(elements.begin(), elements.end(),
+                     [](const Element* e) { return !e->IsActive() || e->HasConstantLeftHandSide(); });
+}
+
 void BuilderAndSolver::Assemble(Scheme& scheme, ModelPart& model_part, Mode mode) {
   const bool lhs = mode != Mode::kRhs;
   const bool rhs = mode != Mode::kLhs;
   SparseMatrix& target = constraints_.empty() ? A_ : K_;
-  if (lhs) std::fill(target.valuePtr(), target.valuePtr() + target.nonZeros(), 0.0);
+  const auto nnz = static_cast<std::size_t>(target.nonZeros());
+  const bool reuse = lhs && element_matrix_valid_ && element_matrix_pattern_ == pattern_version_ &&
+                     element_matrix_.size() == nnz;
+  if (reuse)
+    std::copy(element_matrix_.begin(), element_matrix_.end(), target.valuePtr());
+  else if (lhs)
+    std::fill(target.valuePtr(), target.valuePtr() + nnz, 0.0);
   if (rhs) rhs_raw_.setZero();
   const int* outer = target.outerIndexPtr();
   const int* inner = target.innerIndexPtr();
@@ -235,20 +248,22 @@ void BuilderAndSolver::Assemble(Scheme& scheme, ModelPart& model_part, Mode mode
   // local systems usually differ in size and a shared buffer would be reallocated at each switch.
   // Scatter adds are atomic only when threads share the loop: an atomic add of a double is a
   // compare-and-swap loop, several times the cost of the plain add of a serial run.
-  auto assemble = [&](auto& e, auto concurrent) {
+  auto assemble = [&](auto& e, Mode entity_mode, auto concurrent) {
     if (!e.IsActive()) return;
+    const bool with_lhs = entity_mode != Mode::kRhs;
+    const bool with_rhs = entity_mode != Mode::kLhs;
     static thread_local Matrix local_lhs;
     static thread_local Vector local_rhs;
     static thread_local EquationIdVectorType ids;
-    if (mode == Mode::kBoth)
+    if (entity_mode == Mode::kBoth)
       scheme.CalculateSystemContributions(e, local_lhs, local_rhs, ids, info);
-    else if (lhs)
+    else if (with_lhs)
       scheme.CalculateLHSContribution(e, local_lhs, ids, info);
     else
       scheme.CalculateRHSContribution(e, local_rhs, ids, info);
     const auto n = static_cast<Eigen::Index>(ids.size());
-    if ((lhs && (local_lhs.rows() != n || local_lhs.cols() != n)) || (rhs && local_rhs.size() != n))
-      throw Error(Concat(e.Info(), " ", e.Id(), ": local system of size ", lhs ? local_lhs.rows() : local_rhs.size(),
+    if ((with_lhs && (local_lhs.rows() != n || local_lhs.cols() != n)) || (with_rhs && local_rhs.size() != n))
+      throw Error(Concat(e.Info(), " ", e.Id(), ": local system of size ", with_lhs ? local_lhs.rows() : local_rhs.size(),
                          " for ", n, " equation ids"));
     for (const auto id : ids)
       if (id < 0 || id >= n_all)
@@ -262,10 +277,10 @@ void BuilderAndSolver::Assemble(Scheme& scheme, ModelPart& model_part, Mode mode
         target += value;
       }
     };
-    if (rhs) {
+    if (with_rhs) {
       for (Eigen::Index i = 0; i < n; ++i) add(b[ids[static_cast<std::size_t>(i)]], local_rhs[i]);
     }
-    if (!lhs) return;
+    if (!with_lhs) return;
     for (Eigen::Index j = 0; j < n; ++j) {
       const auto J = ids[static_cast<std::size_t>(j)];
       if (J >= n_matrix) continue;
@@ -284,19 +299,29 @@ void BuilderAndSolver::Assemble(Scheme& scheme, ModelPart& model_part, Mode mode
   auto shared = [](const auto& items) {
     return omp_get_max_threads() > 1 && static_cast<long>(items.size()) >= kMinParallelEntities;
   };
-  auto assemble_all = [&](auto& items) {
+  auto assemble_all = [&](auto& items, Mode items_mode) {
     using Item = std::remove_reference_t<decltype(*items[0])>;
     if (shared(items))
-      ParallelForEachEntity(items, [&](Item& e) { assemble(e, std::true_type{}); });
+      ParallelForEachEntity(items, [&](Item& e) { assemble(e, items_mode, std::true_type{}); });
     else
-      ParallelForEachEntity(items, [&](Item& e) { assemble(e, std::false_type{}); });
+      ParallelForEachEntity(items, [&](Item& e) { assemble(e, items_mode, std::false_type{}); });
   };
   {
     ScopedTimer timer(timings_.elements);
-    assemble_all(model_part.Elements());
+    if (reuse) {
+      ++element_matrix_reuses_;
+      if (rhs) assemble_all(model_part.Elements(), Mode::kRhs);
+    } else {
+      assemble_all(model_part.Elements(), mode);
+      if (lhs && ElementMatrixIsConstant(scheme, model_part)) {
+        element_matrix_.assign(target.valuePtr(), target.valuePtr() + nnz);
+        element_matrix_pattern_ = pattern_version_;
+        element_matrix_valid_ = true;
+      }
+    }
   }
   ScopedTimer timer(timings_.conditions);
-  assemble_all(model_part.Conditions());
+  assemble_all(model_part.Conditions(), mode);
 }
 
 void BuilderAndSolver::FinishResidual() {
@@ -487,6 +512,9 @@ void BuilderAndSolver::Clear() {
   numbered_ = false;
   pattern_valid_ = false;
   solver_pattern_version_ = -1;
+  element_matrix_.clear();
+  element_matrix_.shrink_to_fit();
+  element_matrix_valid_ = false;
   if (linear_solver_) linear_solver_->Clear();
 }
 

@@ -110,6 +110,15 @@ class BuilderAndSolver {
   int PatternBuildCount() const noexcept { return pattern_builds_; }
   /// Forces a new pattern at the next build (e.g. after contact pairs changed the connectivity).
   void InvalidatePattern() noexcept { pattern_valid_ = false; }
+  /// Drops the element matrix kept for reuse (see ElementMatrixReuses); strategies call it at
+  /// every InitializeSolutionStep, as properties or the reference geometry may change between
+  /// steps. Within a step, when the scheme passes element matrices through unchanged and every
+  /// active element HasConstantLeftHandSide (small displacement, linear laws), the elements'
+  /// part of the matrix is assembled at the first build and copied at the next ones, where the
+  /// elements compute their residual only.
+  void ForgetElementMatrix() noexcept { element_matrix_valid_ = false; }
+  /// Number of builds that reused the element matrix (tests check the reuse).
+  int ElementMatrixReuses() const noexcept { return element_matrix_reuses_; }
   /// Frees the system, the DoF set and the factorization.
   virtual void Clear();
 
@@ -139,6 +148,7 @@ class BuilderAndSolver {
   void BuildPattern(ModelPart& model_part);
   void BuildConstraintMatrix();
   void Assemble(Scheme& scheme, ModelPart& model_part, Mode mode);
+  bool ElementMatrixIsConstant(const Scheme& scheme, const ModelPart& model_part) const;
   void FinishResidual();
   void ReduceSystem(Mode mode);
   void CheckEmptyColumns() const;
@@ -164,6 +174,10 @@ class BuilderAndSolver {
   Vector x_system_;
   Vector dx_;
   Timings timings_;
+  std::vector<double> element_matrix_;  ///< element part of the assembled matrix values
+  long element_matrix_pattern_ = -1;    ///< pattern_version_ it was assembled on
+  bool element_matrix_valid_ = false;
+  int element_matrix_reuses_ = 0;
 };
 
 }  // namespace mc

@@ -30,6 +30,7 @@ void ImplicitSolvingStrategy::InitializeSolutionStep() {
     builder_->SetUpSystem();
     dofs_ready_ = true;
   }
+  builder_->ForgetElementMatrix();
   scheme_->InitializeSolutionStep(model_part_);
 }
 

@@ -11,6 +11,7 @@ namespace mc {
 class ResidualBasedIncrementalUpdateStaticScheme : public Scheme {
  public:
   std::string Name() const override { return "static"; }
+  bool PassesEntityLeftHandSide() const override { return true; }
 };
 
 }  // namespace mc

@@ -41,6 +41,10 @@ class Scheme {
   virtual void GetDofList(const Entity& entity, DofsVectorType& dofs, const ProcessInfo& info) const {
     entity.GetDofList(dofs, info);
   }
+  /// True when the LHS contribution of an entity is its own left-hand side, with no term of
+  /// the scheme added (inertia, damping): a constant element LHS then gives a constant
+  /// contribution. Defaults to false, the safe answer for a scheme that adds terms.
+  virtual bool PassesEntityLeftHandSide() const { return false; }
   virtual void CalculateSystemContributions(Entity& entity, Matrix& lhs, Vector& rhs, EquationIdVectorType& ids,
                                             const ProcessInfo& info);
   virtual void CalculateLHSContribution(Entity& entity, Matrix& lhs, EquationIdVectorType& ids,

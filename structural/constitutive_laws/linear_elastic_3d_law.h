@@ -12,6 +12,7 @@ class LinearElastic3DLaw : public ElasticLaw {
   LinearElastic3DLaw() : ElasticLaw(StressState::ThreeD) {}
   std::string Name() const override { return "LinearElastic3DLaw"; }
   std::unique_ptr<ConstitutiveLaw> Clone() const override { return std::make_unique<LinearElastic3DLaw>(*this); }
+  bool HasConstantTangent() const override { return true; }
 
  protected:
   explicit LinearElastic3DLaw(StressState state) : ElasticLaw(state) {}

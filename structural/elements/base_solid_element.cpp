@@ -126,6 +126,11 @@ void BaseSolidElement::GetDofList(DofsVectorType& dofs, const ProcessInfo& info)
     for (int k = 0; k < dim; ++k) dofs[a * dim + k] = &geometry[a].GetDof(*kDisplacement[k]);
 }
 
+bool BaseSolidElement::HasConstantLeftHandSide() const {
+  return kinematics_ == Kinematics::SmallDisplacement && !laws_.empty() &&
+         std::all_of(laws_.begin(), laws_.end(), [](const auto& law) { return law->HasConstantTangent(); });
+}
+
 void BaseSolidElement::Initialize(const ProcessInfo& info) {
   if (!HasProperties() || !GetProperties().HasConstitutiveLaw())
     throw InputError(Concat("element ", Id(), " (", Info(), "): ",

@@ -40,6 +40,8 @@ class BaseSolidElement : public Element {
 
   /// Clones the properties' law once per integration point.
   void Initialize(const ProcessInfo& info) override;
+  /// Small displacement with linear laws at every integration point.
+  bool HasConstantLeftHandSide() const override;
   void FinalizeSolutionStep(const ProcessInfo& info) override;
 
   void CalculateLocalSystem(Matrix& lhs, Vector& rhs, const ProcessInfo& info) override;

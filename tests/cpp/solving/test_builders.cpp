@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Issue 3 (solving): block and elimination builders give the same solution and reactions,
-// reactions balance the loads, the sparsity pattern is built once per DoF set, master-slave
+// reactions balance the loads, the sparsity pattern is built once per DoF set, linear element
+// matrices are reused within a step (issue 4), master-slave
 // constraints give the exact tied solution, singular systems name the free node/variable.
 #include <gtest/gtest.h>
 
@@ -121,6 +122,106 @@ TEST_P(BothBuilders, PatternIsBuiltOncePerDofSet) {
     ASSERT_TRUE(strategy.Solve());
   }
   EXPECT_EQ(builder->PatternBuildCount(), 3);
+}
+
+// A support on the DISPLACEMENT_X of one node pulling back with the force c u^3: the nonlinear
+// part of the problem sits in a condition, as contact does, so that the springs stay linear.
+class CubicSupport : public Condition {
+ public:
+  CubicSupport(IndexType id, Geometry geometry, double c) : Condition(id, std::move(geometry), nullptr), c_(c) {}
+  std::string Info() const override { return "CubicSupport"; }
+  std::unique_ptr<Condition> Create(IndexType id, Geometry::NodesArray nodes, Properties*) const override {
+    return std::make_unique<CubicSupport>(id, Geometry(GetGeometry().Type(), std::move(nodes)), c_);
+  }
+  void GetDofList(DofsVectorType& dofs, const ProcessInfo&) const override {
+    dofs.assign(1, &GetGeometry()[0].GetDof(DISPLACEMENT_X));
+  }
+  void CalculateLocalSystem(Matrix& lhs, Vector& rhs, const ProcessInfo&) override {
+    const double u = GetGeometry()[0].FastGetSolutionStepValue(DISPLACEMENT_X);
+    lhs.setConstant(1, 1, 3.0 * c_ * u * u);
+    rhs.setConstant(1, -c_ * u * u * u);
+  }
+  void CalculateLeftHandSide(Matrix& lhs, const ProcessInfo& info) override {
+    Vector rhs;
+    CalculateLocalSystem(lhs, rhs, info);
+  }
+  void CalculateRightHandSide(Vector& rhs, const ProcessInfo& info) override {
+    Matrix lhs;
+    CalculateLocalSystem(lhs, rhs, info);
+  }
+
+ private:
+  double c_;
+};
+
+// A static scheme that does not promise to pass element matrices through unchanged.
+class OpaqueStaticScheme : public ResidualBasedIncrementalUpdateStaticScheme {
+ public:
+  bool PassesEntityLeftHandSide() const override { return false; }
+};
+
+// Springs 1-2-3-4 (k = 1, 2, 3), node 1 fixed, cubic support c = 5 and load F at node 4:
+// k_eq u4 + c u4^3 = F with 1/k_eq = 1 + 1/2 + 1/3.
+struct StiffeningChain {
+  Model model;
+  ModelPart& mp = test::MakeModelPart(model);
+  test::TestLoad* load = nullptr;
+  StiffeningChain() {
+    for (IndexType i = 1; i <= 4; ++i) AddNode(mp, i, static_cast<double>(i), 0.0);
+    for (IndexType i = 1; i <= 3; ++i) AddSpring(mp, i, i, i + 1, static_cast<double>(i));
+    load = &AddLoad(mp, 1, 4, 0.0);
+    mp.AddCondition(std::make_unique<CubicSupport>(2, Geometry(GeometryType::Point2D, {&mp.GetNode(4)}), 5.0));
+    mp.GetNode(1).Fix(DISPLACEMENT_X);
+  }
+  double U4() const { return mp.GetNode(4).FastGetSolutionStepValue(DISPLACEMENT_X); }
+};
+
+// Issue 4: linear elements are assembled once per step and their matrix copied at the next
+// Newton iterations; the iterates are those of a full assembly.
+TEST_P(BothBuilders, LinearElementMatrixIsReusedWithinAStepWithTheSameIterates) {
+  StiffeningChain reused, rebuilt;
+  auto builder = MakeBuilder(GetParam());
+  auto reference_builder = MakeBuilder(GetParam());
+  NewtonRaphsonStrategy strategy(reused.mp, std::make_shared<ResidualBasedIncrementalUpdateStaticScheme>(),
+                                 std::make_shared<DisplacementCriteria>(1e-12, 1e-15), builder, 30);
+  NewtonRaphsonStrategy reference(rebuilt.mp, std::make_shared<OpaqueStaticScheme>(),
+                                  std::make_shared<DisplacementCriteria>(1e-12, 1e-15), reference_builder, 30);
+  const double k_eq = 1.0 / (1.0 + 1.0 / 2.0 + 1.0 / 3.0);
+  int expected_reuses = 0;
+  for (int step = 1; step <= 2; ++step) {
+    for (StiffeningChain* c : {&reused, &rebuilt}) {
+      c->mp.CloneTimeStep(step);
+      c->load->SetForce(4.0 * step);
+    }
+    ASSERT_TRUE(strategy.Solve());
+    ASSERT_TRUE(reference.Solve());
+    const auto& h = strategy.IterationHistory();
+    const auto& h_ref = reference.IterationHistory();
+    ASSERT_EQ(h.size(), h_ref.size());
+    ASSERT_GE(h.size(), 3u);
+    for (std::size_t k = 0; k < h.size(); ++k)
+      EXPECT_NEAR(h[k].increment_norm, h_ref[k].increment_norm, 1e-14 * (1.0 + h_ref[k].increment_norm));
+    const double u = reused.U4();
+    EXPECT_NEAR(k_eq * u + 5.0 * u * u * u, 4.0 * step, 1e-9);
+    // The first build of each step assembles the elements; every later one reuses them.
+    expected_reuses += static_cast<int>(h.size()) - 1;
+    EXPECT_EQ(builder->ElementMatrixReuses(), expected_reuses) << "step " << step;
+  }
+  EXPECT_EQ(reference_builder->ElementMatrixReuses(), 0);
+}
+
+// A nonlinear element anywhere turns the reuse off.
+TEST(BlockBuilder, NonlinearElementDisablesElementMatrixReuse) {
+  StiffeningChain c;
+  AddSpring(c.mp, 4, 2, 3, 1.0, 1.0);
+  auto builder = MakeBuilder("block");
+  NewtonRaphsonStrategy strategy(c.mp, std::make_shared<ResidualBasedIncrementalUpdateStaticScheme>(),
+                                 std::make_shared<DisplacementCriteria>(1e-12, 1e-15), builder, 30);
+  c.mp.CloneTimeStep(1);
+  c.load->SetForce(4.0);
+  ASSERT_TRUE(strategy.Solve());
+  EXPECT_GE(strategy.IterationHistory().size(), 3u);
+  EXPECT_EQ(builder->ElementMatrixReuses(), 0);
 }
 
 // Two springs 1-2 (k1) and 3-4 (k2), nodes 1 and 3 fixed, u4 = 2 u2 + 0.01, load P at node 2.

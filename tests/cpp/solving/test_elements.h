@@ -24,6 +24,7 @@ class TestSpring : public Element {
   void CalculateLocalSystem(Matrix& lhs, Vector& rhs, const ProcessInfo& info) override;
   void CalculateLeftHandSide(Matrix& lhs, const ProcessInfo& info) override;
   void CalculateRightHandSide(Vector& rhs, const ProcessInfo& info) override;
+  bool HasConstantLeftHandSide() const override { return c_ == 0.0; }
 
  private:
   double k_;
