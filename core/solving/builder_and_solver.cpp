@@ -224,13 +224,30 @@ bool BuilderAndSolver::ElementMatrixIsConstant(const Scheme& scheme, const Model
                      [](const Element* e) { return !e->IsActive() || e->HasConstantLeftHandSide(); });
 }
 
+// out += sign * K_e u, with K_e the kept element matrix (on the pattern of `target`) and u the
+// current DoF values; used only when every DoF has a matrix row (n_assembled_ == all).
+void BuilderAndSolver::AddElementMatrixProduct(const SparseMatrix& target, double sign, Vector& out) {
+  values_.resize(static_cast<Eigen::Index>(dofs_.size()));
+  for (const Dof* dof : dofs_) values_[dof->equation_id] = dof->Value();
+  const int* outer = target.outerIndexPtr();
+  const int* inner = target.innerIndexPtr();
+  const double* k = element_matrix_.data();
+  for (Eigen::Index j = 0; j < target.outerSize(); ++j) {
+    const double uj = sign * values_[j];
+    if (uj == 0.0) continue;
+    for (int p = outer[j]; p < outer[j + 1]; ++p) out[inner[p]] += k[p] * uj;
+  }
+}
+
 void BuilderAndSolver::Assemble(Scheme& scheme, ModelPart& model_part, Mode mode) {
   const bool lhs = mode != Mode::kRhs;
   const bool rhs = mode != Mode::kLhs;
   SparseMatrix& target = constraints_.empty() ? A_ : K_;
   const auto nnz = static_cast<std::size_t>(target.nonZeros());
-  const bool reuse = lhs && element_matrix_valid_ && element_matrix_pattern_ == pattern_version_ &&
-                     element_matrix_.size() == nnz;
+  const bool cached = element_matrix_valid_ && element_matrix_pattern_ == pattern_version_ &&
+                      element_matrix_.size() == nnz;
+  const bool reuse = lhs && cached;
+  const bool affine_rhs = rhs && cached && element_force_valid_;
   if (reuse)
     std::copy(element_matrix_.begin(), element_matrix_.end(), target.valuePtr());
   else if (lhs)
@@ -308,16 +325,26 @@ void BuilderAndSolver::Assemble(Scheme& scheme, ModelPart& model_part, Mode mode
   };
   {
     ScopedTimer timer(timings_.elements);
-    if (reuse) {
-      ++element_matrix_reuses_;
-      if (rhs) assemble_all(model_part.Elements(), Mode::kRhs);
-    } else {
+    if (reuse) ++element_matrix_reuses_;
+    if (affine_rhs) {
+      AddElementMatrixProduct(target, -1.0, rhs_raw_);
+      rhs_raw_ += element_force_;
+    }
+    if (!reuse && lhs) {
       assemble_all(model_part.Elements(), mode);
-      if (lhs && ElementMatrixIsConstant(scheme, model_part)) {
+      if (ElementMatrixIsConstant(scheme, model_part)) {
         element_matrix_.assign(target.valuePtr(), target.valuePtr() + nnz);
         element_matrix_pattern_ = pattern_version_;
         element_matrix_valid_ = true;
+        // rhs_raw_ holds the element residual f - K u only: keep f = rhs_raw_ + K u.
+        element_force_valid_ = rhs && n_matrix == n_all;
+        if (element_force_valid_) {
+          element_force_ = rhs_raw_;
+          AddElementMatrixProduct(target, 1.0, element_force_);
+        }
       }
+    } else if (rhs && !affine_rhs) {
+      assemble_all(model_part.Elements(), Mode::kRhs);
     }
   }
   ScopedTimer timer(timings_.conditions);
@@ -515,6 +542,7 @@ void BuilderAndSolver::Clear() {
   element_matrix_.clear();
   element_matrix_.shrink_to_fit();
   element_matrix_valid_ = false;
+  element_force_valid_ = false;
   if (linear_solver_) linear_solver_->Clear();
 }
 

@@ -111,11 +111,13 @@ class BuilderAndSolver {
   /// Forces a new pattern at the next build (e.g. after contact pairs changed the connectivity).
   void InvalidatePattern() noexcept { pattern_valid_ = false; }
   /// Drops the element matrix kept for reuse (see ElementMatrixReuses); strategies call it at
-  /// every InitializeSolutionStep, as properties or the reference geometry may change between
-  /// steps. Within a step, when the scheme passes element matrices through unchanged and every
-  /// active element HasConstantLeftHandSide (small displacement, linear laws), the elements'
-  /// part of the matrix is assembled at the first build and copied at the next ones, where the
-  /// elements compute their residual only.
+  /// every InitializeSolutionStep, as properties, loads or the reference geometry may change
+  /// between steps. Within a step, when the scheme passes element matrices through unchanged
+  /// and every active element HasConstantLeftHandSide (small displacement, linear laws), the
+  /// elements' part K of the matrix is assembled at the first build and copied at the next
+  /// ones. Their residual is then affine, f - K u: with every DoF in the matrix (block
+  /// builder) f is kept from that first build and later residuals cost one product with K
+  /// instead of an element loop.
   void ForgetElementMatrix() noexcept { element_matrix_valid_ = false; }
   /// Number of builds that reused the element matrix (tests check the reuse).
   int ElementMatrixReuses() const noexcept { return element_matrix_reuses_; }
@@ -149,6 +151,7 @@ class BuilderAndSolver {
   void BuildConstraintMatrix();
   void Assemble(Scheme& scheme, ModelPart& model_part, Mode mode);
   bool ElementMatrixIsConstant(const Scheme& scheme, const ModelPart& model_part) const;
+  void AddElementMatrixProduct(const SparseMatrix& target, double sign, Vector& out);
   void FinishResidual();
   void ReduceSystem(Mode mode);
   void CheckEmptyColumns() const;
@@ -177,6 +180,9 @@ class BuilderAndSolver {
   std::vector<double> element_matrix_;  ///< element part of the assembled matrix values
   long element_matrix_pattern_ = -1;    ///< pattern_version_ it was assembled on
   bool element_matrix_valid_ = false;
+  Vector element_force_;                ///< f of the element residual f - K u (affine: K constant)
+  bool element_force_valid_ = false;
+  Vector values_;                       ///< DoF values by equation id (scratch)
   int element_matrix_reuses_ = 0;
 };
 
