@@ -318,6 +318,11 @@ ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
       root_.GetProcessInfo().Has(DISTANCE_THRESHOLD) ? root_.GetProcessInfo().GetValue(DISTANCE_THRESHOLD) : 1e24;
   const auto allocation = static_cast<std::size_t>(std::max(1, settings_["allocation_size"].GetInt()));
 
+  // Master faces around each node, to complete the coverage of the slave faces (below).
+  std::unordered_map<const Node*, std::vector<std::size_t>> masters_at_node;
+  for (std::size_t m : masters)
+    for (const Node* node : all[m]->GetGeometry().Nodes()) masters_at_node[node].push_back(m);
+
   // candidates[i] for interface condition i (only slaves get any).
   std::vector<std::vector<std::size_t>> candidates(all.size());
   double min_radius = std::numeric_limits<double>::max(), max_radius = 0.0;
@@ -366,6 +371,26 @@ ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
           continue;
         if (gap_threshold && std::abs((master.center - slave.center).dot(slave.normal)) > distance_threshold) continue;
         kept.push_back(m);
+      }
+      // A slave face at the edge of the searched zone can reach only some of the master faces
+      // beneath it. Partly covered, its dual basis (negative over part of the face) gives its
+      // nodes weighted gaps of the wrong sign however open the gap, and the active set then
+      // pulls far nodes into contact (hertz2d_100k cycled so). Walk from the kept masters to
+      // their neighbours that lie beneath the slave face too, until the face is covered or the
+      // master surface ends.
+      for (std::size_t q = 0; q < kept.size(); ++q) {
+        for (const Node* node : faces[kept[q]].condition->GetGeometry().Nodes()) {
+          const auto around = masters_at_node.find(node);  // find: the map is shared by the threads
+          for (std::size_t m : around->second) {
+            if (m == s || std::find(kept.begin(), kept.end(), m) != kept.end()) continue;
+            const FaceData& master = faces[m];
+            const Geometry& master_geometry = master.condition->GetGeometry();
+            if (slave.normal.dot(master.normal) >= -threshold || ShareNode(slave_geometry, master_geometry)) continue;
+            const double tolerance = 1e-6 * std::min(slave.length, master.length);
+            if (!(ProjectedOverlap(slave_geometry, slave.normal, master_geometry) > tolerance)) continue;
+            kept.push_back(m);
+          }
+        }
       }
       std::sort(kept.begin(), kept.end());
       if (kept.size() > allocation) {
