@@ -4,7 +4,7 @@ JOBS ?= $(shell nproc)
 BUILD_DIR := build/cmake
 DEBS := g++ cmake ninja-build ccache pkg-config libeigen3-dev libsuitesparse-dev libmetis-dev \
         nlohmann-json3-dev libnanoflann-dev libhdf5-dev libgtest-dev libmuparser-dev \
-        libglu1-mesa libxcursor1 libxft2 libxinerama1 libopenblas0-openmp
+        libglu1-mesa libxcursor1 libxft2 libxinerama1 libopenblas0-openmp petsc-dev
 PY_BUILD := scikit-build-core pybind11 ninja cmake
 PY_RUN := numpy scipy meshio h5py rich pytest sympy matplotlib gmsh
 

@@ -13,6 +13,9 @@ find_path(METIS_INCLUDE_DIR metis.h REQUIRED)
 find_path(NANOFLANN_INCLUDE_DIR nanoflann.hpp REQUIRED)
 find_package(BLAS REQUIRED)
 find_package(LAPACK REQUIRED)
+# Optional: PETSc (Debian's petsc-dev, with MPI) for the "petsc" linear solver.
+pkg_check_modules(PETSC IMPORTED_TARGET PETSc)
+pkg_check_modules(MPI_C IMPORTED_TARGET ompi-c)
 
 # Compile settings shared by every target of the project.
 add_library(mc_build_settings INTERFACE)
@@ -41,3 +44,10 @@ target_link_libraries(mc_dependencies INTERFACE
   $<BUILD_INTERFACE:${MC_LIB_ccolamd}> $<BUILD_INTERFACE:${MC_LIB_btf}>
   $<BUILD_INTERFACE:${MC_LIB_suitesparseconfig}> $<BUILD_INTERFACE:${MC_LIB_metis}>
   $<BUILD_INTERFACE:${LAPACK_LIBRARIES}> $<BUILD_INTERFACE:${BLAS_LIBRARIES}>)
+if(PETSC_FOUND AND MPI_C_FOUND)
+  message(STATUS "PETSc ${PETSC_VERSION}: the 'petsc' linear solver is built")
+  target_link_libraries(mc_dependencies INTERFACE $<BUILD_INTERFACE:PkgConfig::PETSC> $<BUILD_INTERFACE:PkgConfig::MPI_C>)
+  target_compile_definitions(mc_dependencies INTERFACE $<BUILD_INTERFACE:MC_HAVE_PETSC>)
+else()
+  message(STATUS "PETSc not found (pkg-config PETSc, ompi-c): the 'petsc' linear solver is not built")
+endif()

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // CreateLinearSolver and NormalizeLinearSolverName: Kratos `linear_solver_settings` (spec 7)
 // mapped onto the solvers we have.
+#include <cstdio>
 #include <map>
 #include <string_view>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "core/linear_solvers/iterative_solver.h"
 #include "core/linear_solvers/klu_solver.h"
 #include "core/linear_solvers/linear_solver.h"
+#include "core/linear_solvers/petsc_solver.h"
 #include "core/linear_solvers/scaling_solver.h"
 #include "core/linear_solvers/size_selecting_solver.h"
 #include "core/linear_solvers/umfpack_solver.h"
@@ -54,7 +56,7 @@ const std::map<std::string, std::string>& DeprecatedSolverNames() {
   return names;
 }
 
-enum class Backend { kUmfpack, kKlu, kCholmod, kEigenSparseLU, kCg, kBicgstab, kGmres, kAmgcl, kScaling, kSparseQr, kMixedUlm };
+enum class Backend { kUmfpack, kKlu, kCholmod, kEigenSparseLU, kCg, kBicgstab, kGmres, kAmgcl, kScaling, kSparseQr, kMixedUlm, kPetsc };
 
 /// Every accepted normalised name and what runs for it (spec 7.2).
 const std::map<std::string, Backend>& SolverBackends() {
@@ -82,6 +84,7 @@ const std::map<std::string, Backend>& SolverBackends() {
       {"scaling", Backend::kScaling},
       {"sparse_qr", Backend::kSparseQr},
       {"mixed_ulm_linear_solver", Backend::kMixedUlm},
+      {"petsc", Backend::kPetsc},
   };
   return backends;
 }
@@ -132,7 +135,8 @@ Parameters DefaultSettings() {
     "post_sweeps": null,
     "provide_coordinates": null,
     "use_gpgpu": null,
-    "gpgpu_backend": null
+    "gpgpu_backend": null,
+    "petsc_options": {}
   })");
 }
 
@@ -169,6 +173,35 @@ IterativeSolver::Options ReadIterativeOptions(const Parameters& settings, Iterat
                             DidYouMean(given, valid)));
   }
   options.preconditioner = found->second;
+  return options;
+}
+
+PetscSolver::Options ReadPetscOptions(const Parameters& settings) {
+  PetscSolver::Options options;
+  options.tolerance = settings["tolerance"].GetDouble();
+  options.max_iteration = settings["max_iteration"].GetInt();
+  const Parameters given = settings["petsc_options"];
+  if (!given.IsSubParameter())
+    throw InputError(Concat(given.Where(), ": must be an object of PETSc options, e.g. {\"pc_type\": \"hypre\"}"));
+  for (const std::string& key : given.Keys()) {
+    const Parameters value = given[key];
+    std::string text;
+    if (value.IsString())
+      text = value.GetString();
+    else if (value.IsBool())
+      text = value.GetBool() ? "true" : "false";
+    else if (value.IsInt())
+      text = std::to_string(value.GetInt());
+    else if (value.IsNumber())
+    {
+      char buffer[32];
+      std::snprintf(buffer, sizeof buffer, "%.17g", value.GetDouble());
+      text = buffer;
+    }
+    else if (!value.IsNull())
+      throw InputError(Concat(value.Where(), ": a PETSc option takes a string, number, boolean or null"));
+    options.petsc_options.emplace_back(key.starts_with("-") ? key.substr(1) : key, text);
+  }
   return options;
 }
 
@@ -246,6 +279,12 @@ std::unique_ptr<LinearSolver> CreateLinearSolver(const Parameters& user_settings
     case Backend::kSparseQr:
       throw NotImplementedError(Concat(settings.Where(), ".solver_type: '", given,
                                        "' (sparse QR) is not implemented; use 'umfpack' or 'skyline_lu_factorization'"));
+    case Backend::kPetsc:
+      if (!PetscSolver::Available())
+        throw NotImplementedError(Concat(settings.Where(), ".solver_type: 'petsc' is not built in: install Debian's "
+                                         "petsc-dev (make deps does) and rebuild"));
+      solver = std::make_unique<PetscSolver>(ReadPetscOptions(settings));
+      break;
     case Backend::kMixedUlm:
       throw InputError(Concat(settings.Where(), ".solver_type: '", given,
                               "' is only valid in contact_settings.mixed_ulm_solver_parameters"));

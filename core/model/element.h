@@ -14,9 +14,10 @@ class Element : public Entity {
   using Entity::Entity;
   /// A new element of the same class and geometry type on the given nodes.
   virtual std::unique_ptr<Element> Create(IndexType id, Geometry::NodesArray nodes, Properties* properties) const = 0;
-  /// True when the left-hand side does not depend on the nodal unknowns, so that within a
-  /// solution step (properties and geometry data fixed) it needs computing only once: the
-  /// builder then reuses the assembled element matrix over the Newton iterations.
+  /// True when the left-hand side does not depend on the nodal unknowns and is the exact
+  /// derivative of -RHS, so that the residual is affine, f - K u, with f fixed within a solution
+  /// step (properties, loads and reference geometry change only between steps). The builder
+  /// then assembles K once per step and forms the later residuals from it.
   virtual bool HasConstantLeftHandSide() const { return false; }
 };
 
