@@ -8,7 +8,7 @@ DEBS := g++ cmake ninja-build ccache pkg-config libeigen3-dev libsuitesparse-dev
 PY_BUILD := scikit-build-core pybind11 ninja cmake
 PY_RUN := numpy scipy meshio h5py rich pytest sympy matplotlib gmsh
 
-.PHONY: all deps install demo test test-cpp test-python bench clean
+.PHONY: all deps install demo test test-cpp test-python bench bench-large clean
 
 all: install
 
@@ -41,6 +41,11 @@ test-python:
 bench: install
 	$(PYTHON) benchmarks/run_benchmarks.py
 	$(PYTHON) benchmarks/hertz/compare.py --cases hertz2d_2k,hertz2d_8k,hertz2d_30k,hertz3d_15k
+
+# The large Hertz cases, one run each (Kratos needs about 25 minutes for hertz3d_50k alone).
+bench-large: install
+	$(PYTHON) benchmarks/hertz/compare.py --cases hertz2d_100k,hertz2d_250k,hertz3d_50k --repeat 1 \
+	  --output benchmarks/hertz/results_large.md --plot benchmarks/hertz/time_vs_dofs_large.png
 
 clean:
 	rm -rf build

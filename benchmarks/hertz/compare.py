@@ -83,6 +83,24 @@ def phase_table(rows) -> str:
     return "\n".join(lines) if len(lines) > 2 else ""
 
 
+def pair_table(rows) -> str:
+    """Contact cost per pair (the linear-scaling target): search time per pair and search, mortar
+    gap + normals and contact assembly per pair and Newton iteration (mortarcontact, medians)."""
+    lines = ["| case | contact pairs | searches | search [us / pair] | mortar gap + normals [us / pair / it] "
+             "| contact assembly [us / pair / it] |", "|---|---|---|---|---|---|"]
+    for name, _, s in rows:
+        ours = s["mortarcontact"]
+        pairs, searches = ours.get("contact_pairs"), ours.get("searches")
+        if ours.get("status") != "ok" or not ours.get("phases") or not pairs or not searches:
+            continue
+        phases, iterations = ours["phases"], sum(ours["iterations"])
+        per_it = 1e6 / (pairs * iterations)
+        lines.append(f"| {name} | {pairs} | {searches} | {1e6 * phases['search'] / (pairs * searches):.1f} "
+                     f"| {(phases['weighted_gap'] + phases['normals']) * per_it:.1f} "
+                     f"| {phases['conditions'] * per_it:.1f} |")
+    return "\n".join(lines) if len(lines) > 2 else ""
+
+
 def plot(rows, path: str) -> bool:
     try:
         import matplotlib
@@ -158,6 +176,8 @@ def main(argv=None) -> int:
                f"the contact search, the mortar weighted gap and nodal normals of the criteria, the "
                f"condition and element loops of the assembly, the linear solver with its symbolic "
                f"analysis):\n\n{phases}\n" if (phases := phase_table(rows)) else "")
+            + (f"\nContact cost per pair (pairs of the last search; a Newton iteration builds the "
+               f"system and the residual):\n\n{pairs}\n" if (pairs := pair_table(rows)) else "")
             + ("\n" + "\n".join(notes) + "\n" if notes else "")
             + (f"\n![time against DoFs]({os.path.basename(args.plot)})\n" if has_plot else ""))
     with open(args.output, "w") as f:

@@ -202,6 +202,8 @@ def summarize(records: list[dict], hertz: dict) -> dict:
         "hertz": evaluate(last, hertz),
         "phases": phases,
         "blas": last.get("blas", []),
+        "contact_pairs": last.get("contact_pairs"),
+        "searches": last.get("searches"),
     }
 
 

@@ -162,17 +162,18 @@ def test_hertz_2d_cylinder_matches_theory(tmp_path):
     assert math.isclose(result["force_from_pressure"], result["force"], rel_tol=0.03)
 
 
-@pytest.mark.slow
 @pytest.mark.skipif(importlib.util.find_spec("gmsh") is None, reason="gmsh is not installed")
 def test_hertz_3d_sphere_matches_theory(tmp_path):
-    """Quarter sphere on a block (15k DoFs, about 2 minutes): contact radius within 5 % of Hertz and
-    the nodal peak pressure within 8 % (a coarse 3D mesh overshoots at the centre node; Kratos 10.4
-    gives +7.8 % on the same mesh), in the Newton iterations Kratos needs (5, 4, 4, 4)."""
+    """Quarter sphere on a block (15k DoFs, about 15 s): contact radius within 5 % of Hertz, fitted
+    p0 within 3 %, and the nodal peak pressure within 8 % (the peak node is the axis node, a corner of
+    the quarter-model slave interface, where the dual multipliers overshoot; Kratos 10.4 gives +7.6 %
+    on the same mesh). Kratos 10.4 needs 5, 4, 3, 3 Newton iterations here and we one more in step 3
+    (open on issue 3): the bound guards against regressions."""
     result = run_hertz("hertz3d", "15k", str(tmp_path))
     assert abs(result["half_width_fit_error"]) < 0.05
     assert abs(result["p0_fit_error"]) < 0.03
     assert abs(result["peak_pressure_error"]) < 0.08
-    assert sum(result["iterations"]) <= 17
+    assert sum(result["iterations"]) <= 16
 
 
 def test_penalty_3d_patch_closes_the_gap(shared_cases, monkeypatch):
