@@ -44,10 +44,3 @@ target_link_libraries(mc_dependencies INTERFACE
   $<BUILD_INTERFACE:${MC_LIB_ccolamd}> $<BUILD_INTERFACE:${MC_LIB_btf}>
   $<BUILD_INTERFACE:${MC_LIB_suitesparseconfig}> $<BUILD_INTERFACE:${MC_LIB_metis}>
   $<BUILD_INTERFACE:${LAPACK_LIBRARIES}> $<BUILD_INTERFACE:${BLAS_LIBRARIES}>)
-if(PETSC_FOUND AND MPI_C_FOUND)
-  message(STATUS "PETSc ${PETSC_VERSION}: the 'petsc' linear solver is built")
-  target_link_libraries(mc_dependencies INTERFACE $<BUILD_INTERFACE:PkgConfig::PETSC> $<BUILD_INTERFACE:PkgConfig::MPI_C>)
-  target_compile_definitions(mc_dependencies INTERFACE $<BUILD_INTERFACE:MC_HAVE_PETSC>)
-else()
-  message(STATUS "PETSc not found (pkg-config PETSc, ompi-c): the 'petsc' linear solver is not built")
-endif()

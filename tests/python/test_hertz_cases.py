@@ -174,3 +174,17 @@ def test_petsc_linear_solver_gives_the_umfpack_contact_solution(case_2d, tmp_pat
     assert max(abs(a - b) for a, b in zip(lm["petsc"], lm["umfpack"])) < 1e-9 * scale
     assert petsc["reactions"]["DISPLACEMENT_bottom"] == pytest.approx(umfpack["reactions"]["DISPLACEMENT_bottom"],
                                                                       rel=1e-10)
+
+
+def test_missing_petsc_plugin_is_a_clear_error():
+    """Without its plugin library, "petsc" is a not-implemented error that says how to get it."""
+    import subprocess
+
+    code = ("import mortarcontact as mc\n"
+            "try:\n"
+            "    mc._core.CreateLinearSolver(mc.Parameters('{\"solver_type\": \"petsc\"}'))\n"
+            "except mc._core.NotImplementedFeatureError as error:\n"
+            "    print(error)\n")
+    env = dict(os.environ, MORTARCONTACT_PETSC_PLUGIN="/nonexistent/libmortarcontact_petsc.so")
+    out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True).stdout
+    assert "'petsc' is not available" in out and "petsc-dev" in out and "/nonexistent" in out

@@ -1,19 +1,17 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "core/linear_solvers/petsc_solver.h"
+#include "petsc/petsc_solver.h"
 
 #include <algorithm>
 #include <cassert>
 
 #include "core/utilities/string_utilities.h"
 
-#if defined(MC_HAVE_PETSC)
 #include <dlfcn.h>
 #include <petscksp.h>
 
+#include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <mutex>
-#endif
 
 namespace mc {
 
@@ -32,8 +30,6 @@ std::vector<std::pair<std::string, std::string>> PetscSolver::WithDefaults(
     given.emplace_back("pc_factor_mat_solver_type", "mumps");
   return given;
 }
-
-#if defined(MC_HAVE_PETSC)
 
 namespace {
 
@@ -79,8 +75,6 @@ struct PetscSolver::Handles {
     if (matrix) MatDestroy(&matrix);
   }
 };
-
-bool PetscSolver::Available() { return true; }
 
 PetscSolver::PetscSolver(Options options) : options_(std::move(options)) {
   options_.petsc_options = WithDefaults(std::move(options_.petsc_options));
@@ -189,19 +183,38 @@ void PetscSolver::Clear() {
   pattern_.Clear();
 }
 
-#else  // PETSc not found at build time: the factory does not construct this class.
-
-struct PetscSolver::Handles {};
-bool PetscSolver::Available() { return false; }
-PetscSolver::PetscSolver(Options options) : options_(std::move(options)) {
-  throw NotImplementedError("linear solver 'petsc': this build has no PETSc (install Debian's petsc-dev and rebuild)");
+PetscSolver::Options ReadPetscOptions(const Parameters& settings) {
+  PetscSolver::Options options;
+  options.tolerance = settings["tolerance"].GetDouble();
+  options.max_iteration = settings["max_iteration"].GetInt();
+  const Parameters given = settings["petsc_options"];
+  if (!given.IsSubParameter())
+    throw InputError(Concat(given.Where(), ": must be an object of PETSc options, e.g. {\"pc_type\": \"hypre\"}"));
+  for (const std::string& key : given.Keys()) {
+    const Parameters value = given[key];
+    std::string text;
+    if (value.IsString()) {
+      text = value.GetString();
+    } else if (value.IsBool()) {
+      text = value.GetBool() ? "true" : "false";
+    } else if (value.IsInt()) {
+      text = std::to_string(value.GetInt());
+    } else if (value.IsNumber()) {
+      char buffer[32];
+      std::snprintf(buffer, sizeof buffer, "%.17g", value.GetDouble());
+      text = buffer;
+    } else if (!value.IsNull()) {
+      throw InputError(Concat(value.Where(), ": a PETSc option takes a string, number, boolean or null"));
+    }
+    options.petsc_options.emplace_back(key.starts_with("-") ? key.substr(1) : key, text);
+  }
+  return options;
 }
-PetscSolver::~PetscSolver() = default;
-bool PetscSolver::IsDirect() const { return true; }
-void PetscSolver::Initialize(const SparseMatrix&) {}
-void PetscSolver::Solve(const SparseMatrix&, Vector&, const Vector&) {}
-void PetscSolver::Clear() {}
 
-#endif
+
 
 }  // namespace mc
+
+extern "C" mc::LinearSolver* mortarcontact_create_petsc_solver(const mc::Parameters& settings) {
+  return new mc::PetscSolver(mc::ReadPetscOptions(settings));
+}

@@ -2,10 +2,10 @@
 // Issue 4 (PETSc backend): "petsc" from linear_solver_settings solves SPD, non-symmetric and
 // saddle-point systems like UMFPACK (MUMPS LU by default, Krylov methods through petsc_options),
 // keeps its structure when only values change, reports zero pivots and non-converging Krylov
-// runs, and rejects malformed options. Skipped in a build without PETSc.
+// runs, and rejects malformed options. Built with the plugin (when PETSc is found).
 #include <gtest/gtest.h>
 
-#include "core/linear_solvers/petsc_solver.h"
+#include "petsc/petsc_solver.h"
 #include "core/linear_solvers/umfpack_solver.h"
 #include "core/parameters/parameters.h"
 #include "test_matrices.h"
@@ -17,9 +17,6 @@ using testing::ConvectionDiffusion2D;
 using testing::ManufacturedSolution;
 using testing::Poisson2D;
 using testing::RelativeError;
-
-#define SKIP_WITHOUT_PETSC() \
-  if (!PetscSolver::Available()) GTEST_SKIP() << "built without PETSc"
 
 // [K B^T; B 0]: a Poisson block with a multiplier per 10th unknown fixing it, as contact
 // multipliers do (zero diagonal in the multiplier rows).
@@ -48,7 +45,6 @@ Vector SolveWith(LinearSolver& solver, const SparseMatrix& A, const Vector& b) {
 }
 
 TEST(PetscSolver, DefaultMumpsLuMatchesUmfpackOnSaddlePointAndNonSymmetricSystems) {
-  SKIP_WITHOUT_PETSC();
   for (const SparseMatrix& A : {SaddlePoint(40), ConvectionDiffusion2D(60)}) {
     const Vector exact = ManufacturedSolution(A.rows());
     const Vector b = A * exact;
@@ -63,7 +59,6 @@ TEST(PetscSolver, DefaultMumpsLuMatchesUmfpackOnSaddlePointAndNonSymmetricSystem
 }
 
 TEST(PetscSolver, NewValuesOnTheSamePatternAreUsed) {
-  SKIP_WITHOUT_PETSC();
   SparseMatrix A = ConvectionDiffusion2D(40);
   PetscSolver petsc({});
   const Vector exact = ManufacturedSolution(A.rows());
@@ -78,7 +73,6 @@ TEST(PetscSolver, NewValuesOnTheSamePatternAreUsed) {
 }
 
 TEST(PetscSolver, KrylovMethodThroughPetscOptions) {
-  SKIP_WITHOUT_PETSC();
   const SparseMatrix A = Poisson2D(60);
   const Vector exact = ManufacturedSolution(A.rows());
   PetscSolver::Options options;
@@ -93,7 +87,6 @@ TEST(PetscSolver, KrylovMethodThroughPetscOptions) {
 }
 
 TEST(PetscSolver, ZeroPivotAndNonConvergenceAreReported) {
-  SKIP_WITHOUT_PETSC();
   SparseMatrix A = Poisson2D(30);
   testing::ZeroRowAndColumn(A, 100);
   PetscSolver lu({});
@@ -113,19 +106,23 @@ TEST(PetscSolver, ZeroPivotAndNonConvergenceAreReported) {
   }
 }
 
-TEST(PetscSolver, FromLinearSolverSettings) {
-  SKIP_WITHOUT_PETSC();
-  auto solver = CreateLinearSolver(
-      Parameters(R"({"solver_type": "petsc", "tolerance": 1e-10, "petsc_options": {"ksp_type": "gmres", "pc_type": "ilu",
-                     "ksp_gmres_restart": 50}})"));
+TEST(PetscSolver, FromLinearSolverSettingsThroughThePluginEntryPoint) {
+  auto create = [](const char* json) {
+    Parameters settings(json);
+    settings.AddValue("max_iteration", Parameters("200"));
+    if (!settings.Has("tolerance")) settings.AddValue("tolerance", Parameters("1e-6"));
+    return std::unique_ptr<LinearSolver>(mortarcontact_create_petsc_solver(settings));
+  };
+  auto solver = create(R"({"tolerance": 1e-10, "petsc_options": {"ksp_type": "gmres", "pc_type": "ilu",
+                           "ksp_gmres_restart": 50}})");
   EXPECT_EQ(solver->Name(), "petsc");
   EXPECT_FALSE(solver->IsDirect());
   const SparseMatrix A = ConvectionDiffusion2D(40);
   const Vector exact = ManufacturedSolution(A.rows());
   EXPECT_LT(RelativeError(SolveWith(*solver, A, A * exact), exact), 1e-7);
 
-  EXPECT_THROW(CreateLinearSolver(Parameters(R"({"solver_type": "petsc", "petsc_options": "gmres"})")), InputError);
-  auto unknown = CreateLinearSolver(Parameters(R"({"solver_type": "petsc", "petsc_options": {"pc_type": "no_such_pc"}})"));
+  EXPECT_THROW(create(R"({"petsc_options": "gmres"})"), InputError);
+  auto unknown = create(R"({"petsc_options": {"pc_type": "no_such_pc"}})");
   try {
     SolveWith(*unknown, A, A * exact);
     ADD_FAILURE() << "an unknown preconditioner was accepted";
