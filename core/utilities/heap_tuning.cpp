@@ -14,8 +14,8 @@ bool TuneHeapForRepeatedFactorizations() {
   constexpr int kMB = 1 << 20;
   // mallopt returns 1 on success; every call runs so that a refused value leaves the others set.
   const bool mmap = mallopt(M_MMAP_THRESHOLD, 32 * kMB) == 1;
-  const bool trim = mallopt(M_TRIM_THRESHOLD, 1024 * kMB) == 1;
-  const bool pad = mallopt(M_TOP_PAD, 64 * kMB) == 1;
+  const bool trim = mallopt(M_TRIM_THRESHOLD, 128 * kMB) == 1;
+  const bool pad = mallopt(M_TOP_PAD, 16 * kMB) == 1;
   return mmap && trim && pad;
 #else
   return false;
