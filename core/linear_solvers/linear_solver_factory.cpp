@@ -3,6 +3,7 @@
 // mapped onto the solvers we have.
 #include <dlfcn.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <mutex>
