@@ -350,6 +350,16 @@ ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
       // a contact zone that is re-searched with the bodies already pressed together must keep the
       // masters it will touch later in the step; the thin lateral padding still rejects far faces.
       if (with_obb) slave_obb = BuildOrientedBox(slave_geometry, slave.normal, box_factor * slave.length, radius);
+      // Tests shared by the search and the coverage walk below: the master faces the slave (opposite
+      // normals, no common node), and its projection on the slave's plane overlaps the slave.
+      auto opposite = [&](const FaceData& master) {
+        return slave.normal.dot(master.normal) < -threshold &&
+               !ShareNode(slave_geometry, master.condition->GetGeometry());
+      };
+      auto beneath = [&](const FaceData& master) {
+        const double tolerance = 1e-6 * std::min(slave.length, master.length);
+        return ProjectedOverlap(slave_geometry, slave.normal, master.condition->GetGeometry()) > tolerance;
+      };
       std::vector<std::size_t>& kept = candidates[s];
       for (std::size_t f : found) {
         const std::size_t m = masters[f];
@@ -358,15 +368,13 @@ ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
         // In radius: the search ball meets the ball around the master's nodes.
         if (!in_box && (master.center - slave.center).norm() - master.radius > radius) continue;
         const Geometry& master_geometry = master.condition->GetGeometry();
-        if (slave.normal.dot(master.normal) >= -threshold) continue;
-        if (ShareNode(slave_geometry, master_geometry)) continue;
+        if (!opposite(master)) continue;
         if (in_box && !Overlap(slave_box, BoundingBox(master_geometry, 0.0))) continue;
         if (with_obb &&
             !Intersect(slave_obb, BuildOrientedBox(master_geometry, master.normal, box_factor * master.length)))
           continue;
+        if (check == "mapping_check" && !beneath(master)) continue;
         const double tolerance = 1e-6 * std::min(slave.length, master.length);
-        if (check == "mapping_check" && !(ProjectedOverlap(slave_geometry, slave.normal, master_geometry) > tolerance))
-          continue;
         if (check == "direct_check" && !(ProjectedOverlap(master_geometry, master.normal, slave_geometry) > tolerance))
           continue;
         if (gap_threshold && std::abs((master.center - slave.center).dot(slave.normal)) > distance_threshold) continue;
@@ -383,12 +391,7 @@ ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
           const auto around = masters_at_node.find(node);  // find: the map is shared by the threads
           for (std::size_t m : around->second) {
             if (m == s || std::find(kept.begin(), kept.end(), m) != kept.end()) continue;
-            const FaceData& master = faces[m];
-            const Geometry& master_geometry = master.condition->GetGeometry();
-            if (slave.normal.dot(master.normal) >= -threshold || ShareNode(slave_geometry, master_geometry)) continue;
-            const double tolerance = 1e-6 * std::min(slave.length, master.length);
-            if (!(ProjectedOverlap(slave_geometry, slave.normal, master_geometry) > tolerance)) continue;
-            kept.push_back(m);
+            if (opposite(faces[m]) && beneath(faces[m])) kept.push_back(m);
           }
         }
       }

@@ -1,17 +1,16 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "petsc/petsc_solver.h"
 
-#include <algorithm>
-#include <cassert>
-
-#include "core/utilities/string_utilities.h"
-
 #include <dlfcn.h>
 #include <petscksp.h>
 
+#include <algorithm>
+#include <cassert>
 #include <cstdio>
 #include <cstdlib>
 #include <mutex>
+
+#include "core/utilities/string_utilities.h"
 
 namespace mc {
 
