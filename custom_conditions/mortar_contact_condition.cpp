@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "custom_conditions/mortar_contact_condition.h"
 
+#include <algorithm>
+
 #include <atomic>
 #include <cassert>
 
@@ -154,19 +156,24 @@ void MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::CalculatePairSyst
   typename Kinematics::MasterMatrix x2;
   GatherCoordinates(x1, x2);
   const MortarIntegrationSettings settings = IntegrationSettings(info);
+  Data data;
+  data.kinematics = &kinematics;
+  FillData(data, info);
   // A pair that does not touch still owns the multipliers of its slave nodes. With every mortar
   // quantity zero the kernels add only the inactive rows (lambda = 0), which keeps the system
   // regular for slave nodes that lie outside every overlap (Kratos instead flags them ISOLATED
-  // and its block builder fixes their multipliers).
-  if (lhs) {
+  // and its block builder fixes their multipliers). The inactive rows read no mortar quantity
+  // (ALM: -k^2/eps lambda_j, penalty: nothing), so a pair whose slave nodes are all inactive is
+  // not integrated at all: most pairs of an interface lie outside the contact zone (15 of 16 on
+  // the Hertz cases, where the contact assembly was 23 % of hertz3d_15k's time).
+  if (std::none_of(data.active.begin(), data.active.end(), [](bool active) { return active; })) {
+    kinematics.SkipIntegration(x1, x2, n1);
+  } else if (lhs) {
     kinematics.Compute(x1, x2, n1, settings);
   } else {
     kinematics.ComputeValues(x1, x2, n1, settings);
   }
 
-  Data data;
-  data.kinematics = &kinematics;
-  FillData(data, info);
   if (rhs) AddRHS(data, *rhs);
   if (lhs) AddLHS(data, *lhs, normal_sensitivity);
 }

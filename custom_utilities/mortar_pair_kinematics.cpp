@@ -113,6 +113,17 @@ void MortarPairKinematics<TDim, TNumNodes, TNumNodesMaster>::ClearValues() {
 }
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
+void MortarPairKinematics<TDim, TNumNodes, TNumNodesMaster>::SkipIntegration(const SlaveMatrix& x1,
+                                                                             const MasterMatrix& x2,
+                                                                             const SlaveMatrix& n1) {
+  slave_coordinates = x1;
+  master_coordinates = x2;
+  slave_normals = n1;
+  has_overlap = false;
+  ClearValues();
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
 bool MortarPairKinematics<TDim, TNumNodes, TNumNodesMaster>::ComputeValues(
     const SlaveMatrix& x1, const MasterMatrix& x2, const SlaveMatrix& n1,
     const MortarIntegrationSettings& settings, DualBasisDomain dual_basis) {

@@ -91,6 +91,10 @@ struct MortarPairKinematics {
                      const MortarIntegrationSettings& settings,
                      DualBasisDomain dual_basis = DualBasisDomain::kSlaveElement);
 
+  /// A pair left unintegrated (its kernels read no mortar quantity): the inputs are stored, every
+  /// value is zero as without overlap, the derivative members are untouched.
+  void SkipIntegration(const SlaveMatrix& x1, const MasterMatrix& x2, const SlaveMatrix& n1);
+
  private:
   /// The values of a pair without overlap (all zero).
   void ClearValues();

@@ -9,6 +9,10 @@ Python API (Model, analysis stage, nodes with Id / X0 / GetSolutionStepValue), s
 serves both.
 
     python case_runner.py --code kratos CASE_DIR OUT.json
+    python case_runner.py --code mortarcontact --linear-solver '{"solver_type": "petsc", ...}' CASE_DIR OUT.json
+
+``--linear-solver`` replaces mortarcontact's linear_solver_settings (the case files keep the
+Kratos spelling that both codes read, e.g. for the 3D cases too large for a direct solver).
 
 Recorded: wall time of the analysis (Initialize + solution loop + Finalize, imports excluded)
 and of its set-up, time and Newton iterations per step, mortarcontact's time per phase (search,
@@ -129,12 +133,17 @@ def run_kratos(parameters_text: str, dim: int, record: dict):
     record.update(_extract(model, KM.KratosGlobals.GetVariable, dim, KM.ACTIVE))
 
 
-def run_mortarcontact(parameters_path: str, dim: int, record: dict):
+def run_mortarcontact(parameters_path: str, dim: int, record: dict, linear_solver: str | None = None):
     import mortarcontact as mc
     from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
     from mortarcontact.project_parameters import read_project_parameters
 
     parameters = read_project_parameters(parameters_path)
+    if linear_solver:
+        solver_settings = parameters["solver_settings"]
+        solver_settings.RemoveValue("linear_solver_settings")
+        solver_settings.AddValue("linear_solver_settings", mc.Parameters(linear_solver))
+        record["linear_solver"] = json.loads(linear_solver)
     model = mc.Model()
     started = time.perf_counter()
     analysis = StructuralMechanicsAnalysis(model, parameters, progress=False, stop_on_non_convergence=False,
@@ -171,9 +180,12 @@ def _mortarcontact_phases(analysis, total: float) -> dict:
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description="Runs one Hertz case and writes raw results (JSON).")
     parser.add_argument("--code", choices=("kratos", "mortarcontact"), required=True)
+    parser.add_argument("--linear-solver", help="mortarcontact's linear_solver_settings (JSON) instead of the case's")
     parser.add_argument("case_dir")
     parser.add_argument("output")
     args = parser.parse_args(argv)
+    if args.linear_solver and args.code != "mortarcontact":
+        parser.error("--linear-solver applies to mortarcontact only")
     output = os.path.abspath(args.output)
     case_dir = os.path.abspath(args.case_dir)
     os.chdir(case_dir)  # relative paths inside the case resolve from its folder, as in Kratos
@@ -187,7 +199,7 @@ def main(argv=None) -> int:
         if args.code == "kratos":
             run_kratos(parameters_text, dim, record)
         else:
-            run_mortarcontact(parameters_path, dim, record)
+            run_mortarcontact(parameters_path, dim, record, args.linear_solver)
     except Exception as error:  # reported, not raised: the harness tabulates it
         name = type(error).__name__
         not_available = "NotImplemented" in name or "not implemented" in str(error).lower()

@@ -84,15 +84,17 @@ def load_hertz(folder: str) -> dict:
 
 
 def run_once(code: str, folder: str, output: str, threads: int, python: str | None = None,
-             timeout: float = 6 * 3600) -> dict:
-    """One run in a fresh subprocess; returns the runner's record (status, timings, raw fields)."""
+             timeout: float = 6 * 3600, linear_solver: str | None = None) -> dict:
+    """One run in a fresh subprocess; returns the runner's record (status, timings, raw fields).
+    ``linear_solver``: mortarcontact's linear_solver_settings (JSON) in place of the case's."""
     python = python or sys.executable
+    extra = ["--linear-solver", linear_solver] if linear_solver and code == "mortarcontact" else []
     env = dict(os.environ, OMP_NUM_THREADS=str(threads))
     os.makedirs(os.path.dirname(output), exist_ok=True)
     log = os.path.splitext(output)[0] + ".log"
     started = time.perf_counter()
     with open(log, "w") as out:
-        completed = subprocess.run([python, RUNNER, "--code", code, folder, output], stdout=out,
+        completed = subprocess.run([python, RUNNER, "--code", code, *extra, folder, output], stdout=out,
                                    stderr=subprocess.STDOUT, env=env, timeout=timeout)
     wall = time.perf_counter() - started
     if completed.returncode != 0 or not os.path.exists(output):

@@ -10,6 +10,8 @@
 #include "core/linear_solvers/sparse_pattern.h"
 #include "core/parameters/parameters.h"
 
+struct _p_KSP;  // PETSc's KSP, without its headers
+
 namespace mc {
 
 /// PETSc's KSP on the global system (Debian's PETSc: MUMPS, hypre, SuperLU_dist): a sparse direct
@@ -18,6 +20,15 @@ namespace mc {
 /// matrix lives on PETSC_COMM_SELF for now: the step toward a distributed system is the
 /// assembly, not this class. `Initialize` sets up the matrix structure and the KSP once per
 /// pattern; PETSc then keeps the symbolic factorization while only the values change.
+///
+/// With {"pc_type": "fieldsplit"} the rows are split by their DoF into the fields "u" (the
+/// displacements and every other primal unknown, with the block size of the nodes when their
+/// DoFs are contiguous) and "lm" (the contact Lagrange multipliers), and preconditioned by a Schur
+/// complement factorization: algebraic multigrid (hypre BoomerAMG) on "u", Jacobi on the
+/// "selfp" approximation of the multiplier Schur complement, FGMRES outside. This is the
+/// solver for 3D contact systems too large to factorize: a direct LU of the saddle-point system
+/// grows like n^2 in work, the multigrid cycle like n. Every piece can be overridden with the
+/// usual PETSc options (fieldsplit_u_pc_type, pc_fieldsplit_schur_fact_type, ...).
 ///
 /// Lives in its own library, libmortarcontact_petsc, built when pkg-config finds PETSc and loaded
 /// by the solver factory only when "petsc" is asked for: linking PETSc and its MPI stack into the
@@ -37,7 +48,8 @@ class PetscSolver : public LinearSolver {
   PetscSolver& operator=(const PetscSolver&) = delete;
   ~PetscSolver() override;
 
-  /// The defaults merged under `given` (given values win): preonly + LU by MUMPS.
+  /// The defaults merged under `given` (given values win): preonly + LU by MUMPS, or the
+  /// Schur complement preconditioner described above when pc_type is "fieldsplit".
   static std::vector<std::pair<std::string, std::string>> WithDefaults(
       std::vector<std::pair<std::string, std::string>> given);
 
@@ -49,14 +61,33 @@ class PetscSolver : public LinearSolver {
   void Solve(const SparseMatrix& A, Vector& x, const Vector& b) override;
   void Clear() override;
   int IterationsNumber() const override { return iterations_; }
+  /// Only the field split needs the DoF of each row.
+  bool AdditionalPhysicalDataIsNeeded() const override { return field_split_; }
+  void ProvideAdditionalData(const SparseMatrix& A, const std::vector<Dof*>& dof_of_equation) override;
+
+  /// Rows of the last ProvideAdditionalData: primal unknowns and contact multipliers.
+  const std::vector<int>& PrimalRows() const { return primal_rows_; }
+  const std::vector<int>& MultiplierRows() const { return multiplier_rows_; }
+  /// DoFs per node in the primal field (1 when the nodes' rows are not contiguous).
+  int PrimalBlockSize() const { return primal_block_size_; }
 
  private:
   struct Handles;  // PETSc's Mat and KSP (keeps the PETSc headers private)
+  void SetFieldSplits(_p_KSP* ksp);
+  void ClearOptions();
   Options options_;
+  std::string prefix_;
   std::unique_ptr<Handles> handles_;
   SparsePattern pattern_;
   SparseMatrix compressed_;
   int iterations_ = 0;
+  bool field_split_ = false;
+  std::vector<int> primal_rows_;
+  std::vector<int> multiplier_rows_;
+  int primal_block_size_ = 1;
+  /// PETSc reads the options of nested solvers (the fields' KSPs) at their first set-up, inside
+  /// the first KSPSolve: this solver's options stay in PETSc's database until then.
+  bool options_pending_ = false;
 };
 
 /// The options of `linear_solver_settings` (tolerance, max_iteration, petsc_options); throws

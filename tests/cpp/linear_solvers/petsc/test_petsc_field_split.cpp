@@ -1,0 +1,95 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Issue 4 (large 3D contact): {"pc_type": "fieldsplit"} splits a real contact system by its DoFs
+// into displacements (block size of the nodes) and Lagrange multipliers, and its Schur complement
+// preconditioner (BoomerAMG on the displacements) solves it to the direct solution; without
+// multipliers the displacement preconditioner takes the whole system.
+#include <gtest/gtest.h>
+
+#include "core/linear_solvers/umfpack_solver.h"
+#include "petsc/petsc_solver.h"
+#include "tests/cpp/contact_linear_solvers/contact_system_fixture.h"
+
+namespace mc::test {
+namespace {
+
+double RelativeDifference(const Vector& x, const Vector& y) { return (x - y).norm() / y.norm(); }
+
+PetscSolver::Options FieldSplitOptions() {
+  PetscSolver::Options options;
+  options.tolerance = 1e-12;
+  options.max_iteration = 500;
+  options.petsc_options = {{"pc_type", "fieldsplit"}};
+  return options;
+}
+
+TEST(PetscFieldSplit, ContactSystemSplitByDofsSolvesToTheDirectSolution) {
+  ContactSystem<3, 4, 4> system({true, false, true, true});
+  SparseMatrix A;
+  Vector b;
+  std::vector<Dof*> dofs;
+  system.Assemble(A, b, dofs);
+  b.setLinSpaced(b.size(), -1.0, 2.0);
+
+  PetscSolver petsc(FieldSplitOptions());
+  EXPECT_TRUE(petsc.AdditionalPhysicalDataIsNeeded());
+  EXPECT_FALSE(petsc.IsDirect());
+  Vector x;
+  petsc.Initialize(A);
+  EXPECT_THROW(petsc.Solve(A, x, b), SolutionError);  // no DoFs given: the rows cannot be split
+  petsc.ProvideAdditionalData(A, dofs);
+  std::size_t multipliers = 0;
+  for (const Dof* dof : dofs) multipliers += dof->variable->Name().starts_with("VECTOR_LAGRANGE_MULTIPLIER");
+  EXPECT_EQ(petsc.MultiplierRows().size(), multipliers);
+  EXPECT_EQ(petsc.PrimalRows().size() + multipliers, static_cast<std::size_t>(A.rows()));
+  EXPECT_GT(multipliers, 0u);
+  EXPECT_EQ(petsc.PrimalBlockSize(), 3);
+  petsc.Solve(A, x, b);
+
+  UmfpackSolver umfpack;
+  Vector direct;
+  umfpack.Initialize(A);
+  umfpack.Solve(A, direct, b);
+  EXPECT_LT(RelativeDifference(x, direct), 1e-9);
+  EXPECT_GT(petsc.IterationsNumber(), 1);
+
+  // New values on the same pattern and splits: the KSP is kept and the values are used.
+  A.coeffs() *= 2.0;
+  petsc.ProvideAdditionalData(A, dofs);
+  petsc.Solve(A, x, b);
+  EXPECT_LT(RelativeDifference(x, 0.5 * direct), 1e-9);
+}
+
+TEST(PetscFieldSplit, WithoutMultipliersTheDisplacementPreconditionerTakesTheSystem) {
+  ContactSystem<3, 4, 4> system({false, false, false, false});
+  SparseMatrix full;
+  Vector b_full;
+  std::vector<Dof*> all;
+  system.Assemble(full, b_full, all);
+  std::vector<int> keep;
+  std::vector<Dof*> dofs;
+  for (std::size_t i = 0; i < all.size(); ++i)
+    if (all[i]->variable->Name().starts_with("DISPLACEMENT")) {
+      keep.push_back(static_cast<int>(i));
+      dofs.push_back(all[i]);
+    }
+  const auto n = static_cast<Eigen::Index>(keep.size());
+  Matrix dense(n, n);
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (Eigen::Index j = 0; j < n; ++j) dense(i, j) = full.coeff(keep[i], keep[j]);
+  const SparseMatrix A = dense.sparseView();
+  const Vector b = Vector::LinSpaced(n, 1.0, 3.0);
+
+  PetscSolver petsc(FieldSplitOptions());
+  petsc.ProvideAdditionalData(A, dofs);
+  EXPECT_TRUE(petsc.MultiplierRows().empty());
+  Vector x;
+  petsc.Solve(A, x, b);
+  UmfpackSolver umfpack;
+  Vector direct;
+  umfpack.Initialize(A);
+  umfpack.Solve(A, direct, b);
+  EXPECT_LT(RelativeDifference(x, direct), 1e-9);
+}
+
+}  // namespace
+}  // namespace mc::test
