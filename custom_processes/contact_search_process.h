@@ -39,10 +39,11 @@ struct ContactSearchStatistics {
 ///  4. check_gap: `mapping_check` (default, also "check_mapping") keeps m when its projection
 ///     on s's plane overlaps s; `direct_check` projects s on m's plane; `no_check` keeps all;
 ///     with consider_gap_threshold, masters farther than DISTANCE_THRESHOLD are dropped.
-/// Then slave nodes without any pair are flagged ISOLATED (and inactive), and a slave node is
-/// predicted ACTIVE when its normal gap (along its nodal normal to a paired master, stored in
-/// NORMAL_GAP) is below active_check_factor * NODAL_H. An active node is never deactivated
-/// here: from the first solve on the active set belongs to the strategy.
+/// Then slave nodes without any pair are flagged ISOLATED (and inactive), and at every search
+/// (every step) a slave node is predicted ACTIVE when its normal gap (along its nodal normal to
+/// a paired master, stored in NORMAL_GAP) is below active_check_factor * h_M, and inactive
+/// otherwise, with h_M the mean NODAL_H of the master interface nodes (Kratos' length scale);
+/// a node with no master beneath it along its normal keeps its state.
 ///
 /// Pair names: condition_name + geometry token (+ final_string), e.g.
 /// "ALMFrictionlessMortarContactCondition" + "3D3N4N"; the prototype must be a
@@ -96,7 +97,6 @@ class ContactSearchProcess {
   std::string type_search_;
   std::string check_gap_;
   bool roles_assigned_ = false;
-  bool active_set_predicted_ = false;  ///< the first search predicts ACTIVE; later ones leave it alone
   double total_seconds_ = 0.0;
   std::size_t searches_ = 0;
 };

@@ -67,10 +67,12 @@ def run_hertz(folder: str, normal_variation: str, formulation: str = "ALMContact
 def orders(history) -> list[float]:
     """Convergence order estimates log(e_k+1 / e_k) / log(e_k / e_k-1) from the increments after
     the last active-set change, while they are above round-off (1e-12 of the step's first one):
-    about 2 for quadratic, 1 for linear convergence."""
+    about 2 for quadratic, 1 for linear convergence. The first increment of a step is the load
+    increment itself, not an error of the Newton iteration, so it never enters an estimate (when
+    the predicted active set is already right, the set settles in the first iteration)."""
     last_change = max((i for i, (_, c) in enumerate(history) if c.get("active set changes", 0) > 0), default=-1)
     first = history[0][0]
-    e = [norm for norm, _ in history[last_change:] if norm > 1e-12 * first]
+    e = [norm for norm, _ in history[max(last_change, 1):] if norm > 1e-12 * first]
     return [math.log(c / b) / math.log(b / a) for a, b, c in zip(e, e[1:], e[2:]) if b < a]
 
 

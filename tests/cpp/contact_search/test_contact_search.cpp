@@ -238,15 +238,57 @@ TEST(ContactSearch, CurvedHertzInterface) {
   for (const Condition* pair : search.ComputingPart().Conditions())
     EXPECT_LT(pair->GetGeometry().Center().y() - dynamic_cast<const PairedCondition&>(*pair).GetPairedGeometry().Center().y(),
               0.11);
-  // Only the nodes within a few spacings of the centre start active (gap 1e-6 + x^2 / 2R).
-  std::set<double> active_x;
+  // The nodes near the centre start active (gap 1e-6 + x^2 / 2R): exactly those whose gap is
+  // below active_check_factor (0.01) x the mean NODAL_H of the master (plate) nodes.
+  double master_h = 0.0;
+  int masters = 0;
   for (const Node* node : sub.Nodes())
-    if (node->Is(SLAVE) && node->Is(ACTIVE)) active_x.insert(std::round(node->X() * 1e4) / 1e4);
+    if (node->Is(MASTER)) {
+      master_h += ContactInterfaceBuilder::GetNodalH(*node);
+      ++masters;
+    }
+  master_h /= masters;
+  std::set<double> active_x;
+  for (const Node* node : sub.Nodes()) {
+    if (!node->Is(SLAVE) || node->Is(ISOLATED) || std::abs(node->X()) > 0.5) continue;
+    EXPECT_EQ(node->Is(ACTIVE), node->GetValue(NORMAL_GAP) < 0.01 * master_h)
+        << "node " << node->Id() << ": gap " << node->GetValue(NORMAL_GAP) << ", threshold " << 0.01 * master_h;
+    if (node->Is(ACTIVE)) active_x.insert(std::round(node->X() * 1e4) / 1e4);
+  }
   ASSERT_FALSE(active_x.empty());
   for (double x : active_x) {
-    EXPECT_LT(std::abs(x), 0.12);
+    EXPECT_LT(std::abs(x), 0.3);
     EXPECT_TRUE(active_x.count(-x)) << x;  // symmetric
   }
+}
+
+// Every search predicts the active set again (Kratos' behaviour): a node the previous step left
+// open but the new configuration closes starts the step active, and a node left active whose gap
+// is now wide starts it inactive.
+TEST(ContactSearch, EverySearchPredictsTheActiveSet) {
+  Model model;
+  ModelPart& root = test::ReadCase(model, "ALM_frictionless_contact_test_2D/simple_hertz_sphere_plate_test.mdpa");
+  ContactInterfaceSettings settings;
+  settings.parts = {"Contact_Part"};
+  settings.slave_parts = {"Parts_parts_hemisphere"};
+  ModelPart& sub = ContactInterfaceBuilder(root).Build(settings);
+  ContactSearchProcess search(root, sub, SearchSettings());
+  const std::size_t predicted = search.UpdateMortarConditions().active_nodes;
+  ASSERT_GT(predicted, 0u);
+  Node* centre = nullptr;
+  Node* far = nullptr;
+  for (Node* node : sub.Nodes()) {
+    if (!node->Is(SLAVE) || node->Is(ISOLATED)) continue;
+    if (!centre || std::abs(node->X()) < std::abs(centre->X())) centre = node;
+    if (!node->Is(ACTIVE) && std::abs(node->X()) < 0.5 && (!far || std::abs(node->X()) > std::abs(far->X()))) far = node;
+  }
+  ASSERT_TRUE(centre && far);
+  ASSERT_TRUE(centre->Is(ACTIVE));
+  centre->Set(ACTIVE, false);
+  far->Set(ACTIVE, true);
+  EXPECT_EQ(search.UpdateMortarConditions().active_nodes, predicted);
+  EXPECT_TRUE(centre->Is(ACTIVE)) << centre->Id();
+  EXPECT_FALSE(far->Is(ACTIVE)) << far->Id();
 }
 
 // Synthetic timing: two flat non-matching grids of quads, about 100k interface conditions.
