@@ -117,11 +117,11 @@ def plot(rows, path: str) -> bool:
         return False
     fig, ax = plt.subplots(figsize=(6, 4.5))
     for code, marker in (("mortarcontact", "o"), ("kratos", "s")):
-        for family, style in (("hertz2d", "-"), ("hertz3d", "--")):
+        for family, style in (("hertz2d", "-"), ("hertz3d", "--"), ("hertz3dgrid", ":")):
             points = sorted((h["counts"]["dofs"], s[code]["analysis_seconds"]) for name, h, s in rows
-                            if name.startswith(family) and s[code].get("status") == "ok")
+                            if name.partition("_")[0] == family and s[code].get("status") == "ok")
             if points:
-                ax.loglog(*zip(*points), marker=marker, linestyle=style, label=f"{code} {family[-2:]}")
+                ax.loglog(*zip(*points), marker=marker, linestyle=style, label=f"{code} {family[5:]}")
     ax.set_xlabel("DoFs")
     ax.set_ylabel("analysis time [s]")
     ax.set_title("Hertz cases, 4 load steps")

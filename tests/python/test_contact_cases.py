@@ -143,13 +143,21 @@ def run_hertz(kind: str, size: str, folder: str) -> dict:
 
     case = generate_cases.write_case(kind, size, folder)
     record = {"steps": [], "status": "ok"}
-    case_runner.run_mortarcontact(os.path.join(case, "ProjectParameters.json"), 3 if kind == "hertz3d" else 2, record)
+    case_runner.run_mortarcontact(os.path.join(case, "ProjectParameters.json"), 3 if kind.startswith("hertz3d") else 2, record)
     assert all(step["converged"] for step in record["steps"])
     result = harness.evaluate(record, harness.load_hertz(case))
     result["iterations"] = [s["iterations"] for s in record["steps"]]
-    print(f"{kind} {size}: peak pressure error {result['peak_pressure_error']:+.2%}, "
-          f"half-width error {result['half_width_fit_error']:+.2%}, iterations {result['iterations']}")
+    scale = record["process_info"]["SCALE_FACTOR"]
+    result["axis_pressure"] = max(-scale * n["lm"] for n in record["slave"]
+                                  if abs(n["x"]) < 1e-12 and (dim_is_2d(kind) or abs(n["y"]) < 1e-12))
+    print(f"{kind} {size}: peak pressure error {result['peak_pressure_error']:+.2%}, fitted p0 error "
+          f"{result['p0_fit_error']:+.2%}, half-width error {result['half_width_fit_error']:+.2%}, "
+          f"iterations {result['iterations']}")
     return result
+
+
+def dim_is_2d(kind: str) -> bool:
+    return kind.startswith("hertz2d")
 
 
 @pytest.mark.skipif(importlib.util.find_spec("gmsh") is None, reason="gmsh is not installed")
@@ -164,16 +172,55 @@ def test_hertz_2d_cylinder_matches_theory(tmp_path):
 
 @pytest.mark.skipif(importlib.util.find_spec("gmsh") is None, reason="gmsh is not installed")
 def test_hertz_3d_sphere_matches_theory(tmp_path):
-    """Quarter sphere on a block (15k DoFs, about 15 s): contact radius within 5 % of Hertz, fitted
-    p0 within 3 %, and the nodal peak pressure within 8 % (the peak node is the axis node, a corner of
-    the quarter-model slave interface, where the dual multipliers overshoot; Kratos 10.4 gives +7.6 %
-    on the same mesh). Kratos 10.4 needs 5, 4, 3, 3 Newton iterations here and we one more in step 3
-    (open on issue 3): the bound guards against regressions."""
+    """Quarter sphere on a block, unstructured mesh (15k DoFs, about 15 s): contact radius within
+    5 % of Hertz, fitted p0 within 3 %, and the nodal peak pressure within 8 %. The nodal pressures
+    of this mesh scatter by about +-5 % around the Hertz profile (a node's pressure follows the
+    number and shapes of its tetrahedra): the peak, +7.6 % here (Kratos 10.4: the same), is a node
+    on the symmetry plane y = 0 at r = 0.11 a, 8 % above Hertz there, while the axis node is 1 %
+    below p0. hertz3dgrid (test below) meets the 3 % on the nodal peak. Kratos 10.4 needs 5, 4, 3,
+    3 Newton iterations here and we one more in step 3 (open on issue 3): the bound guards against
+    regressions."""
     result = run_hertz("hertz3d", "15k", str(tmp_path))
     assert abs(result["half_width_fit_error"]) < 0.05
     assert abs(result["p0_fit_error"]) < 0.03
     assert abs(result["peak_pressure_error"]) < 0.08
     assert sum(result["iterations"]) <= 16
+
+
+def _check_hertz_3d_grid(result: dict) -> None:
+    assert abs(result["peak_pressure_error"]) < 0.03
+    assert abs(result["p0_fit_error"]) < 0.03
+    assert abs(result["half_width_fit_error"]) < 0.05
+    assert abs(result["axis_pressure"] / result["hertz_peak_pressure"] - 1.0) < 0.03
+    assert math.isclose(result["force_from_pressure"], result["force"], rel_tol=0.03)
+
+
+@pytest.mark.skipif(importlib.util.find_spec("gmsh") is None, reason="gmsh is not installed")
+def test_hertz_3d_structured_zone_matches_theory(tmp_path):
+    """Quarter sphere on a block with structured contact zones (hertz3dgrid_15k, about 15 s): the
+    nodal pressures follow the Hertz profile without scatter, so the nodal peak pressure (and the
+    pressure of the axis node) is within 3 % of Hertz, as are the fitted p0 and, within 5 %, the
+    contact radius."""
+    result = run_hertz("hertz3dgrid", "15k", str(tmp_path))
+    _check_hertz_3d_grid(result)
+    assert sum(result["iterations"]) <= 20
+
+
+@pytest.mark.slow
+@pytest.mark.skipif(importlib.util.find_spec("gmsh") is None, reason="gmsh is not installed")
+def test_hertz_3d_structured_zone_converges(tmp_path):
+    """hertz3dgrid at 15k, 30k and 50k DoFs (about 4 minutes single-threaded): the nodal peak within
+    3 % of Hertz at every level and converging (measured +1.14 %, +1.42 %, +1.62 %: the first nodes
+    off the axis reach the +2 % by which the whole centre of the profile exceeds Hertz at every
+    level, finite bodies and a/R = 0.1 against Hertz's half-spaces), and the axis node, below the
+    profile on the coarse levels, approaching it (-0.79 %, -0.45 %, -0.04 %)."""
+    results = [run_hertz("hertz3dgrid", size, str(tmp_path / size)) for size in ("15k", "30k", "50k")]
+    for result in results:
+        _check_hertz_3d_grid(result)
+    peak = [r["peak_pressure_error"] for r in results]
+    assert abs(peak[2] - peak[1]) < abs(peak[1] - peak[0])
+    axis = [abs(r["axis_pressure"] / r["hertz_peak_pressure"] - 1.0) for r in results]
+    assert axis[0] > axis[1] > axis[2]
 
 
 def test_penalty_3d_patch_closes_the_gap(shared_cases, monkeypatch):
