@@ -210,17 +210,18 @@ def test_hertz_3d_structured_zone_matches_theory(tmp_path):
 @pytest.mark.skipif(importlib.util.find_spec("gmsh") is None, reason="gmsh is not installed")
 def test_hertz_3d_structured_zone_converges(tmp_path):
     """hertz3dgrid at 15k, 30k and 50k DoFs (about 4 minutes single-threaded): the nodal peak within
-    3 % of Hertz at every level and converging (measured +1.14 %, +1.42 %, +1.62 %: the first nodes
-    off the axis reach the +2 % by which the whole centre of the profile exceeds Hertz at every
-    level, finite bodies and a/R = 0.1 against Hertz's half-spaces), and the axis node, below the
-    profile on the coarse levels, approaching it (-0.79 %, -0.45 %, -0.04 %)."""
+    3 % of Hertz at every level and converging (measured +1.14 %, +1.42 %, +1.62 %, and +1.73 % at
+    80k: the first nodes off the axis reach the +2 % by which the centre of the profile exceeds
+    Hertz at every level, finite bodies and a/R = 0.1 against Hertz's half-spaces), and the axis
+    node, below the profile on the coarse levels, rising towards it (-0.79 %, -0.45 %, -0.04 %,
+    +0.22 % at 80k)."""
     results = [run_hertz("hertz3dgrid", size, str(tmp_path / size)) for size in ("15k", "30k", "50k")]
     for result in results:
         _check_hertz_3d_grid(result)
     peak = [r["peak_pressure_error"] for r in results]
     assert abs(peak[2] - peak[1]) < abs(peak[1] - peak[0])
-    axis = [abs(r["axis_pressure"] / r["hertz_peak_pressure"] - 1.0) for r in results]
-    assert axis[0] > axis[1] > axis[2]
+    axis = [r["axis_pressure"] / r["hertz_peak_pressure"] for r in results]
+    assert axis[0] < axis[1] < axis[2]
 
 
 def test_penalty_3d_patch_closes_the_gap(shared_cases, monkeypatch):
