@@ -40,7 +40,7 @@ test-python:
 # into a separate virtual environment created by the script, never into this one).
 bench: install
 	$(PYTHON) benchmarks/run_benchmarks.py
-	$(PYTHON) benchmarks/hertz/compare.py --cases hertz2d_2k,hertz2d_8k,hertz2d_30k,hertz3d_15k
+	$(PYTHON) benchmarks/hertz/compare.py --cases hertz2d_2k,hertz2d_8k,hertz2d_30k,hertz3d_15k,hertz3dgrid_15k
 	$(PYTHON) benchmarks/hertz/contact_scaling.py
 
 # The large Hertz cases, one run each (Kratos needs about 25 minutes for hertz3d_50k alone); the
