@@ -139,17 +139,22 @@ def _size_callback(dim: int, scale: float):
     return size
 
 
-def _mesh_body(gmsh, dim: int, scale: float, build) -> tuple[np.ndarray, np.ndarray]:
-    """Meshes one body in a fresh gmsh model; returns (coords (n, 3), connectivity (m, dim+1))
-    with 0-based local node indices, elements positively oriented."""
-    gmsh.model.add("body")
-    build()
+def _set_mesh_options(gmsh) -> None:
+    """Sizes from the size callback only; Frontal-Delaunay surfaces, Delaunay volumes, optimized."""
     gmsh.option.setNumber("Mesh.MeshSizeFromPoints", 0)
     gmsh.option.setNumber("Mesh.MeshSizeFromCurvature", 0)
     gmsh.option.setNumber("Mesh.MeshSizeExtendFromBoundary", 0)
     gmsh.option.setNumber("Mesh.Algorithm", 6)
     gmsh.option.setNumber("Mesh.Algorithm3D", 1)
     gmsh.option.setNumber("Mesh.Optimize", 1)
+
+
+def _mesh_body(gmsh, dim: int, scale: float, build) -> tuple[np.ndarray, np.ndarray]:
+    """Meshes one body in a fresh gmsh model; returns (coords (n, 3), connectivity (m, dim+1))
+    with 0-based local node indices, elements positively oriented."""
+    gmsh.model.add("body")
+    build()
+    _set_mesh_options(gmsh)
     gmsh.model.mesh.setSizeCallback(_size_callback(dim, scale))
     gmsh.model.mesh.generate(dim)
     tags, coords, _ = gmsh.model.mesh.getNodes()
@@ -270,12 +275,7 @@ def _mesh_grid_body(gmsh, build, size) -> tuple[np.ndarray, np.ndarray]:
         gmsh.model.add("body")
         zone, n_xy, n_z, lo, hi, bottom, shared_corner = build()
         _structured_zone(gmsh, zone, n_xy, n_z, shared_corner, arrangement)
-        gmsh.option.setNumber("Mesh.MeshSizeFromPoints", 0)
-        gmsh.option.setNumber("Mesh.MeshSizeFromCurvature", 0)
-        gmsh.option.setNumber("Mesh.MeshSizeExtendFromBoundary", 0)
-        gmsh.option.setNumber("Mesh.Algorithm", 6)
-        gmsh.option.setNumber("Mesh.Algorithm3D", 1)
-        gmsh.option.setNumber("Mesh.Optimize", 1)
+        _set_mesh_options(gmsh)
         gmsh.model.mesh.setSizeCallback(size)
         gmsh.model.mesh.setTransfiniteVolume(zone)
         gmsh.model.mesh.generate(3)

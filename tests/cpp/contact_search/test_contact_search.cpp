@@ -215,13 +215,18 @@ TEST(ContactSearch, NonMatchingFlatInterfacePairsOverlappingSegments) {
   EXPECT_GT(loose.UpdateMortarConditions().pairs, 6u);
 }
 
-TEST(ContactSearch, CurvedHertzInterface) {
-  Model model;
-  ModelPart& root = test::ReadCase(model, "ALM_frictionless_contact_test_2D/simple_hertz_sphere_plate_test.mdpa");
+// The interface of the shared 2D Hertz case: hemisphere (slave) on a plate.
+ModelPart& HertzSphereInterface(ModelPart& root) {
   ContactInterfaceSettings settings;
   settings.parts = {"Contact_Part"};
   settings.slave_parts = {"Parts_parts_hemisphere"};
-  ModelPart& sub = ContactInterfaceBuilder(root).Build(settings);
+  return ContactInterfaceBuilder(root).Build(settings);
+}
+
+TEST(ContactSearch, CurvedHertzInterface) {
+  Model model;
+  ModelPart& root = test::ReadCase(model, "ALM_frictionless_contact_test_2D/simple_hertz_sphere_plate_test.mdpa");
+  ModelPart& sub = HertzSphereInterface(root);
   ContactSearchProcess search(root, sub, SearchSettings());
   const ContactSearchStatistics stats = search.UpdateMortarConditions();
   EXPECT_EQ(stats.slave_conditions, 51u);
@@ -268,10 +273,7 @@ TEST(ContactSearch, CurvedHertzInterface) {
 TEST(ContactSearch, EverySearchPredictsTheActiveSet) {
   Model model;
   ModelPart& root = test::ReadCase(model, "ALM_frictionless_contact_test_2D/simple_hertz_sphere_plate_test.mdpa");
-  ContactInterfaceSettings settings;
-  settings.parts = {"Contact_Part"};
-  settings.slave_parts = {"Parts_parts_hemisphere"};
-  ModelPart& sub = ContactInterfaceBuilder(root).Build(settings);
+  ModelPart& sub = HertzSphereInterface(root);
   ContactSearchProcess search(root, sub, SearchSettings());
   const std::size_t predicted = search.UpdateMortarConditions().active_nodes;
   ASSERT_GT(predicted, 0u);

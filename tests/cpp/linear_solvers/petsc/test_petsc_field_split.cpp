@@ -14,6 +14,14 @@ namespace {
 
 double RelativeDifference(const Vector& x, const Vector& y) { return (x - y).norm() / y.norm(); }
 
+Vector DirectSolution(const SparseMatrix& A, const Vector& b) {
+  UmfpackSolver umfpack;
+  Vector x;
+  umfpack.Initialize(A);
+  umfpack.Solve(A, x, b);
+  return x;
+}
+
 PetscSolver::Options FieldSplitOptions() {
   PetscSolver::Options options;
   options.tolerance = 1e-12;
@@ -44,11 +52,7 @@ TEST(PetscFieldSplit, ContactSystemSplitByDofsSolvesToTheDirectSolution) {
   EXPECT_GT(multipliers, 0u);
   EXPECT_EQ(petsc.PrimalBlockSize(), 3);
   petsc.Solve(A, x, b);
-
-  UmfpackSolver umfpack;
-  Vector direct;
-  umfpack.Initialize(A);
-  umfpack.Solve(A, direct, b);
+  const Vector direct = DirectSolution(A, b);
   EXPECT_LT(RelativeDifference(x, direct), 1e-9);
   EXPECT_GT(petsc.IterationsNumber(), 1);
 
@@ -84,11 +88,7 @@ TEST(PetscFieldSplit, WithoutMultipliersTheDisplacementPreconditionerTakesTheSys
   EXPECT_TRUE(petsc.MultiplierRows().empty());
   Vector x;
   petsc.Solve(A, x, b);
-  UmfpackSolver umfpack;
-  Vector direct;
-  umfpack.Initialize(A);
-  umfpack.Solve(A, direct, b);
-  EXPECT_LT(RelativeDifference(x, direct), 1e-9);
+  EXPECT_LT(RelativeDifference(x, DirectSolution(A, b)), 1e-9);
 }
 
 }  // namespace
