@@ -188,6 +188,8 @@ def main(argv=None) -> int:
             f"Machine: {harness.machine_line(args.threads)}.\n\n"
             + (f"mortarcontact's linear_solver_settings: `{args.linear_solver}` (the cases' own: "
                f"`sparse_lu`, UMFPACK for mortarcontact).\n\n" if args.linear_solver else "")
+            + ("Kratos not run (`--codes`): with its direct solvers one run of hertz3d_50k already takes "
+               "16 to 20 minutes here (results_large.md).\n\n" if "kratos" not in codes else "")
             + table(rows) + "\n"
             + (f"\nmortarcontact per phase (medians; timed in C++ with one clock read per phase and call: "
                f"the contact search, the mortar weighted gap and nodal normals of the criteria, the "
