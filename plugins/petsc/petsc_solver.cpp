@@ -267,11 +267,10 @@ void PetscSolver::SetFieldSplits(KSP ksp) {
   Check(KSPGetPC(ksp, &pc), "KSPGetPC");
   if (primal_rows_.empty() && multiplier_rows_.empty()) return;  // before ProvideAdditionalData: see Solve
   if (multiplier_rows_.empty()) {
-    // No contact multipliers (yet): the displacement preconditioner on the whole system.
-    std::string primal_pc = "hypre";
-    for (const auto& [key, value] : options_.petsc_options)
-      if (key == "fieldsplit_u_pc_type") primal_pc = value;
-    Check(PCSetType(pc, primal_pc.c_str()), "PCSetType");
+    // No contact multipliers (yet): the displacement preconditioner, with its own options
+    // (fieldsplit_u_pc_...), on the whole system.
+    Check(PCSetOptionsPrefix(pc, Concat(prefix_, "fieldsplit_u_").c_str()), "PCSetOptionsPrefix");
+    Check(PCSetFromOptions(pc), "PCSetFromOptions");
     return;
   }
   auto set = [&](const char* name, const std::vector<int>& rows, int block) {

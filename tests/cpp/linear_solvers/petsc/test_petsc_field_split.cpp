@@ -89,6 +89,23 @@ TEST(PetscFieldSplit, WithoutMultipliersTheDisplacementPreconditionerTakesTheSys
   Vector x;
   petsc.Solve(A, x, b);
   EXPECT_LT(RelativeDifference(x, DirectSolution(A, b)), 1e-9);
+  const int multigrid_iterations = petsc.IterationsNumber();
+
+  // The displacement field's options apply: Jacobi instead of BoomerAMG needs more iterations.
+  PetscSolver::Options jacobi = FieldSplitOptions();
+  jacobi.petsc_options.emplace_back("fieldsplit_u_pc_type", "jacobi");
+  PetscSolver weaker(jacobi);
+  weaker.ProvideAdditionalData(A, dofs);
+  weaker.Solve(A, x, b);
+  EXPECT_LT(RelativeDifference(x, DirectSolution(A, b)), 1e-9);
+  EXPECT_GT(weaker.IterationsNumber(), multigrid_iterations);
+
+  // So do BoomerAMG's own options: a misspelt one is rejected, not silently ignored.
+  PetscSolver::Options misspelt = FieldSplitOptions();
+  misspelt.petsc_options.emplace_back("fieldsplit_u_pc_hypre_boomeramg_coarsen_type", "HMSI");
+  PetscSolver rejected(misspelt);
+  rejected.ProvideAdditionalData(A, dofs);
+  EXPECT_THROW(rejected.Solve(A, x, b), SolutionError);
 }
 
 }  // namespace
