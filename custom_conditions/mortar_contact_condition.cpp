@@ -2,7 +2,6 @@
 #include "custom_conditions/mortar_contact_condition.h"
 
 #include <algorithm>
-
 #include <atomic>
 #include <cassert>
 

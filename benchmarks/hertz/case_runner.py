@@ -133,9 +133,10 @@ def run_kratos(parameters_text: str, dim: int, record: dict):
     record.update(_extract(model, KM.KratosGlobals.GetVariable, dim, KM.ACTIVE))
 
 
-def run_mortarcontact(parameters_path: str, dim: int, record: dict, linear_solver: str | None = None):
+def mortarcontact_parameters(parameters_path: str, linear_solver: str | None = None):
+    """The case's project parameters for mortarcontact, with ``linear_solver`` (JSON) in place of
+    its linear_solver_settings when given."""
     import mortarcontact as mc
-    from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
     from mortarcontact.project_parameters import read_project_parameters
 
     parameters = read_project_parameters(parameters_path)
@@ -143,6 +144,15 @@ def run_mortarcontact(parameters_path: str, dim: int, record: dict, linear_solve
         solver_settings = parameters["solver_settings"]
         solver_settings.RemoveValue("linear_solver_settings")
         solver_settings.AddValue("linear_solver_settings", mc.Parameters(linear_solver))
+    return parameters
+
+
+def run_mortarcontact(parameters_path: str, dim: int, record: dict, linear_solver: str | None = None):
+    import mortarcontact as mc
+    from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
+
+    parameters = mortarcontact_parameters(parameters_path, linear_solver)
+    if linear_solver:
         record["linear_solver"] = json.loads(linear_solver)
     model = mc.Model()
     started = time.perf_counter()

@@ -48,13 +48,11 @@ def measure(case_dir: str, repeat: int, linear_solver: str | None) -> dict:
 
     import mortarcontact as mc
     from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
-    from mortarcontact.project_parameters import read_project_parameters
+
+    import case_runner
 
     os.chdir(case_dir)
-    parameters = read_project_parameters(os.path.join(case_dir, "ProjectParameters.json"))
-    if linear_solver:
-        parameters["solver_settings"].RemoveValue("linear_solver_settings")
-        parameters["solver_settings"].AddValue("linear_solver_settings", mc.Parameters(linear_solver))
+    parameters = case_runner.mortarcontact_parameters(os.path.join(case_dir, "ProjectParameters.json"), linear_solver)
     analysis = StructuralMechanicsAnalysis(mc.Model(), parameters, progress=False, case_dir=case_dir)
     analysis.Initialize()
     analysis.time = analysis.solver.AdvanceInTime(analysis.time)

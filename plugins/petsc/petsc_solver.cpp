@@ -128,6 +128,9 @@ void PetscSolver::ProvideAdditionalData(const SparseMatrix& A, const std::vector
   const auto n = static_cast<std::size_t>(A.rows());
   if (dof_of_equation.size() < n)
     throw SolutionError(Concat("PETSc: ", dof_of_equation.size(), " DoFs for a system of ", n, " rows"));
+  // Called before every solve; the DoFs change only with the pattern.
+  if (dofs_.size() == n && std::equal(dofs_.begin(), dofs_.end(), dof_of_equation.begin())) return;
+  dofs_.assign(dof_of_equation.begin(), dof_of_equation.begin() + static_cast<std::ptrdiff_t>(n));
   std::vector<int> primal, multipliers;
   primal.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {

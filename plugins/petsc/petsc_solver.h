@@ -82,6 +82,7 @@ class PetscSolver : public LinearSolver {
   SparseMatrix compressed_;
   int iterations_ = 0;
   bool field_split_ = false;
+  std::vector<Dof*> dofs_;  ///< of the last ProvideAdditionalData, whose split depends on nothing else
   std::vector<int> primal_rows_;
   std::vector<int> multiplier_rows_;
   int primal_block_size_ = 1;
