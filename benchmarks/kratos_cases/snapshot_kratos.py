@@ -32,7 +32,7 @@ sys.path.insert(0, os.path.join(ROOT, "benchmarks", "hertz"))
 sys.path.insert(0, os.path.join(ROOT, "tests", "python"))
 
 import harness  # noqa: E402
-from shared_cases import FRICTIONLESS_CASES, SHARED_CASES, reference_values  # noqa: E402
+from csma_cases import FRICTIONLESS_CASES, CSMA_CASES, reference_values  # noqa: E402
 
 OUTPUT = os.path.join(ROOT, "tests", "cases", "kratos_10_4")
 RUNNER = os.path.join(HERE, "kratos_case_runner.py")
@@ -45,7 +45,7 @@ def migrated_case(case: str, folder: str) -> str:
     from mortarcontact.project_parameters import read_project_parameters
 
     cwd = os.getcwd()
-    os.chdir(SHARED_CASES)
+    os.chdir(CSMA_CASES)
     try:
         params = json.loads(read_project_parameters(f"{case}_parameters.json").WriteJsonString())
         root = params["solver_settings"]["model_part_name"]

@@ -128,17 +128,17 @@ def test_unknown_process_suggests_nearest(tmp_path):
     assert_clean_failure(result, 2, "assign_vector_variable_process")
 
 
-def test_frictional_contact_case_reports_not_implemented(shared_cases):
-    case = os.path.join(shared_cases, "ALM_frictional_contact_test_2D", "hyper_simple_patch_test_parameters.json")
+def test_frictional_contact_case_reports_not_implemented(csma_cases):
+    case = os.path.join(csma_cases, "ALM_frictional_contact_test_2D", "hyper_simple_patch_test_parameters.json")
     result = subprocess.run([sys.executable, "-m", "mortarcontact", "run", case], capture_output=True, text=True,
-                            cwd=shared_cases, timeout=300)
+                            cwd=csma_cases, timeout=300)
     assert_clean_failure(result, 3, "ALMContactFrictional")
 
 
-def test_frictionless_contact_case_runs_from_the_command_line(shared_cases):
-    case = os.path.join(shared_cases, "ALM_frictionless_contact_test_2D", "hyper_simple_patch_test_parameters.json")
+def test_frictionless_contact_case_runs_from_the_command_line(csma_cases):
+    case = os.path.join(csma_cases, "ALM_frictionless_contact_test_2D", "hyper_simple_patch_test_parameters.json")
     result = subprocess.run([sys.executable, "-m", "mortarcontact", "run", case], capture_output=True, text=True,
-                            cwd=shared_cases, timeout=300)
+                            cwd=csma_cases, timeout=300)
     assert result.returncode == 0, result.stderr
 
 

@@ -1,4 +1,4 @@
-"""Issue 2: every parameters, mdpa and materials file of the shared Kratos CSMA cases loads; contact
+"""Issue 2: every parameters, mdpa and materials file of the Kratos CSMA reference cases loads; contact
 settings are validated, and the formulations not implemented yet raise a clear error."""
 from __future__ import annotations
 
@@ -12,7 +12,7 @@ from mortarcontact.project_parameters import read_project_parameters
 from mortarcontact.solvers import create_solver
 from mortarcontact.solvers.solver_settings import validate_solver_settings
 
-CASE_DIR = os.path.join(os.path.dirname(__file__), "..", "..", "..", "shared", "cases", "kratos_csma")
+from csma_cases import CSMA_CASES as CASE_DIR
 PARAMETER_FILES = sorted(glob.glob(os.path.join(CASE_DIR, "*", "*_parameters.json")))
 MDPA_FILES = sorted(glob.glob(os.path.join(CASE_DIR, "*", "*.mdpa")))
 
@@ -51,9 +51,9 @@ def test_mdpa_files_load(path):
     assert part.NumberOfNodes() == len([line for line in node_lines if line.strip() and not line.strip().startswith("//")])
 
 
-def test_materials_files_apply(shared_cases, monkeypatch):
+def test_materials_files_apply(csma_cases, monkeypatch):
     """Each case's materials file assigns its law and values to the parts it names."""
-    monkeypatch.chdir(shared_cases)
+    monkeypatch.chdir(csma_cases)
     checked = 0
     for path in PARAMETER_FILES:
         params = read_project_parameters(path)

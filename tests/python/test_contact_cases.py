@@ -15,10 +15,10 @@ import pytest
 import mortarcontact as mc
 from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
 from mortarcontact.project_parameters import read_project_parameters
-from shared_cases import (FRICTIONLESS_CASES, KRATOS_SNAPSHOTS, SHARED_CASES, check_blocks, reference_values,
+from csma_cases import (FRICTIONLESS_CASES, KRATOS_SNAPSHOTS, CSMA_CASES, check_blocks, reference_values,
                           use_components)
 
-# Strict relative tolerance against the shared reference files, per case. Kratos 10.4 itself no
+# Strict relative tolerance against the reference files, per case. Kratos 10.4 itself no
 # longer reproduces some of them (benchmarks/kratos_cases/snapshot_kratos.py): the slope patch
 # reference is 9e-4 from the exact -0.15 / -0.05 that both Kratos 10.4 and we compute, and the
 # tri-on-quad reference is 3.7e-3 from us and 9.6e-3 from Kratos 10.4. The dynamic Taylor patch
@@ -74,8 +74,8 @@ class SnapshotAnalysis(StructuralMechanicsAnalysis):
 
 
 
-def run_shared_case(case: str, formulation: str = "scalar"):
-    params = read_project_parameters(os.path.join(SHARED_CASES, f"{case}_parameters.json"))
+def run_csma_case(case: str, formulation: str = "scalar"):
+    params = read_project_parameters(os.path.join(CSMA_CASES, f"{case}_parameters.json"))
     if formulation == "components":
         use_components(params)
     time, nodes = reference_values(case)
@@ -96,11 +96,11 @@ def worst_difference(values: dict, expected: dict) -> float:
 
 
 @pytest.mark.parametrize("case,formulation", RUNS, ids=[f"{os.path.basename(c)}-{f}" for c, f in RUNS])
-def test_frictionless_case(shared_cases, monkeypatch, case, formulation):
+def test_frictionless_case(csma_cases, monkeypatch, case, formulation):
     """Runs unchanged (its own Kratos checks pass), in no more Newton iterations than Kratos 10.4;
-    matches the shared reference to the strict tolerance and Kratos 10.4 on the same run."""
-    monkeypatch.chdir(shared_cases)
-    analysis, params = run_shared_case(case, formulation)
+    matches the reference file to the strict tolerance and Kratos 10.4 on the same run."""
+    monkeypatch.chdir(csma_cases)
+    analysis, params = run_csma_case(case, formulation)
     name = os.path.basename(case)
     iterations = [it for _, _, it, _, _ in analysis.step_log]
     assert all(converged for _, _, _, converged, _ in analysis.step_log)
@@ -223,12 +223,12 @@ def test_hertz_3d_structured_zone_converges(tmp_path):
     assert axis[0] < axis[1] < axis[2]
 
 
-def test_penalty_3d_patch_closes_the_gap(shared_cases, monkeypatch):
-    """Penalty contact of two hexahedra (its reference file is not in the shared set): the slave and
+def test_penalty_3d_patch_closes_the_gap(csma_cases, monkeypatch):
+    """Penalty contact of two hexahedra (its reference file is not among the copied cases): the slave and
     master faces end up together to within the penalty's penetration."""
-    monkeypatch.chdir(shared_cases)
+    monkeypatch.chdir(csma_cases)
     params = read_project_parameters(os.path.join(
-        shared_cases, "penalty_frictionless_contact_test_3D/3D_contact_simplest_patch_matching_test_parameters.json"))
+        csma_cases, "penalty_frictionless_contact_test_3D/3D_contact_simplest_patch_matching_test_parameters.json"))
     params["processes"].RemoveValue("json_check_process")
     analysis = StructuralMechanicsAnalysis(mc.Model(), params, progress=False)
     analysis.Run()

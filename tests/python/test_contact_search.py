@@ -24,13 +24,13 @@ def _contact_items(parameters: dict):
     return lists.get("contact_process_list", [])
 
 
-def _case_files(shared_cases):
-    return sorted(glob.glob(os.path.join(shared_cases, "*", "*_parameters.json")))
+def _case_files(csma_cases):
+    return sorted(glob.glob(os.path.join(csma_cases, "*", "*_parameters.json")))
 
 
-def test_every_shared_case_contact_list_validates(shared_cases):
+def test_every_csma_case_contact_list_validates(csma_cases):
     seen = 0
-    for path in _case_files(shared_cases):
+    for path in _case_files(csma_cases):
         with open(path) as stream:
             parameters = json.load(stream)
         for item in _contact_items(parameters):
@@ -121,13 +121,13 @@ needs_bindings = pytest.mark.skipif(
 
 
 @needs_bindings
-def test_alm_process_builds_interface_and_pairs(shared_cases):
+def test_alm_process_builds_interface_and_pairs(csma_cases):
     model = _core.Model()
     root = model.CreateModelPart("Structure", 2)
     for var in (_core.DISPLACEMENT, _core.NORMAL, _core.NODAL_H, _core.WEIGHTED_GAP,
                 _core.LAGRANGE_MULTIPLIER_CONTACT_PRESSURE):
         root.AddNodalSolutionStepVariable(var)
-    _core.ReadModelPart(root, os.path.join(shared_cases, "ALM_frictionless_contact_test_2D",
+    _core.ReadModelPart(root, os.path.join(csma_cases, "ALM_frictionless_contact_test_2D",
                                            "hyper_simple_patch_test.mdpa"))
     process = ALMContactProcess(model, _core.Parameters(
         '{"assume_master_slave": {"0": ["Parts_Parts_Auto2"]}, "contact_model_part": {"0": ["Contact_Part"]}}'))

@@ -40,7 +40,7 @@ void RegisterTestPairs() {
           std::make_shared<const TestPairCondition>(0, Geometry(kind.slave, {}), nullptr, Geometry(kind.master, {})));
 }
 
-std::string CasesDir() { return std::string(MC_SHARED_CASES_DIR) + "/kratos_csma"; }
+std::string CasesDir() { return std::string(MC_TEST_CASES_DIR) + "/kratos_csma"; }
 
 ModelPart& ReadCase(Model& model, const std::string& relative_mdpa) {
   RegisterTestPairs();

@@ -75,7 +75,7 @@ std::string ReadFile(const std::string& path) {
   return text.str();
 }
 
-std::string CasesDir() { return std::string(MC_SHARED_CASES_DIR) + "/kratos_csma"; }
+std::string CasesDir() { return std::string(MC_TEST_CASES_DIR) + "/kratos_csma"; }
 
 std::vector<std::string> CaseFiles(const std::string& suffix) {
   std::vector<std::string> files;

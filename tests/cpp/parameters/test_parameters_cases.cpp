@@ -14,7 +14,7 @@ namespace {
 
 std::vector<std::filesystem::path> CaseFiles() {
   std::vector<std::filesystem::path> files;
-  const std::filesystem::path root = std::filesystem::path(MC_SHARED_CASES_DIR) / "kratos_csma";
+  const std::filesystem::path root = std::filesystem::path(MC_TEST_CASES_DIR) / "kratos_csma";
   for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
     const std::string name = entry.path().filename().string();
     if (name.ends_with("_parameters.json") || name.ends_with("_materials.json")) files.push_back(entry.path());
@@ -41,7 +41,7 @@ void ForEachValueString(const Parameters& p, const std::function<void(const std:
 
 TEST(ParametersCases, EveryReferenceSettingsFileParses) {
   const auto files = CaseFiles();
-  ASSERT_GE(files.size(), 30u) << "reference cases not found under " << MC_SHARED_CASES_DIR;
+  ASSERT_GE(files.size(), 30u) << "reference cases not found under " << MC_TEST_CASES_DIR;
   std::size_t expressions = 0;
   for (const auto& file : files) {
     SCOPED_TRACE(file.string());

@@ -1,4 +1,4 @@
-"""The frictionless shared Kratos CSMA cases (../shared/cases/kratos_csma) and how to run them in
+"""The frictionless Kratos CSMA reference cases (tests/cases/kratos_csma) and how to run them in
 either multiplier formulation; used by test_contact_cases.py and by
 benchmarks/kratos_cases/snapshot_kratos.py, which stores Kratos 10.4's values for the same runs."""
 from __future__ import annotations
@@ -6,8 +6,7 @@ from __future__ import annotations
 import json
 import os
 
-SHARED_CASES = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", "..", "shared", "cases",
-                                            "kratos_csma"))
+CSMA_CASES = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "cases", "kratos_csma"))
 KRATOS_SNAPSHOTS = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "cases", "kratos_10_4"))
 
 #: case -> formulations Kratos' suite runs it with (the triangle patch fixes vector multiplier
@@ -37,7 +36,7 @@ def use_components(params) -> None:
 
 def check_blocks(case: str):
     """(input file, model part, variables, historical) of each json check of the case's parameters."""
-    with open(os.path.join(SHARED_CASES, f"{case}_parameters.json")) as f:
+    with open(os.path.join(CSMA_CASES, f"{case}_parameters.json")) as f:
         params = json.load(f)
     blocks = []
     for check in params["processes"].get("json_check_process", []):
@@ -52,7 +51,7 @@ def reference_values(case: str):
     time is SNAPSHOT_TIME's when the case has one."""
     time, nodes = None, {}
     for input_file, _, variables, _ in check_blocks(case):
-        with open(os.path.join(SHARED_CASES, input_file)) as f:
+        with open(os.path.join(CSMA_CASES, input_file)) as f:
             reference = json.load(f)
         time = reference["TIME"][-1]
         for key in reference:
