@@ -188,7 +188,9 @@ void MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::AddExplicitContri
   for (int j = 0; j < TNumNodes; ++j) {
     Node& node = slave[j];
     AtomicAdd(node.GetSolutionStepValue(WEIGHTED_GAP), kinematics.weighted_gap(j));
-    AtomicAdd(node.GetValueRef(NODAL_AREA), kinematics.nodal_area(j));
+    // A sliver's area does not count: a node covered by slivers alone keeps NODAL_AREA = 0 and is
+    // ISOLATED, as its weighted gap (element dual basis on a sliver) has no reliable sign.
+    if (!kinematics.sliver) AtomicAdd(node.GetValueRef(NODAL_AREA), kinematics.nodal_area(j));
   }
 }
 

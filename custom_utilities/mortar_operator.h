@@ -9,8 +9,8 @@
 namespace mc {
 
 /// The mortar operators of one (slave, master) pair, integrated over their overlap:
-///   D(j, k) = int Phi_j N1_k        (slave x slave; diagonal with the dual basis once the
-///                                    slave element is fully covered, see DualBasisDomain)
+///   D(j, k) = int Phi_j N1_k        (slave x slave; diagonal with the pair's dual basis,
+///                                    see DualLagrangeMultiplier)
 ///   M(j, l) = int Phi_j N2_l        (slave x master; N2 at the projected master point)
 ///   nodal_area(j) = int N1_j        (standard basis: contribution to NODAL_AREA)
 /// with the integration points and weights of ExactMortarIntegrationUtility (physical

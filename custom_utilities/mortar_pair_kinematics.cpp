@@ -15,25 +15,9 @@ namespace {
 using mortar_detail::ValueOf;
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
-
-/// A_e of a 2D slave line for the axisymmetric inner product int (.) 2 pi r ds (N_i N_j r is cubic
-/// on the line, so 2-point Gauss is exact).
-template <class T, int TNumNodes>
-Eigen::Matrix<T, TNumNodes, TNumNodes> AxisymmetricAe(const Eigen::Matrix<T, TNumNodes, 2>& x1) {
-  using SF1 = MortarShapeFunctions<TNumNodes>;
-  const T half_length = 0.5 * (x1.row(1) - x1.row(0)).norm();
-  Eigen::Matrix<T, TNumNodes, 1> d = Eigen::Matrix<T, TNumNodes, 1>::Zero();
-  Eigen::Matrix<T, TNumNodes, TNumNodes> m = Eigen::Matrix<T, TNumNodes, TNumNodes>::Zero();
-  for (const double xi : {-1.0 / std::sqrt(3.0), 1.0 / std::sqrt(3.0)}) {
-    typename SF1::template Local<T> local;
-    local(0) = T(xi);
-    const Eigen::Matrix<T, TNumNodes, 1> n = SF1::template N<T>(local);
-    const T weight = half_length * kTwoPi * n.dot(x1.col(0));
-    d += weight * n;
-    m += weight * n * n.transpose();
-  }
-  return DualLagrangeMultiplier<2, TNumNodes>::template AeFromIntegrals<T>(d, m);
-}
+// An order at which every overlap has enough points for its pair dual basis (6 per sub-triangle,
+// for the 4 functions of a quadrilateral).
+constexpr int kDualBasisOrder = 4;
 
 /// Values of the pair in scalar type T (double, or AutoDiff seeded by the caller).
 template <class T, int TDim, int TNumNodes, int TNumNodesMaster>
@@ -43,53 +27,62 @@ struct PairValues {
   MortarOperator<T, TDim, TNumNodes, TNumNodesMaster> op;
   Eigen::Matrix<T, TNumNodes, TDim> gap_vector;
   Eigen::Matrix<T, TNumNodes, 1> weighted_gap;
+  bool sliver = false;
 };
+
+/// The pair's dual basis (DualLagrangeMultiplier) from d_j = int N_j and M = int N N^T over its
+/// integration points; false when M is singular.
+template <class T, int TDim, int TNumNodes, int TNumNodesMaster>
+bool PairDualBasis(const MortarIntegrationPoints<T, TDim, TNumNodes, TNumNodesMaster>& points,
+                   Eigen::Matrix<T, TNumNodes, TNumNodes>& ae) {
+  using SF1 = MortarShapeFunctions<TNumNodes>;
+  Eigen::Matrix<T, TNumNodes, 1> d = Eigen::Matrix<T, TNumNodes, 1>::Zero();
+  Eigen::Matrix<T, TNumNodes, TNumNodes> m = Eigen::Matrix<T, TNumNodes, TNumNodes>::Zero();
+  for (int g = 0; g < points.size; ++g) {
+    const auto& p = points.points[g];
+    const Eigen::Matrix<T, TNumNodes, 1> n = SF1::template N<T>(p.slave_local);
+    d += p.weight * n;
+    m += p.weight * n * n.transpose();
+  }
+  return DualLagrangeMultiplier<TDim, TNumNodes>::FromIntegrals(d, m, ae);
+}
 
 template <class T, int TDim, int TNumNodes, int TNumNodesMaster>
 bool ComputePair(const Eigen::Matrix<T, TNumNodes, TDim>& x1,
                  const Eigen::Matrix<T, TNumNodesMaster, TDim>& x2,
                  const Eigen::Matrix<T, TNumNodes, TDim>& n1,
-                 const MortarIntegrationSettings& settings, DualBasisDomain dual_basis,
+                 const MortarIntegrationSettings& settings,
                  PairValues<T, TDim, TNumNodes, TNumNodesMaster>& out) {
   using Exact = ExactMortarIntegrationUtility<TDim, TNumNodes, TNumNodesMaster>;
-  using Dual = DualLagrangeMultiplier<TDim, TNumNodes>;
   using SF1 = MortarShapeFunctions<TNumNodes>;
-  if (!Exact::template Compute<T>(x1, x2, n1, settings, out.points)) return false;
-  if constexpr (TDim == 2) {
-    if (settings.axisymmetric)
-      for (int g = 0; g < out.points.size; ++g) {
-        auto& p = out.points.points[g];
-        p.weight *= kTwoPi * SF1::template N<T>(p.slave_local).dot(x1.col(0));
-      }
-  } else if (settings.axisymmetric) {
-    throw Error("mortar integration: the axisymmetric formulation exists in 2D only");
-  }
-
-  bool have_ae = false;
-  if (dual_basis == DualBasisDomain::kPairOverlap) {
-    Eigen::Matrix<T, TNumNodes, 1> d = Eigen::Matrix<T, TNumNodes, 1>::Zero();
-    Eigen::Matrix<T, TNumNodes, TNumNodes> m = Eigen::Matrix<T, TNumNodes, TNumNodes>::Zero();
-    for (int g = 0; g < out.points.size; ++g) {
-      const auto& p = out.points.points[g];
-      const Eigen::Matrix<T, TNumNodes, 1> n = SF1::template N<T>(p.slave_local);
-      d += p.weight * n;
-      m += p.weight * n * n.transpose();
+  if constexpr (TDim == 3)
+    if (settings.axisymmetric) throw Error("mortar integration: the axisymmetric formulation exists in 2D only");
+  auto segment = [&](int order) {
+    MortarIntegrationSettings pair_settings = settings;
+    pair_settings.integration_order = order;
+    if (!Exact::template Compute<T>(x1, x2, n1, pair_settings, out.points)) return false;
+    if constexpr (TDim == 2) {
+      // Surfaces of revolution: every integral, the dual basis' included, weighted by 2 pi r.
+      if (settings.axisymmetric)
+        for (int g = 0; g < out.points.size; ++g) {
+          auto& p = out.points.points[g];
+          p.weight *= kTwoPi * SF1::template N<T>(p.slave_local).dot(x1.col(0));
+        }
     }
-    out.ae = Dual::template AeFromIntegrals<T>(d, m);
-    have_ae = std::isfinite(ValueOf(out.ae(0, 0)));
+    return true;
+  };
+  if (!segment(settings.integration_order)) return false;
+  // The pair basis needs at least as many independent points as slave nodes: a quadrilateral
+  // slave whose overlap is one sub-triangle has 3 points at order 2 (and order 1 has one point),
+  // so such overlaps are integrated again at kDualBasisOrder. What is still singular there is a
+  // sliver, which takes the element basis (DualLagrangeMultiplier).
+  bool regular = PairDualBasis(out.points, out.ae);
+  if (!regular && settings.integration_order < kDualBasisOrder) {
+    segment(kDualBasisOrder);
+    regular = PairDualBasis(out.points, out.ae);
   }
-  if (!have_ae) {
-    // The dual basis must be biorthogonal in the inner product of D and M (2 pi r weighted in
-    // axisymmetry), or D would not be diagonal.
-    if constexpr (TDim == 2)
-      out.ae = settings.axisymmetric ? AxisymmetricAe<T, TNumNodes>(x1) : Dual::template ComputeAe<T>(x1);
-    else
-      out.ae = Dual::template ComputeAe<T>(x1);
-  }
-  if (!std::isfinite(ValueOf(out.ae(0, 0))))
-    throw Error(Concat("mortar integration: degenerate slave element (zero or negative measure), "
-                       "first node at (",
-                       ValueOf(x1(0, 0)), ", ", ValueOf(x1(0, 1)), ")"));
+  out.sliver = !regular;
+  if (out.sliver) out.ae = DualLagrangeMultiplier<TDim, TNumNodes>::OverElement(x1, settings.axisymmetric);
 
   out.op.Compute(out.points, out.ae);
   out.gap_vector = out.op.D * x1 - out.op.M * x2;
@@ -102,6 +95,7 @@ bool ComputePair(const Eigen::Matrix<T, TNumNodes, TDim>& x1,
 template <int TDim, int TNumNodes, int TNumNodesMaster>
 void MortarPairKinematics<TDim, TNumNodes, TNumNodesMaster>::ClearValues() {
   area = 0.0;
+  sliver = false;
   points.size = 0;
   points.area = 0.0;
   Ae.setZero();
@@ -126,19 +120,19 @@ void MortarPairKinematics<TDim, TNumNodes, TNumNodesMaster>::SkipIntegration(con
 template <int TDim, int TNumNodes, int TNumNodesMaster>
 bool MortarPairKinematics<TDim, TNumNodes, TNumNodesMaster>::ComputeValues(
     const SlaveMatrix& x1, const MasterMatrix& x2, const SlaveMatrix& n1,
-    const MortarIntegrationSettings& settings, DualBasisDomain dual_basis) {
+    const MortarIntegrationSettings& settings) {
   slave_coordinates = x1;
   master_coordinates = x2;
   slave_normals = n1;
   PairValues<double, TDim, TNumNodes, TNumNodesMaster> v;
-  has_overlap = ComputePair<double, TDim, TNumNodes, TNumNodesMaster>(x1, x2, n1, settings,
-                                                                      dual_basis, v);
+  has_overlap = ComputePair<double, TDim, TNumNodes, TNumNodesMaster>(x1, x2, n1, settings, v);
   if (!has_overlap) {
     ClearValues();
     return false;
   }
   points = v.points;
   area = v.points.area;
+  sliver = v.sliver;
   Ae = v.ae;
   D = v.op.D;
   M = v.op.M;
@@ -151,7 +145,7 @@ bool MortarPairKinematics<TDim, TNumNodes, TNumNodesMaster>::ComputeValues(
 template <int TDim, int TNumNodes, int TNumNodesMaster>
 bool MortarPairKinematics<TDim, TNumNodes, TNumNodesMaster>::Compute(
     const SlaveMatrix& x1, const MasterMatrix& x2, const SlaveMatrix& n1,
-    const MortarIntegrationSettings& settings, DualBasisDomain dual_basis) {
+    const MortarIntegrationSettings& settings) {
   using AD = mortar_detail::PairAutoDiff<TDim, TNumNodes, TNumNodesMaster>;
   static_assert(mortar_detail::NumDerivatives(TDim, TNumNodes, TNumNodesMaster) == kNumDerivatives);
   slave_coordinates = x1;
@@ -171,7 +165,7 @@ bool MortarPairKinematics<TDim, TNumNodes, TNumNodesMaster>::Compute(
   // Large (AutoDiff through every point); thread_local keeps it off the stack and reused.
   thread_local PairValues<AD, TDim, TNumNodes, TNumNodesMaster> v;
   has_overlap =
-      ComputePair<AD, TDim, TNumNodes, TNumNodesMaster>(x1_ad, x2_ad, n1_ad, settings, dual_basis, v);
+      ComputePair<AD, TDim, TNumNodes, TNumNodesMaster>(x1_ad, x2_ad, n1_ad, settings, v);
 
   for (auto& m : dD) m.setZero();
   for (auto& m : dM) m.setZero();
@@ -195,6 +189,7 @@ bool MortarPairKinematics<TDim, TNumNodes, TNumNodesMaster>::Compute(
     q.weight = p.weight.value();
   }
   area = v.points.area.value();
+  sliver = v.sliver;
   d_area = v.points.area.derivatives();
   for (int i = 0; i < TNumNodes; ++i) {
     for (int k = 0; k < TNumNodes; ++k) {

@@ -66,6 +66,9 @@ struct MortarPairKinematics {
   // Values.
   bool has_overlap = false;
   double area = 0.0;  ///< overlap length (2D) / area (3D)
+  /// The overlap is too thin to carry its own dual basis and took the slave element's
+  /// (DualLagrangeMultiplier): it cannot carry contact by itself.
+  bool sliver = false;
   MortarIntegrationPoints<double, TDim, TNumNodes, TNumNodesMaster> points;
   DMatrix Ae = DMatrix::Zero();
   DMatrix D = DMatrix::Zero();
@@ -81,15 +84,14 @@ struct MortarPairKinematics {
   DerivativeRows d_nodal_area = DerivativeRows::Zero();
   Eigen::Matrix<double, kNumDerivatives, 1> d_area = Eigen::Matrix<double, kNumDerivatives, 1>::Zero();
 
-  /// Values and derivatives. Returns has_overlap; without overlap every output is zero.
+  /// Values and derivatives. Returns has_overlap; without overlap (or with one too thin to carry
+  /// the pair's dual basis, see DualLagrangeMultiplier) every output is zero.
   bool Compute(const SlaveMatrix& x1, const MasterMatrix& x2, const SlaveMatrix& n1,
-               const MortarIntegrationSettings& settings,
-               DualBasisDomain dual_basis = DualBasisDomain::kSlaveElement);
+               const MortarIntegrationSettings& settings);
 
   /// Values only (derivative members untouched).
   bool ComputeValues(const SlaveMatrix& x1, const MasterMatrix& x2, const SlaveMatrix& n1,
-                     const MortarIntegrationSettings& settings,
-                     DualBasisDomain dual_basis = DualBasisDomain::kSlaveElement);
+                     const MortarIntegrationSettings& settings);
 
   /// A pair left unintegrated (its kernels read no mortar quantity): the inputs are stored, every
   /// value is zero as without overlap, the derivative members are untouched.

@@ -27,8 +27,9 @@ void ContactMortarUpdater::ComputeWeightedGap(ModelPart& model_part) {
   if (!pairs) return;
   const auto start = std::chrono::steady_clock::now();
   ContactConditionUtilities::ComputeExplicitContributions(*pairs, true);
-  // A slave node outside the overlap of every pair has no mortar operators: it cannot carry
-  // contact, so it is ISOLATED and inactive (its multiplier row is then the inactive one).
+  // A slave node outside the overlap of every pair (or covered by slivers alone) has no mortar
+  // operators of its own: it cannot carry contact, so it is ISOLATED and inactive (its
+  // multiplier row is then the inactive one).
   for (Condition* pair : pairs->Conditions())
     for (Node* node : pair->GetGeometry().Nodes()) {
       const bool isolated = node->GetValue(NODAL_AREA) <= 0.0;
