@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from .. import _core
+from ..utilities import warn
 
 
 def variable_by_name(name: str):
@@ -28,6 +29,34 @@ def nodal_values(part, variable, historical: bool = True) -> np.ndarray:
     if historical:
         return np.asarray(part.GetNodalValues(variable), dtype=float)
     return np.asarray(part.GetNodalNonHistoricalValues(variable), dtype=float)
+
+
+def holds_values(part, variable, historical: bool) -> bool:
+    """Whether a node of ``part`` holds ``variable``: a historical variable when the model part
+    stores it, a non-historical one when some node was given a value."""
+    variable = variable.Source() if variable.IsComponent() else variable
+    if historical:
+        return part.HasNodalSolutionStepVariable(variable)
+    return any(node.Has(variable) for node in part.Nodes)
+
+
+class UnsetVariableWarning:
+    """Warns, once per variable, that a requested nodal variable is held by no node of the part:
+    nothing in the run has computed it (yet), so it would be written or checked as zeros."""
+
+    def __init__(self, process_name: str):
+        self.process_name = process_name
+        self.checked: set[tuple[str, bool]] = set()
+
+    def check(self, part, variable, historical: bool) -> None:
+        key = (variable.Name(), historical)
+        if key in self.checked:
+            return
+        self.checked.add(key)
+        if not holds_values(part, variable, historical):
+            kind = "historical" if historical else "non-historical"
+            warn(f"{self.process_name} ({part.FullName()}): {variable.Name()} ({kind}) is not computed on any node "
+                 "of the part; its values are zeros")
 
 
 def nodal_flags(part, flag) -> np.ndarray:
