@@ -162,8 +162,8 @@ class VtkOutputProcess(OutputProcess):
     Cells: the elements of the part (``entity_type`` "automatic": the conditions if there are no
     elements; a part with neither is written as vertices). Point data: the historical variables
     ``nodal_solution_step_data_variables`` and the non-historical ``nodal_data_value_variables``
-    (array-3 values as 3-component arrays; a variable that no node of the part holds is written
-    as zeros with a warning), ``nodal_flags`` as 0/1 arrays. Cell data:
+    (array-3 values as 3-component arrays; a non-historical variable that no node of the part holds is
+    written as zeros with a warning), ``nodal_flags`` as 0/1 arrays. Cell data:
     ``gauss_point_variables_extrapolated_to_nodes`` and ``gauss_point_variables_in_elements``
     are written **per cell as the mean over its integration points** (not extrapolated to the
     nodes); vectors keep their components, matrices (stress / strain tensors) become 9

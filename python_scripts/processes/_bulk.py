@@ -31,32 +31,23 @@ def nodal_values(part, variable, historical: bool = True) -> np.ndarray:
     return np.asarray(part.GetNodalNonHistoricalValues(variable), dtype=float)
 
 
-def holds_values(part, variable, historical: bool) -> bool:
-    """Whether a node of ``part`` holds ``variable``: a historical variable when the model part
-    stores it, a non-historical one when some node was given a value."""
-    variable = variable.Source() if variable.IsComponent() else variable
-    if historical:
-        return part.HasNodalSolutionStepVariable(variable)
-    return any(node.Has(variable) for node in part.Nodes)
-
-
 class UnsetVariableWarning:
-    """Warns, once per variable, that a requested nodal variable is held by no node of the part:
-    nothing in the run has computed it (yet), so it would be written or checked as zeros."""
+    """Warns, once per variable, that a requested non-historical nodal variable is held by no node
+    of the part: nothing in the run has computed it (yet), so it would be written or checked as
+    zeros. (A historical variable that the model part does not store is an input error when read.)"""
 
     def __init__(self, process_name: str):
         self.process_name = process_name
-        self.checked: set[tuple[str, bool]] = set()
+        self.checked: set[str] = set()
 
     def check(self, part, variable, historical: bool) -> None:
-        key = (variable.Name(), historical)
-        if key in self.checked:
+        variable = variable.Source() if variable.IsComponent() else variable
+        if historical or variable.Name() in self.checked:
             return
-        self.checked.add(key)
-        if not holds_values(part, variable, historical):
-            kind = "historical" if historical else "non-historical"
-            warn(f"{self.process_name} ({part.FullName()}): {variable.Name()} ({kind}) is not computed on any node "
-                 "of the part; its values are zeros")
+        self.checked.add(variable.Name())
+        if not any(node.Has(variable) for node in part.Nodes):
+            warn(f"{self.process_name} ({part.FullName()}): {variable.Name()} is not computed on any node of the "
+                 "part; its values are zeros")
 
 
 def nodal_flags(part, flag) -> np.ndarray:

@@ -54,8 +54,8 @@ class FromJsonCheckResultProcess(Process):
     ``input_file_name`` (required), ``model_part_name`` (required), ``sub_model_part_name`` (""),
     ``check_for_flag`` (""), ``historical_value`` (true), ``tolerance`` (1e-3, absolute),
     ``relative_tolerance`` (1e-6), ``time_frequency`` (1.0), ``use_node_coordinates`` (false),
-    ``check_only_local_entities`` (false; serial runs check everything), ``help``. A variable that
-    no node holds is checked as zeros, with a warning.
+    ``check_only_local_entities`` (false; serial runs check everything), ``help``. A non-historical
+    variable that no node holds is checked as zeros, with a warning.
     """
 
     @classmethod

@@ -20,8 +20,8 @@ class JsonOutputProcess(Process):
     ``output_file_name`` (required), ``model_part_name`` (required), ``sub_model_part_name`` (""),
     ``time_frequency`` (1.0), ``historical_value`` (true), ``resultant_solution`` (false: one
     entry per node; true: the sum over the nodes under ``RESULTANT``), ``check_for_flag`` ("" or
-    a flag name: only nodes with that flag), ``use_node_coordinates`` (false), ``help``. A variable
-    that no node holds is recorded as zeros with a warning.
+    a flag name: only nodes with that flag), ``use_node_coordinates`` (false), ``help``. A non-historical
+    variable that no node holds is recorded as zeros with a warning.
     """
 
     @classmethod
