@@ -1,14 +1,37 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include <cstddef>
+
 #include "core/model/model_part.h"
 
 namespace mc {
 
-/// Zeroes the augmented tractions (AUGMENTED_NORMAL_CONTACT_PRESSURE and
-/// AUGMENTED_TANGENT_CONTACT_PRESSURE) of the slave nodes of `part` that are not ACTIVE, so
-/// that output shows no pressure where there is no contact (clear_inactive_for_post).
-/// Returns the number of nodes cleared.
-std::size_t ClearInactiveForPost(ModelPart& part);
+/// The contact results of the SLAVE nodes of `part` (the "Contact" interface) at the end of a
+/// converged step, in the units of the bodies' stresses (the multipliers are scaled by
+/// ProcessInfo[SCALE_FACTOR]; these are not). Kratos 10.4 computes none of them in its implicit
+/// mortar formulations (measured: a requested column is all zeros), so they are ours:
+///
+///  - NORMAL_CONTACT_STRESS: the normal traction on the slave body, negative in compression like
+///    the multipliers: the augmented pressure lambda_bar = k lambda_n + eps g that the active set
+///    was decided on (penalty: eps g) where ACTIVE, 0 elsewhere. It is the pressure the mortar
+///    conditions apply; at a converged active node eps g is within the gap tolerance, so it is
+///    k lambda_n for the ALM formulations.
+///  - CONTACT_PRESSURE: -NORMAL_CONTACT_STRESS, the contact pressure (positive in compression).
+///  - TANGENTIAL_CONTACT_STRESS: 0, the formulations are frictionless.
+///  - CONTACT_FORCE: NORMAL_CONTACT_STRESS NODAL_AREA NORMAL, the force on the slave body at the
+///    node; summed over the interface it balances the reactions.
+///  - NORMAL_GAP: WEIGHTED_GAP / NODAL_AREA, the mortar mean of the normal gap around the node at
+///    the converged configuration, where the node has a mortar area (elsewhere the search's value
+///    is kept). Kratos holds the gap its search measured at the start of the step, and only at
+///    the nodes active then (0 at open ones), which says nothing about the converged state.
+///
+/// With `clear_inactive` (clear_inactive_for_post) the augmented tractions of the inactive slave
+/// nodes (AUGMENTED_NORMAL_CONTACT_PRESSURE, AUGMENTED_TANGENT_CONTACT_PRESSURE) are set to 0:
+/// there lambda_bar = eps g > 0 is the active-set indicator, not a pressure. Kratos clears them
+/// only before the output processes write, so its json_output_process and
+/// from_json_check_result_process still read eps g there; here every reader after the step sees 0.
+/// Returns the number of slave nodes visited.
+std::size_t ComputeContactOutputs(ModelPart& part, bool clear_inactive);
 
 }  // namespace mc

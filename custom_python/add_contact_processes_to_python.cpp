@@ -79,8 +79,9 @@ void AddContactProcessesToPython(py::module_& m) {
       .def_static("ComputeNodalNormals", &NormalCalculationUtilities::ComputeNodalNormals, py::arg("part"))
       .def_static("ComputeConditionsNormals", &NormalCalculationUtilities::ComputeConditionsNormals, py::arg("part"));
 
-  m.def("ClearInactiveForPost", &ClearInactiveForPost, py::arg("part"),
-        "Zeroes the augmented tractions of the inactive slave nodes; returns how many.");
+  m.def("ComputeContactOutputs", &ComputeContactOutputs, py::arg("part"), py::arg("clear_inactive"),
+        "The contact tractions, forces and gaps of the slave nodes at the end of a converged step; with "
+        "clear_inactive, zero augmented tractions at the inactive ones. Returns the slave nodes visited.");
 }
 
 }  // namespace mc::python

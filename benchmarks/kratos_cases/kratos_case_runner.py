@@ -3,7 +3,8 @@
 and writes the requested nodal values at the requested time:
 
     python kratos_case_runner.py PARAMETERS REQUEST FORMULATION OUTPUT
-REQUEST: {"time": t, "nodes": {"NODE_<id>": ["VAR", ...]}}; FORMULATION: scalar | components.
+REQUEST: {"time": t, "nodes": {"NODE_<id>": ["VAR", ...]}}; FORMULATION: scalar | components, the
+formulation PARAMETERS were migrated to (recorded only).
 Non-historical variables (AUGMENTED_NORMAL_CONTACT_PRESSURE) are read with GetValue. The Newton
 iterations of every step are stored too.
 """
@@ -26,11 +27,6 @@ def main(parameters_file, request_file, formulation, output):
         params = KM.Parameters(f.read())
     with open(request_file) as f:
         request = json.load(f)
-    if formulation == "components":
-        params["solver_settings"]["contact_settings"]["mortar_type"].SetString("ALMContactFrictionlessComponents")
-        processes = params["processes"]["contact_process_list"]
-        for i in range(processes.size()):
-            processes[i]["Parameters"]["contact_type"].SetString("FrictionlessComponents")
     model = KM.Model()
     root = params["solver_settings"]["model_part_name"].GetString()
     snapshot, iterations = {}, []

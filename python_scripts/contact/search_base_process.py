@@ -136,7 +136,10 @@ class SearchBaseProcess(Process):
             self._steps_since_search = 0
         self._steps_since_search += 1
 
-    def ExecuteBeforeOutputStep(self) -> None:
-        if self.settings["clear_inactive_for_post"].GetBool() and self.root is not None:
-            _core.ClearInactiveForPost(self.root.GetSubModelPart("Contact"))
+    def ExecuteFinalizeSolutionStep(self) -> None:
+        # Here rather than before the output (as Kratos clears): the json processes read the
+        # step's values in their own ExecuteFinalizeSolutionStep, after this one.
+        if self.root is not None:
+            _core.ComputeContactOutputs(self.root.GetSubModelPart("Contact"),
+                                        self.settings["clear_inactive_for_post"].GetBool())
 

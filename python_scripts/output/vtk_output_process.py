@@ -19,7 +19,8 @@ import numpy as np
 
 from .. import _core
 from ..process import OutputProcess
-from ..processes._bulk import entity_connectivity, integration_point_means, nodal_flags, nodal_values, variable_by_name
+from ..processes._bulk import (UnsetVariableWarning, entity_connectivity, integration_point_means, nodal_flags,
+                               nodal_values, variable_by_name)
 from ..processes.model_part_resolution import resolve_model_part
 from ..utilities import write_text_atomically
 
@@ -161,7 +162,8 @@ class VtkOutputProcess(OutputProcess):
     Cells: the elements of the part (``entity_type`` "automatic": the conditions if there are no
     elements; a part with neither is written as vertices). Point data: the historical variables
     ``nodal_solution_step_data_variables`` and the non-historical ``nodal_data_value_variables``
-    (array-3 values as 3-component arrays), ``nodal_flags`` as 0/1 arrays. Cell data:
+    (array-3 values as 3-component arrays; a non-historical variable that no node of the part holds is
+    written as zeros with a warning), ``nodal_flags`` as 0/1 arrays. Cell data:
     ``gauss_point_variables_extrapolated_to_nodes`` and ``gauss_point_variables_in_elements``
     are written **per cell as the mean over its integration points** (not extrapolated to the
     nodes); vectors keep their components, matrices (stress / strain tensors) become 9
@@ -178,6 +180,8 @@ class VtkOutputProcess(OutputProcess):
     (false: initial coordinates), ``write_ids`` (false), and the variable lists above plus
     ``condition_data_value_variables`` / ``condition_flags`` ([]).
     """
+
+    python_module = "vtk_output_process"
 
     @classmethod
     def GetDefaultParameters(cls):
@@ -221,6 +225,7 @@ class VtkOutputProcess(OutputProcess):
         self.flags = {key: [_core.GetFlag(n) for n in s[key].GetStringArray()]
                       for key in ("nodal_flags", "element_flags", "condition_flags")}
         self.writers: list[_PartWriter] = []
+        self.unset = UnsetVariableWarning(self.python_module)
         self.step_count = 0
         self.next_output = None
 
@@ -284,10 +289,10 @@ class VtkOutputProcess(OutputProcess):
         deformed = self.settings["write_deformed_configuration"].GetBool()
         points = np.asarray(part.NodeCoordinates(not deformed), dtype=float)
         point_data = {}
-        for variable in self.variables["nodal_solution_step_data_variables"]:
-            point_data[variable.Name()] = nodal_values(part, variable, historical=True)
-        for variable in self.variables["nodal_data_value_variables"]:
-            point_data[variable.Name()] = nodal_values(part, variable, historical=False)
+        for key, historical in (("nodal_solution_step_data_variables", True), ("nodal_data_value_variables", False)):
+            for variable in self.variables[key]:
+                self.unset.check(part, variable, historical)
+                point_data[variable.Name()] = nodal_values(part, variable, historical=historical)
         for flag in self.flags["nodal_flags"]:
             point_data[flag.Name()] = nodal_flags(part, flag).astype(np.float64)
         if self.settings["write_ids"].GetBool():
@@ -329,6 +334,8 @@ class GidOutputProcess(VtkOutputProcess):
     ``output_control_type`` ("step"/"time"), ``output_frequency`` / ``output_interval``. The
     other GiD options (``gidpost_flags``, ``file_label``, ``body_output``, ``point_data_configuration``
     ...) have no VTU meaning and are ignored."""
+
+    python_module = "gid_output_process"
 
     def __init__(self, model, settings):
         settings = settings if settings is not None else _core.Parameters()

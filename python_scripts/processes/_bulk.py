@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from .. import _core
+from ..utilities import warn
 
 
 def variable_by_name(name: str):
@@ -28,6 +29,25 @@ def nodal_values(part, variable, historical: bool = True) -> np.ndarray:
     if historical:
         return np.asarray(part.GetNodalValues(variable), dtype=float)
     return np.asarray(part.GetNodalNonHistoricalValues(variable), dtype=float)
+
+
+class UnsetVariableWarning:
+    """Warns, once per variable, that a requested non-historical nodal variable is held by no node
+    of the part: nothing in the run has computed it (yet), so it would be written or checked as
+    zeros. (A historical variable that the model part does not store is an input error when read.)"""
+
+    def __init__(self, process_name: str):
+        self.process_name = process_name
+        self.checked: set[str] = set()
+
+    def check(self, part, variable, historical: bool) -> None:
+        variable = variable.Source() if variable.IsComponent() else variable
+        if historical or variable.Name() in self.checked:
+            return
+        self.checked.add(variable.Name())
+        if not any(node.Has(variable) for node in part.Nodes):
+            warn(f"{self.process_name} ({part.FullName()}): {variable.Name()} is not computed on any node of the "
+                 "part; its values are zeros")
 
 
 def nodal_flags(part, flag) -> np.ndarray:

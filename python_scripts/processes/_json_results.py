@@ -13,7 +13,7 @@ import numpy as np
 
 from .. import _core
 from ..utilities import write_text_atomically
-from ._bulk import is_array3, nodal_flags, nodal_values, variable_by_name
+from ._bulk import UnsetVariableWarning, is_array3, nodal_flags, nodal_values, variable_by_name
 from .model_part_resolution import resolve_model_part
 
 
@@ -38,9 +38,12 @@ def node_keys(part, mask: np.ndarray, use_coordinates: bool) -> list[str]:
     return [f"NODE_{i}" for i in part.NodeIds()[mask]]
 
 
-def value_columns(part, variable_name: str, historical: bool, mask: np.ndarray) -> dict[str, np.ndarray]:
-    """``{key: values of the selected nodes}``; array-3 variables split into components."""
+def value_columns(part, variable_name: str, historical: bool, mask: np.ndarray,
+                  unset: UnsetVariableWarning) -> dict[str, np.ndarray]:
+    """``{key: values of the selected nodes}``; array-3 variables split into components. A
+    variable that no node holds is reported through ``unset``."""
     variable = variable_by_name(variable_name)
+    unset.check(part, variable, historical)
     if is_array3(variable):
         values = nodal_values(part, variable, historical)[mask]
         return {f"{variable_name}_{axis}": values[:, k] for k, axis in enumerate("XYZ")}

@@ -8,6 +8,7 @@ import numpy as np
 
 from .. import _core
 from ..process import Process
+from ._bulk import UnsetVariableWarning
 from ._json_results import (TimeCounter, gauss_point_columns, node_keys, node_mask, results_model_part,
                             value_columns)
 
@@ -53,7 +54,8 @@ class FromJsonCheckResultProcess(Process):
     ``input_file_name`` (required), ``model_part_name`` (required), ``sub_model_part_name`` (""),
     ``check_for_flag`` (""), ``historical_value`` (true), ``tolerance`` (1e-3, absolute),
     ``relative_tolerance`` (1e-6), ``time_frequency`` (1.0), ``use_node_coordinates`` (false),
-    ``check_only_local_entities`` (false; serial runs check everything), ``help``.
+    ``check_only_local_entities`` (false; serial runs check everything), ``help``. A non-historical
+    variable that no node holds is checked as zeros, with a warning.
     """
 
     @classmethod
@@ -82,6 +84,7 @@ class FromJsonCheckResultProcess(Process):
         self.relative_tolerance = s["relative_tolerance"].GetDouble()
         self.counter = TimeCounter(s["time_frequency"].GetDouble())
         self.model_part = None
+        self.unset = UnsetVariableWarning("from_json_check_result_process")
         self.checks_done = 0
 
     def ExecuteInitialize(self) -> None:
@@ -139,7 +142,7 @@ class FromJsonCheckResultProcess(Process):
         keys = node_keys(self.model_part, mask, self.use_coordinates)
         ids = self.model_part.NodeIds()[mask]
         for name in self.variables:
-            for key, values in value_columns(self.model_part, name, self.historical, mask).items():
+            for key, values in value_columns(self.model_part, name, self.historical, mask, self.unset).items():
                 series = np.asarray([self._reference_series(node_key, key) for node_key in keys]).reshape(len(keys), -1)
                 reference = (1.0 - w) * series[:, i] + w * series[:, j] if len(keys) else np.zeros(0)
                 bad = np.flatnonzero(~is_close(values, reference, self.tolerance, self.relative_tolerance))

@@ -6,6 +6,7 @@ import numpy as np
 
 from .. import _core
 from ..process import Process
+from ._bulk import UnsetVariableWarning
 from ._json_results import (TimeCounter, gauss_point_columns, node_keys, node_mask, results_model_part,
                             value_columns, write_json_atomically)
 
@@ -19,7 +20,8 @@ class JsonOutputProcess(Process):
     ``output_file_name`` (required), ``model_part_name`` (required), ``sub_model_part_name`` (""),
     ``time_frequency`` (1.0), ``historical_value`` (true), ``resultant_solution`` (false: one
     entry per node; true: the sum over the nodes under ``RESULTANT``), ``check_for_flag`` ("" or
-    a flag name: only nodes with that flag), ``use_node_coordinates`` (false), ``help``.
+    a flag name: only nodes with that flag), ``use_node_coordinates`` (false), ``help``. A non-historical
+    variable that no node holds is recorded as zeros with a warning.
     """
 
     @classmethod
@@ -47,6 +49,7 @@ class JsonOutputProcess(Process):
         self.counter = TimeCounter(s["time_frequency"].GetDouble())
         self.data: dict = {"TIME": []}
         self.model_part = None
+        self.unset = UnsetVariableWarning("json_output_process")
 
     def ExecuteInitialize(self) -> None:
         self.model_part = results_model_part(self.model, self.settings)
@@ -67,7 +70,7 @@ class JsonOutputProcess(Process):
         mask = node_mask(self.model_part, self.flag)
         keys = node_keys(self.model_part, mask, self.use_coordinates)
         for name in self.variables:
-            for key, values in value_columns(self.model_part, name, self.historical, mask).items():
+            for key, values in value_columns(self.model_part, name, self.historical, mask, self.unset).items():
                 if self.resultant:
                     self.data.setdefault("RESULTANT", {}).setdefault(key, []).append(float(np.sum(values)))
                     continue

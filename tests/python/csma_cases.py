@@ -34,6 +34,15 @@ def use_components(params) -> None:
         processes[i]["Parameters"]["contact_type"].SetString("FrictionlessComponents")
 
 
+def use_penalty(params) -> None:
+    """Every contact process of the case as penalty_contact_process (frictionless)."""
+    params["solver_settings"]["contact_settings"]["mortar_type"].SetString("PenaltyContactFrictionless")
+    processes = params["processes"]["contact_process_list"]
+    for i in range(processes.size()):
+        processes[i]["python_module"].SetString("penalty_contact_process")
+        processes[i]["Parameters"]["contact_type"].SetString("Frictionless")
+
+
 def check_blocks(case: str):
     """(input file, model part, variables, historical) of each json check of the case's parameters."""
     with open(os.path.join(CSMA_CASES, f"{case}_parameters.json")) as f:
