@@ -16,6 +16,7 @@
 #include "structural/constitutive_laws/hyper_elastic_plane_strain_2d_law.h"
 #include "structural/constitutive_laws/kirchhoff_saint_venant_3d_law.h"
 #include "structural/constitutive_laws/kirchhoff_saint_venant_plane_strain_2d_law.h"
+#include "structural/constitutive_laws/kirchhoff_saint_venant_plane_stress_2d_law.h"
 #include "structural/constitutive_laws/linear_elastic_3d_law.h"
 #include "structural/constitutive_laws/linear_elastic_axisym_2d_law.h"
 #include "structural/constitutive_laws/linear_elastic_plane_strain_2d_law.h"
@@ -59,6 +60,7 @@ void RegisterAll() {
   AddLaw<HyperElasticAxisym2DLaw>();
   AddLaw<KirchhoffSaintVenant3DLaw>();
   AddLaw<KirchhoffSaintVenantPlaneStrain2DLaw>();
+  AddLaw<KirchhoffSaintVenantPlaneStress2DLaw>();
 
   const std::initializer_list<GT> solids_2d = {GT::Triangle2D3, GT::Triangle2D6, GT::Quadrilateral2D4,
                                                GT::Quadrilateral2D8, GT::Quadrilateral2D9};

@@ -13,10 +13,7 @@ void AxisymPointLoadCondition::CalculateAll(Matrix* lhs, Vector* rhs, const Proc
   const double two_pi = 2.0 * std::numbers::pi;
   const double radius = node.X0()[0] + node.FastGetSolutionStepValue(DISPLACEMENT_X);
   if (rhs) *rhs = two_pi * radius * load.head(2);
-  if (lhs) {
-    lhs->setZero(2, 2);
-    lhs->col(0) = -two_pi * load.head(2);
-  }
+  if (lhs) lhs->setZero(2, 2);  // no stiffness of the radius dependence, as in Kratos 10.4
 }
 
 }  // namespace mc

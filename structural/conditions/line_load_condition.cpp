@@ -41,24 +41,16 @@ void LineLoadCondition::CalculateAll(Matrix* lhs, Vector* rhs, const ProcessInfo
       p += N[ia] * NodalPressure(a);
     }
     const double w = points[g].weight;
-    const double length = t.norm();
     // Per unit current length (times the current circumference in axisymmetry) and never times
     // THICKNESS: Kratos 10.4's convention, although its plane elements do integrate over
-    // THICKNESS. The load keeps its direction: its stiffness is that of the measure only.
+    // THICKNESS. As in Kratos the dependence on the current measure has no stiffness, so that a
+    // linear analysis solves with the elastic stiffness alone.
     const double circumference = axisymmetric_ ? two_pi * r : 1.0;
-    if (load.head(dim).squaredNorm() > 0.0) {
+    if (rhs)
       for (std::size_t a = 0; a < n; ++a) {
         const auto ia = static_cast<Eigen::Index>(a);
-        if (rhs) rhs->segment(ia * dim, dim) += N[ia] * w * length * circumference * load.head(dim);
-        if (!lhs) continue;
-        for (std::size_t b = 0; b < n; ++b) {
-          const auto ib = static_cast<Eigen::Index>(b);
-          Array3 dmeasure = circumference * dN(ib, 0) / length * t;  // d(length circumference)/dx_b
-          if (axisymmetric_) dmeasure[0] += two_pi * length * N[ib];
-          lhs->block(ia * dim, ib * dim, dim, dim) -= N[ia] * w * load.head(dim) * dmeasure.head(dim).transpose();
-        }
+        rhs->segment(ia * dim, dim) += N[ia] * w * t.norm() * circumference * load.head(dim);
       }
-    }
     if (p == 0.0) continue;
     if (dim == 3)
       throw InputError(Concat("condition ", Id(), " (", Info(), "): a face pressure (", p,
