@@ -73,7 +73,7 @@ KINEMATICS = {"small": "SmallDisplacementElement", "total": "TotalLagrangianElem
 #: laws of each state that mortarcontact and Kratos 10.4 both register (HyperElasticAxisym2DLaw
 #: is mortarcontact's only: Kratos 10.4 has no axisymmetric Neo-Hookean law)
 LAWS = {
-    "plane_stress": ("LinearElasticPlaneStress2DLaw",),
+    "plane_stress": ("LinearElasticPlaneStress2DLaw", "KirchhoffSaintVenantPlaneStress2DLaw"),
     "plane_strain": ("LinearElasticPlaneStrain2DLaw", "HyperElasticPlaneStrain2DLaw",
                      "KirchhoffSaintVenantPlaneStrain2DLaw"),
     "axisym": ("LinearElasticAxisym2DLaw",),
@@ -202,6 +202,13 @@ def all_cases() -> list[Case]:
                 element = _element_name(state, "total", suffix)
                 cases.append(Case(f"loads_{_state_tag(state)}_total_{suffix}_{load}", state, element, law, load,
                                   "loads"))
+    # Kratos' linear strategy: one solve per step on the mesh moved by the previous steps.
+    for state, load in (("plane_stress", "line"), ("plane_strain", "positive_pressure"), ("3d", "surface"),
+                        ("3d", "negative_pressure")):
+        suffix = "3D8N" if state == "3d" else "2D4N"
+        cases.append(Case(f"loads_{_state_tag(state)}_small_{load}_linear_analysis", state,
+                          f"SmallDisplacementElement{suffix}", LAWS[state][0], load, "loads",
+                          extra={"analysis_type": "linear"}))
     for scheme, kinematics in itertools.product(("bossak", "newmark"), ("small", "total")):
         element = _element_name("plane_strain", kinematics, "2D4N")
         law = "LinearElasticPlaneStrain2DLaw" if kinematics == "small" else "HyperElasticPlaneStrain2DLaw"
@@ -287,6 +294,12 @@ def stretch_solution(case: Case, coords: np.ndarray) -> tuple[np.ndarray, float]
     strain_z = 0.5 * (stretch**2 - 1.0)
     radial = np.sqrt(1.0 - 2.0 * POISSON * strain_z)
     return (radial - 1.0) * coords[:, 0], stretch * YOUNG * strain_z * np.pi * 3.0
+
+
+def supported_nodes(case: Case) -> list[int]:
+    """Nodes with a prescribed displacement component: where reactions are compared."""
+    parts = build(case)["parts"]
+    return sorted(parts["support"]["nodes"]) + (sorted(parts["load"]["nodes"]) if case.load == "stretch" else [])
 
 
 def cantilever_tip_nodes(case: Case) -> list[int]:
@@ -439,7 +452,7 @@ def project_parameters(case: Case) -> dict:
                          f"{value}{scale}" if ramp == "t" else value)]
     solver = {
         "solver_type": "Dynamic" if case.dynamic else "Static", "model_part_name": "Structure",
-        "domain_size": case.dim, "echo_level": 0, "analysis_type": "non_linear",
+        "domain_size": case.dim, "echo_level": 0, "analysis_type": case.extra.get("analysis_type", "non_linear"),
         "model_import_settings": {"input_type": "mdpa", "input_filename": "model"},
         "material_import_settings": {"materials_filename": "materials.json"},
         "time_stepping": {"time_step": dt},

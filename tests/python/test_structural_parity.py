@@ -35,14 +35,16 @@ def run_case(name: str):
     analysis = mc.run(os.path.join(folder, "ProjectParameters.json"), progress=False)
     part = analysis.model["Structure"]
     with open(os.path.join(folder, "kratos.json")) as f:
-        kratos = json.load(f)["nodes"]
+        stored = json.load(f)
+    kratos = stored["nodes"]
     ids = sorted(kratos, key=int)
     ours = {node.Id: node for node in part.Nodes}
     assert sorted(ours) == [int(i) for i in ids]
     fields = {}
-    for key, variable in (("u", mc.DISPLACEMENT), ("r", mc.REACTION)):
-        fields[key] = (np.array([list(ours[int(i)].GetSolutionStepValue(variable)) for i in ids]),
-                       np.array([kratos[i][key] for i in ids]))
+    # Reactions where displacements are prescribed (Kratos also writes residuals at free DoFs).
+    for key, variable, where in (("u", mc.DISPLACEMENT, ids), ("r", mc.REACTION, stored["supported"])):
+        fields[key] = (np.array([list(ours[int(i)].GetSolutionStepValue(variable)) for i in where]),
+                       np.array([kratos[str(i)][key] for i in where]))
     return part, ids, fields
 
 
