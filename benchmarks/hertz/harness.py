@@ -3,7 +3,7 @@
 
 - The Kratos virtual environment: Kratos is never a dependency of mortarcontact. The harness
   creates its own venv (``$MORTARCONTACT_KRATOS_VENV``, default ``benchmarks/hertz/.venv``) and
-  installs the four Kratos 10.4 wheels there with pip; Kratos then runs in a subprocess with that
+  installs the five Kratos 10.4 wheels there with pip; Kratos then runs in a subprocess with that
   venv's Python (case_runner.py).
 - Case generation on demand (generate_cases.py) and one subprocess per run, with a fixed
   OpenMP thread count for both codes (OpenMP spinning on a shared, loaded machine otherwise
@@ -36,8 +36,10 @@ sys.path.insert(0, HERE)
 import generate_cases  # noqa: E402
 
 KRATOS_VERSION = "10.4.4"
+#: ConstitutiveLawsApplication holds HyperElastic3DLaw and KirchhoffSaintVenant3DLaw since Kratos 9
 KRATOS_PACKAGES = ["KratosMultiphysics", "KratosStructuralMechanicsApplication",
-                   "KratosContactStructuralMechanicsApplication", "KratosLinearSolversApplication"]
+                   "KratosContactStructuralMechanicsApplication", "KratosLinearSolversApplication",
+                   "KratosConstitutiveLawsApplication"]
 RESULTS_DIR = os.path.join(HERE, "results")
 RUNNER = os.path.join(HERE, "case_runner.py")
 
@@ -51,7 +53,7 @@ def kratos_python(install: bool = True) -> str:
     venv = kratos_venv_dir()
     python = os.path.join(venv, "bin", "python")
     probe = [python, "-c", "import KratosMultiphysics.ContactStructuralMechanicsApplication, "
-                           "KratosMultiphysics.LinearSolversApplication"]
+                           "KratosMultiphysics.LinearSolversApplication, KratosMultiphysics.ConstitutiveLawsApplication"]
     if os.path.exists(python) and subprocess.run(probe, capture_output=True).returncode == 0:
         return python
     if not install:

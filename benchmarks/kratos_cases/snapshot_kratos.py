@@ -37,8 +37,6 @@ from kratos_migration import CSMA_CASES, migrated_case  # noqa: E402
 
 OUTPUT = os.path.join(ROOT, "tests", "cases", "kratos_10_4")
 RUNNER = os.path.join(HERE, "kratos_case_runner.py")
-#: HyperElastic3DLaw lives in this application since Kratos 9
-EXTRA_PACKAGES = ["KratosConstitutiveLawsApplication"]
 
 
 def main(argv=None) -> int:
@@ -46,8 +44,6 @@ def main(argv=None) -> int:
     parser.add_argument("--cases", default="all", help="comma-separated case paths (folder/case) or 'all'")
     args = parser.parse_args(argv)
     python = harness.kratos_python()
-    subprocess.run([python, "-m", "pip", "install", "-q", "--disable-pip-version-check"]
-                   + [f"{p}=={harness.KRATOS_VERSION}" for p in EXTRA_PACKAGES], check=True)
     cases = [c for c, _ in FRICTIONLESS_CASES] if args.cases == "all" else args.cases.split(",")
     os.makedirs(OUTPUT, exist_ok=True)
     with tempfile.TemporaryDirectory() as folder:

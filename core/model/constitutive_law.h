@@ -21,8 +21,11 @@ struct ConstitutiveLawParameters {
   const Properties* properties = nullptr;
   const ProcessInfo* process_info = nullptr;
   /// Deformation gradient, always 3x3 (2D: F(2,2) = 1 in plane strain, r/R in axisymmetry).
+  /// Small-strain elements pass the symmetric I + eps instead (Kratos' "equivalent" F).
   Eigen::Matrix3d F = Eigen::Matrix3d::Identity();
   double detF = 1.0;
+  /// Set by small-strain elements: `strain` is infinitesimal and F = I + eps.
+  bool small_strain = false;
   /// Input strain: infinitesimal for small-strain elements, Green-Lagrange for finite strain.
   Vector strain;
   /// Output: stress in the measure asked for, and its tangent d stress / d strain.

@@ -5,7 +5,8 @@
 
 #include "core/geometries/reference_element.h"
 #include "core/model/registry.h"
-#include "structural/conditions/line_load_axisym_condition.h"
+#include "structural/conditions/axisym_line_load_condition.h"
+#include "structural/conditions/axisym_point_load_condition.h"
 #include "structural/conditions/line_load_condition.h"
 #include "structural/conditions/point_load_condition.h"
 #include "structural/conditions/skin_condition.h"
@@ -15,6 +16,7 @@
 #include "structural/constitutive_laws/hyper_elastic_plane_strain_2d_law.h"
 #include "structural/constitutive_laws/kirchhoff_saint_venant_3d_law.h"
 #include "structural/constitutive_laws/kirchhoff_saint_venant_plane_strain_2d_law.h"
+#include "structural/constitutive_laws/kirchhoff_saint_venant_plane_stress_2d_law.h"
 #include "structural/constitutive_laws/linear_elastic_3d_law.h"
 #include "structural/constitutive_laws/linear_elastic_axisym_2d_law.h"
 #include "structural/constitutive_laws/linear_elastic_plane_strain_2d_law.h"
@@ -58,6 +60,7 @@ void RegisterAll() {
   AddLaw<HyperElasticAxisym2DLaw>();
   AddLaw<KirchhoffSaintVenant3DLaw>();
   AddLaw<KirchhoffSaintVenantPlaneStrain2DLaw>();
+  AddLaw<KirchhoffSaintVenantPlaneStress2DLaw>();
 
   const std::initializer_list<GT> solids_2d = {GT::Triangle2D3, GT::Triangle2D6, GT::Quadrilateral2D4,
                                                GT::Quadrilateral2D8, GT::Quadrilateral2D9};
@@ -74,8 +77,9 @@ void RegisterAll() {
   AddAll<MembraneElement, Element>({GT::Triangle3D3, GT::Quadrilateral3D4});
 
   AddAll<PointLoadCondition, Condition>({GT::Point2D, GT::Point3D});
+  AddAll<AxisymPointLoadCondition, Condition>({GT::Point2D});
   AddAll<LineLoadCondition, Condition>({GT::Line2D2, GT::Line2D3, GT::Line3D2});
-  AddAll<LineLoadAxisymCondition, Condition>({GT::Line2D2, GT::Line2D3});
+  AddAll<AxisymLineLoadCondition, Condition>({GT::Line2D2, GT::Line2D3});
   AddAll<SurfaceLoadCondition, Condition>(
       {GT::Triangle3D3, GT::Quadrilateral3D4, GT::Triangle3D6, GT::Quadrilateral3D8, GT::Quadrilateral3D9});
   AddAll<SkinCondition, Condition>({GT::Line2D2, GT::Line2D3, GT::Triangle3D3, GT::Quadrilateral3D4});

@@ -51,10 +51,6 @@ void BaseLoadCondition::Check(const ProcessInfo& info) const {
   }
 }
 
-double BaseLoadCondition::Thickness() const {
-  return HasProperties() && GetProperties().Has(THICKNESS) ? GetProperties().GetValue(THICKNESS) : 1.0;
-}
-
 Array3 BaseLoadCondition::NodalVector(const Variable<Array3>& var, std::size_t a) const {
   const Node& node = GetGeometry()[a];
   return node.HasSolutionStepValue(var) ? Array3(node.FastGetSolutionStepValue(var)) : Array3::Zero();

@@ -26,8 +26,6 @@ class BaseLoadCondition : public Condition {
   virtual void CalculateAll(Matrix* lhs, Vector* rhs, const ProcessInfo& info) = 0;
 
   int Dimension() const noexcept;
-  /// THICKNESS of the properties, 1 when absent.
-  double Thickness() const;
   /// Nodal historical value of `var` (zero when the nodes do not store it) of node a.
   Array3 NodalVector(const Variable<Array3>& var, std::size_t a) const;
   /// Net face pressure NEGATIVE_FACE_PRESSURE - POSITIVE_FACE_PRESSURE of node a (historical).

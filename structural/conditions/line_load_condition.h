@@ -5,15 +5,15 @@
 
 namespace mc {
 
-/// Distributed load on a line (2D edge or 3D line).
-/// - LINE_LOAD (force per unit length; nodal historical values interpolated plus the
-///   condition's value) is a dead load on the reference length.
+/// Distributed load on a line (2D edge or 3D line), with Kratos 10.4's conventions:
+/// - LINE_LOAD (nodal historical values interpolated plus the condition's value) is a force per
+///   unit length of the current line, in a fixed direction.
 /// - The net face pressure p = NEGATIVE_FACE_PRESSURE - POSITIVE_FACE_PRESSURE (nodal
-///   historical interpolated plus condition value) is a follower load in 2D: it acts along the
-///   current normal (the tangent rotated by -90 degrees, as Geometry::UnitNormal) on the
-///   current length, and its load stiffness is in the LHS. 3D lines have no normal: a
+///   historical interpolated plus condition value) is a follower load in 2D: it acts along
+///   (-t_y, t_x), t the current tangent, on the current length. 3D lines have no normal: a
 ///   pressure on them is an InputError.
-/// 2D plane problems multiply by THICKNESS (default 1); the axisymmetric variant by 2 pi r.
+/// Neither is multiplied by THICKNESS; the axisymmetric variant multiplies by 2 pi r (current
+/// radius). The LHS holds the pressure's follower stiffness; LINE_LOAD has none (as in Kratos).
 class LineLoadCondition : public BaseLoadCondition {
  public:
   LineLoadCondition(IndexType id, Geometry geometry, Properties* properties)

@@ -38,15 +38,13 @@ void SurfaceLoadCondition::CalculateAll(Matrix* lhs, Vector* rhs, const ProcessI
   for (std::size_t g = 0; g < points.size(); ++g) {
     const auto N = Ntable.row(static_cast<Eigen::Index>(g));
     const Matrix& dN = dNtable[g];
-    Array3 A0 = Array3::Zero(), B0 = Array3::Zero(), a1 = Array3::Zero(), a2 = Array3::Zero();
+    Array3 a1 = Array3::Zero(), a2 = Array3::Zero();
     Array3 load = condition_load;
     double p = condition_pressure;
     for (std::size_t a = 0; a < n; ++a) {
       const Node& node = geometry[a];
       const auto ia = static_cast<Eigen::Index>(a);
       const Array3 x = node.X0() + Array3(node.FastGetSolutionStepValue(DISPLACEMENT));
-      A0 += dN(ia, 0) * node.X0();
-      B0 += dN(ia, 1) * node.X0();
       a1 += dN(ia, 0) * x;
       a2 += dN(ia, 1) * x;
       load += N[ia] * NodalVector(SURFACE_LOAD, a);
@@ -54,15 +52,17 @@ void SurfaceLoadCondition::CalculateAll(Matrix* lhs, Vector* rhs, const ProcessI
     }
     const double w = points[g].weight;
     const Array3 normal = a1.cross(a2);
+    // SURFACE_LOAD is per unit current area in a fixed direction, without stiffness (as in Kratos
+    // 10.4: a linear analysis solves with the elastic stiffness alone).
     if (rhs) {
-      const double dead = w * A0.cross(B0).norm();
+      const double area = normal.norm();
       for (std::size_t a = 0; a < n; ++a) {
         const auto ia = static_cast<Eigen::Index>(a);
-        rhs->segment<3>(ia * 3) += N[ia] * (dead * load + p * w * normal);
+        rhs->segment<3>(ia * 3) += N[ia] * w * (area * load + p * normal);
       }
     }
     if (!lhs || p == 0.0) continue;
-    // d(a1 x a2)/dx_b = dN_b,xi [a1 x] ... : e_j x a2 = -[a2]x e_j, a1 x e_j = [a1]x e_j.
+    // d(a1 x a2)/dx_b = dN_b,eta [a1]x - dN_b,xi [a2]x (e_j x a2 = -[a2]x e_j, a1 x e_j = [a1]x e_j).
     const Eigen::Matrix3d S1 = Skew(a1), S2 = Skew(a2);
     for (std::size_t a = 0; a < n; ++a) {
       const auto ia = static_cast<Eigen::Index>(a);

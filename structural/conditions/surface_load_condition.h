@@ -5,12 +5,13 @@
 
 namespace mc {
 
-/// Distributed load on a 3D surface.
+/// Distributed load on a 3D surface, with Kratos 10.4's conventions:
 /// - SURFACE_LOAD (force per unit area; nodal historical values interpolated plus the
-///   condition's value) is a dead load on the reference area.
+///   condition's value) acts on the current area in a fixed direction.
 /// - The net face pressure p = NEGATIVE_FACE_PRESSURE - POSITIVE_FACE_PRESSURE is a follower
 ///   load: f_a = int N_a p (x_,xi x x_,eta) dxi deta on the current surface (normal as
-///   Geometry::UnitNormal), with its load stiffness in the LHS.
+///   Geometry::UnitNormal).
+/// The LHS holds the pressure's follower stiffness; SURFACE_LOAD has none (as in Kratos).
 class SurfaceLoadCondition : public BaseLoadCondition {
  public:
   using BaseLoadCondition::BaseLoadCondition;

@@ -58,11 +58,11 @@ std::pair<double, double> ElasticLaw::Lame(const Properties& properties) {
   return {E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu)), E / (2.0 * (1.0 + nu))};
 }
 
-void ElasticLaw::ReducedResponse(const Properties& properties, const voigt::StrainVector& E,
+void ElasticLaw::ReducedResponse(const ConstitutiveLawParameters& values, const voigt::StrainVector& E,
                                  voigt::StrainVector& S, voigt::TangentMatrix& C) const {
   voigt::Vector6 S6;
   voigt::Matrix6 C6;
-  Response3D(properties, Embed(E), S6, C6);
+  Response3D(values, Embed(E), S6, C6);
   const auto comps = voigt::Components(static_cast<int>(E.size()));
   const auto n = static_cast<Eigen::Index>(comps.size());
   S.resize(n);
@@ -73,8 +73,8 @@ void ElasticLaw::ReducedResponse(const Properties& properties, const voigt::Stra
   }
 }
 
-double ElasticLaw::ReducedEnergy(const Properties& properties, const voigt::StrainVector& E) const {
-  return Energy3D(properties, Embed(E));
+double ElasticLaw::ReducedEnergy(const ConstitutiveLawParameters& values, const voigt::StrainVector& E) const {
+  return Energy3D(values, Embed(E));
 }
 
 void ElasticLaw::CalculateMaterialResponse(ConstitutiveLawParameters& values, StressMeasure measure) {
@@ -92,7 +92,7 @@ void ElasticLaw::CalculateMaterialResponse(ConstitutiveLawParameters& values, St
   }
   voigt::StrainVector S;
   voigt::TangentMatrix C;
-  ReducedResponse(*values.properties, E, S, C);
+  ReducedResponse(values, E, S, C);
   if (measure != StressMeasure::PK2) {
     const voigt::Matrix6 T6 = voigt::PushForwardMatrix(values.F);
     voigt::TangentMatrix T(n, n);
@@ -108,7 +108,7 @@ void ElasticLaw::CalculateMaterialResponse(ConstitutiveLawParameters& values, St
 
 double ElasticLaw::StrainEnergy(ConstitutiveLawParameters& values) {
   assert(values.properties);
-  return ReducedEnergy(*values.properties, values.strain);
+  return ReducedEnergy(values, values.strain);
 }
 
 }  // namespace mc

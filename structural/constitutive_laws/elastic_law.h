@@ -42,14 +42,14 @@ class ElasticLaw : public ConstitutiveLaw {
   static std::pair<double, double> Lame(const Properties& properties);
 
   /// S(E) and dS/dE in full 3D Voigt.
-  virtual void Response3D(const Properties& properties, const voigt::Vector6& E, voigt::Vector6& S,
+  virtual void Response3D(const ConstitutiveLawParameters& values, const voigt::Vector6& E, voigt::Vector6& S,
                           voigt::Matrix6& C) const = 0;
-  virtual double Energy3D(const Properties& properties, const voigt::Vector6& E) const = 0;
+  virtual double Energy3D(const ConstitutiveLawParameters& values, const voigt::Vector6& E) const = 0;
 
   /// The reduced response; the default embeds E in 3D. Plane stress laws override it.
-  virtual void ReducedResponse(const Properties& properties, const voigt::StrainVector& E,
+  virtual void ReducedResponse(const ConstitutiveLawParameters& values, const voigt::StrainVector& E,
                                voigt::StrainVector& S, voigt::TangentMatrix& C) const;
-  virtual double ReducedEnergy(const Properties& properties, const voigt::StrainVector& E) const;
+  virtual double ReducedEnergy(const ConstitutiveLawParameters& values, const voigt::StrainVector& E) const;
 
  private:
   StressState state_;

@@ -3,9 +3,9 @@
 
 namespace mc {
 
-void LinearElastic3DLaw::Response3D(const Properties& properties, const voigt::Vector6& E, voigt::Vector6& S,
+void LinearElastic3DLaw::Response3D(const ConstitutiveLawParameters& values, const voigt::Vector6& E, voigt::Vector6& S,
                                     voigt::Matrix6& C) const {
-  const auto [lambda, mu] = Lame(properties);
+  const auto [lambda, mu] = Lame(*values.properties);
   C.setZero();
   C.topLeftCorner<3, 3>().setConstant(lambda);
   C.topLeftCorner<3, 3>().diagonal().array() += 2.0 * mu;
@@ -13,10 +13,10 @@ void LinearElastic3DLaw::Response3D(const Properties& properties, const voigt::V
   S = C * E;
 }
 
-double LinearElastic3DLaw::Energy3D(const Properties& properties, const voigt::Vector6& E) const {
+double LinearElastic3DLaw::Energy3D(const ConstitutiveLawParameters& values, const voigt::Vector6& E) const {
   voigt::Vector6 S;
   voigt::Matrix6 C;
-  Response3D(properties, E, S, C);
+  Response3D(values, E, S, C);
   return 0.5 * E.dot(S);
 }
 

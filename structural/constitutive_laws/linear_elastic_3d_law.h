@@ -16,9 +16,9 @@ class LinearElastic3DLaw : public ElasticLaw {
 
  protected:
   explicit LinearElastic3DLaw(StressState state) : ElasticLaw(state) {}
-  void Response3D(const Properties& properties, const voigt::Vector6& E, voigt::Vector6& S,
+  void Response3D(const ConstitutiveLawParameters& values, const voigt::Vector6& E, voigt::Vector6& S,
                   voigt::Matrix6& C) const override;
-  double Energy3D(const Properties& properties, const voigt::Vector6& E) const override;
+  double Energy3D(const ConstitutiveLawParameters& values, const voigt::Vector6& E) const override;
 };
 
 }  // namespace mc

@@ -6,10 +6,10 @@
 
 namespace mc {
 
-void LinearElasticPlaneStress2DLaw::ReducedResponse(const Properties& properties, const voigt::StrainVector& E,
+void LinearElasticPlaneStress2DLaw::ReducedResponse(const ConstitutiveLawParameters& values, const voigt::StrainVector& E,
                                                     voigt::StrainVector& S, voigt::TangentMatrix& C) const {
-  const double young = properties.GetValue(YOUNG_MODULUS);
-  const double nu = properties.GetValue(POISSON_RATIO);
+  const double young = values.properties->GetValue(YOUNG_MODULUS);
+  const double nu = values.properties->GetValue(POISSON_RATIO);
   const double f = young / (1.0 - nu * nu);
   C.setZero(3, 3);
   C(0, 0) = C(1, 1) = f;
@@ -18,10 +18,10 @@ void LinearElasticPlaneStress2DLaw::ReducedResponse(const Properties& properties
   S = C * E;
 }
 
-double LinearElasticPlaneStress2DLaw::ReducedEnergy(const Properties& properties, const voigt::StrainVector& E) const {
+double LinearElasticPlaneStress2DLaw::ReducedEnergy(const ConstitutiveLawParameters& values, const voigt::StrainVector& E) const {
   voigt::StrainVector S;
   voigt::TangentMatrix C;
-  ReducedResponse(properties, E, S, C);
+  ReducedResponse(values, E, S, C);
   return 0.5 * E.dot(S);
 }
 

@@ -16,9 +16,9 @@ class LinearElasticPlaneStress2DLaw : public LinearElastic3DLaw {
   }
 
  protected:
-  void ReducedResponse(const Properties& properties, const voigt::StrainVector& E, voigt::StrainVector& S,
+  void ReducedResponse(const ConstitutiveLawParameters& values, const voigt::StrainVector& E, voigt::StrainVector& S,
                        voigt::TangentMatrix& C) const override;
-  double ReducedEnergy(const Properties& properties, const voigt::StrainVector& E) const override;
+  double ReducedEnergy(const ConstitutiveLawParameters& values, const voigt::StrainVector& E) const override;
 };
 
 }  // namespace mc

@@ -60,6 +60,15 @@ void FillB(const Eigen::Matrix3d& F, const Gradients& g, const NVector& N, doubl
     for (Eigen::Index a = 0; a < n; ++a) B(3, a * dim) = hoop * N[a];
 }
 
+// Kratos' "equivalent" deformation gradient of a small-strain element, I + eps (symmetric),
+// from the law-sized strain vector (engineering shears).
+Eigen::Matrix3d EquivalentF(const voigt::StrainVector& strain) {
+  Eigen::Matrix3d F = voigt::StressToTensor(strain);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) F(i, j) *= i == j ? 1.0 : 0.5;  // engineering shears halved
+  return F + Eigen::Matrix3d::Identity();
+}
+
 }  // namespace
 
 /// Kinematics of one integration point in the reference configuration.
@@ -208,6 +217,7 @@ void BaseSolidElement::CalculateAll(Matrix* lhs, Vector* rhs, const ProcessInfo&
   values.process_info = &info;
   values.compute_stress = rhs != nullptr || kinematics_ != Kinematics::SmallDisplacement;
   values.compute_tangent = lhs != nullptr;
+  values.small_strain = kinematics_ == Kinematics::SmallDisplacement;
 
   const int order = geometry.DefaultIntegrationOrder();
   const int npoints = static_cast<int>(laws_.size());
@@ -227,6 +237,8 @@ void BaseSolidElement::CalculateAll(Matrix* lhs, Vector* rhs, const ProcessInfo&
       case Kinematics::SmallDisplacement:
         FillB(Eigen::Matrix3d::Identity(), k.DN_DX, k.N, 1.0 / k.R, dim, strain_size, B);
         values.strain = B * u;
+        values.F = EquivalentF(values.strain);
+        values.detF = values.F.determinant();
         break;
       case Kinematics::TotalLagrangian: {
         FillB(k.F, k.DN_DX, k.N, k.F(2, 2) / k.R, dim, strain_size, B);
@@ -383,6 +395,7 @@ void BaseSolidElement::EvaluateResults(int g, PointResults& results, const Proce
   values.F = k.F;
   values.detF = k.F.determinant();
   values.compute_tangent = false;
+  values.small_strain = kinematics_ == Kinematics::SmallDisplacement;
   results.strain.resize(strain_size);
   if (kinematics_ == Kinematics::SmallDisplacement) {
     DofVector u(n * dim);
@@ -390,6 +403,8 @@ void BaseSolidElement::EvaluateResults(int g, PointResults& results, const Proce
     BMatrix B;
     FillB(Eigen::Matrix3d::Identity(), k.DN_DX, k.N, 1.0 / k.R, dim, strain_size, B);
     results.strain = B * u;
+    values.F = EquivalentF(results.strain);
+    values.detF = values.F.determinant();
   } else {
     const voigt::Vector6 E = voigt::StrainToVoigt(0.5 * (k.F.transpose() * k.F - Eigen::Matrix3d::Identity()));
     const auto comps = voigt::Components(strain_size);

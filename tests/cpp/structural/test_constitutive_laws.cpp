@@ -17,7 +17,7 @@ const char* const kLaws[] = {"LinearElastic3DLaw",          "LinearElasticPlaneS
                              "LinearElasticPlaneStress2DLaw", "LinearElasticAxisym2DLaw",
                              "HyperElastic3DLaw",           "HyperElasticPlaneStrain2DLaw",
                              "HyperElasticAxisym2DLaw",     "KirchhoffSaintVenant3DLaw",
-                             "KirchhoffSaintVenantPlaneStrain2DLaw"};
+                             "KirchhoffSaintVenantPlaneStrain2DLaw", "KirchhoffSaintVenantPlaneStress2DLaw"};
 
 struct LawFixture {
   std::unique_ptr<Properties> properties;

@@ -232,6 +232,28 @@ TEST(SolidElements, HomogeneousStrainGivesExactStressOutputs) {
   }
 }
 
+TEST(SolidElements, SmallDisplacementNeoHookeanTakesJFromTheEquivalentF) {
+  // Kratos 10.4 evaluates its Neo-Hookean law in a small-displacement element with C = I + 2 eps
+  // and J = det(I + eps) (the element's symmetric "equivalent" F).
+  const double young = 100.0, nu = 0.3;
+  const double lambda = young * nu / ((1 + nu) * (1 - 2 * nu)), mu = young / (2 * (1 + nu));
+  ElementSetup s({"SmallDisplacementElement", GeometryType::Quadrilateral2D4, "HyperElasticPlaneStrain2DLaw"});
+  Eigen::Matrix3d G = Eigen::Matrix3d::Zero();
+  G.topLeftCorner<2, 2>() << 0.1, 0.05, 0.02, -0.04;
+  test::SetDisplacements(s.element->GetGeometry(), [&](const Array3& X, int) { return Array3(G * X); });
+  const Eigen::Matrix3d eps = 0.5 * (G + G.transpose());
+  const Eigen::Matrix3d Cinv = (Eigen::Matrix3d::Identity() + 2 * eps).inverse();
+  const double lnJ = std::log((Eigen::Matrix3d::Identity() + eps).determinant());
+  const Eigen::Matrix3d S = mu * (Eigen::Matrix3d::Identity() - Cinv) + lambda * lnJ * Cinv;
+  std::vector<Vector> stress;
+  s.element->CalculateOnIntegrationPoints(PK2_STRESS_VECTOR, stress, ProcessInfo{});
+  for (const Vector& v : stress) {
+    EXPECT_LT((v - Vector((Vector(3) << S(0, 0), S(1, 1), S(0, 1)).finished())).cwiseAbs().maxCoeff(), 1e-12);
+    // Kratos 10.4, same element, law and strain (its PK2_STRESS_VECTOR, scaled to E = 100).
+    EXPECT_LT((v - Vector((Vector(3) << 8.842616483, -0.171838033, 2.253613629).finished())).cwiseAbs().maxCoeff(), 1e-8);
+  }
+}
+
 TEST(SolidElements, AxisymmetricUniformExpansionExactStress) {
   const double young = 100.0, nu = 0.3, c = 2e-3;
   const double lambda = young * nu / ((1 + nu) * (1 - 2 * nu)), mu = young / (2 * (1 + nu));

@@ -1,0 +1,19 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "structural/conditions/axisym_point_load_condition.h"
+
+#include <numbers>
+
+#include "core/variables/kernel_variables.h"
+
+namespace mc {
+
+void AxisymPointLoadCondition::CalculateAll(Matrix* lhs, Vector* rhs, const ProcessInfo& info) {
+  const Node& node = GetGeometry()[0];
+  const Array3 load = NodalVector(POINT_LOAD, 0) + GetValue(POINT_LOAD);
+  const double two_pi = 2.0 * std::numbers::pi;
+  const double radius = node.X0()[0] + node.FastGetSolutionStepValue(DISPLACEMENT_X);
+  if (rhs) *rhs = two_pi * radius * load.head(2);
+  if (lhs) lhs->setZero(2, 2);  // no stiffness of the radius dependence, as in Kratos 10.4
+}
+
+}  // namespace mc
