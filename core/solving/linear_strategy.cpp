@@ -9,6 +9,7 @@ namespace mc {
 
 bool LinearStrategy::SolveSolutionStep() {
   model_part_.GetProcessInfo().SetValue(NL_ITERATION_NUMBER, 1);
+  model_part_.GetProcessInfo().SetValue(LINEAR_ANALYSIS, true);
   scheme_->InitializeNonLinIteration(model_part_);
   builder_->BuildAndSolve(*scheme_, model_part_);
   UpdateAndMoveMesh(builder_->Increment());

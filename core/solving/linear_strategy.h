@@ -5,7 +5,9 @@
 
 namespace mc {
 
-/// `analysis_type: linear`: one build and solve per step, u += dx.
+/// `analysis_type: linear`: one build and solve per step, u += dx. Sets ProcessInfo LINEAR_ANALYSIS:
+/// configuration-dependent loads then add no stiffness, so K is the elastic stiffness alone (as in
+/// Kratos, whose loads have none in any analysis).
 class LinearStrategy : public ImplicitSolvingStrategy {
  public:
   LinearStrategy(ModelPart& model_part, std::shared_ptr<Scheme> scheme,

@@ -29,6 +29,9 @@ MC_DECLARE_VARIABLE(int, NL_ITERATION_NUMBER);
 MC_DECLARE_VARIABLE(int, DOMAIN_SIZE);
 MC_DECLARE_VARIABLE(bool, IS_RESTARTED);
 MC_DECLARE_VARIABLE(bool, COMPUTE_LUMPED_MASS_MATRIX);
+/// ProcessInfo: the step is solved as a linear problem (analysis_type linear, LinearStrategy), so
+/// entities leave out the stiffness of their dependence on the current configuration.
+MC_DECLARE_VARIABLE(bool, LINEAR_ANALYSIS);
 MC_DECLARE_VARIABLE(double, RAYLEIGH_ALPHA);
 MC_DECLARE_VARIABLE(double, RAYLEIGH_BETA);
 MC_DECLARE_VARIABLE(double, BOSSAK_ALPHA);

@@ -13,7 +13,10 @@ void AxisymPointLoadCondition::CalculateAll(Matrix* lhs, Vector* rhs, const Proc
   const double two_pi = 2.0 * std::numbers::pi;
   const double radius = node.X0()[0] + node.FastGetSolutionStepValue(DISPLACEMENT_X);
   if (rhs) *rhs = two_pi * radius * load.head(2);
-  if (lhs) lhs->setZero(2, 2);  // no stiffness of the radius dependence, as in Kratos 10.4
+  if (lhs) {
+    lhs->setZero(2, 2);
+    if (!info.GetValue(LINEAR_ANALYSIS)) lhs->col(0) = -two_pi * load.head(2);
+  }
 }
 
 }  // namespace mc

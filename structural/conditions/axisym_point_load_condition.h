@@ -7,8 +7,8 @@ namespace mc {
 
 /// A ring load in axisymmetry (x = radius), Kratos' AxisymPointLoadCondition2D1N: POINT_LOAD is a
 /// force per unit length of the circle through the node, so the nodal force is 2 pi r POINT_LOAD
-/// with r the current radius; like Kratos, no stiffness for that dependence. THICKNESS plays no
-/// part (Kratos 10.4 divides by it when present, as for AxisymLineLoadCondition).
+/// with r the current radius (its derivative is the LHS, except in a linear analysis). THICKNESS
+/// plays no part (Kratos 10.4 divides by it when present, as for AxisymLineLoadCondition).
 class AxisymPointLoadCondition : public PointLoadCondition {
  public:
   using PointLoadCondition::PointLoadCondition;

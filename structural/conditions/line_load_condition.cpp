@@ -20,6 +20,7 @@ void LineLoadCondition::CalculateAll(Matrix* lhs, Vector* rhs, const ProcessInfo
   const Array3 condition_load = GetValue(LINE_LOAD);
   const double condition_pressure = ConditionPressure();
   const double two_pi = 2.0 * std::numbers::pi;
+  const bool linear = info.GetValue(LINEAR_ANALYSIS);
   // One order above the geometry default: linearly varying loads on linear edges/faces are exact.
   const int order = std::min(5, geometry.DefaultIntegrationOrder() + 1);
   const auto& points = geometry.IntegrationPoints(order);
@@ -41,16 +42,25 @@ void LineLoadCondition::CalculateAll(Matrix* lhs, Vector* rhs, const ProcessInfo
       p += N[ia] * NodalPressure(a);
     }
     const double w = points[g].weight;
+    const double length = t.norm();
     // Per unit current length (times the current circumference in axisymmetry) and never times
     // THICKNESS: Kratos 10.4's convention, although its plane elements do integrate over
-    // THICKNESS. As in Kratos the dependence on the current measure has no stiffness, so that a
-    // linear analysis solves with the elastic stiffness alone.
+    // THICKNESS. The load keeps its direction: its stiffness is that of the measure only, left out
+    // in a linear analysis (Kratos leaves it out always, and converges more slowly).
     const double circumference = axisymmetric_ ? two_pi * r : 1.0;
-    if (rhs)
+    if (load.head(dim).squaredNorm() > 0.0) {
       for (std::size_t a = 0; a < n; ++a) {
         const auto ia = static_cast<Eigen::Index>(a);
-        rhs->segment(ia * dim, dim) += N[ia] * w * t.norm() * circumference * load.head(dim);
+        if (rhs) rhs->segment(ia * dim, dim) += N[ia] * w * length * circumference * load.head(dim);
+        if (!lhs || linear) continue;
+        for (std::size_t b = 0; b < n; ++b) {
+          const auto ib = static_cast<Eigen::Index>(b);
+          Array3 dmeasure = circumference * dN(ib, 0) / length * t;  // d(length circumference)/dx_b
+          if (axisymmetric_) dmeasure[0] += two_pi * length * N[ib];
+          lhs->block(ia * dim, ib * dim, dim, dim) -= N[ia] * w * load.head(dim) * dmeasure.head(dim).transpose();
+        }
       }
+    }
     if (p == 0.0) continue;
     if (dim == 3)
       throw InputError(Concat("condition ", Id(), " (", Info(), "): a face pressure (", p,
@@ -64,7 +74,7 @@ void LineLoadCondition::CalculateAll(Matrix* lhs, Vector* rhs, const ProcessInfo
       const auto ia = static_cast<Eigen::Index>(a);
       const double s = N[ia] * p * w;
       if (rhs) rhs->segment(ia * 2, 2) += s * circumference * normal.head(2);
-      if (!lhs) continue;
+      if (!lhs || linear) continue;
       for (std::size_t b = 0; b < n; ++b) {
         const auto ib = static_cast<Eigen::Index>(b);
         (*lhs)(ia * 2, ib * 2 + 1) += s * circumference * dN(ib, 0);

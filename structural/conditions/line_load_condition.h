@@ -13,7 +13,8 @@ namespace mc {
 ///   (-t_y, t_x), t the current tangent, on the current length. 3D lines have no normal: a
 ///   pressure on them is an InputError.
 /// Neither is multiplied by THICKNESS; the axisymmetric variant multiplies by 2 pi r (current
-/// radius). The LHS holds the pressure's follower stiffness; LINE_LOAD has none (as in Kratos).
+/// radius). Both loads' stiffness (the derivative of the current measure and normal) is in
+/// the LHS, except in a linear analysis (ProcessInfo LINEAR_ANALYSIS).
 class LineLoadCondition : public BaseLoadCondition {
  public:
   LineLoadCondition(IndexType id, Geometry geometry, Properties* properties)

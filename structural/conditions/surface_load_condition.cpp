@@ -52,23 +52,28 @@ void SurfaceLoadCondition::CalculateAll(Matrix* lhs, Vector* rhs, const ProcessI
     }
     const double w = points[g].weight;
     const Array3 normal = a1.cross(a2);
-    // SURFACE_LOAD is per unit current area in a fixed direction, without stiffness (as in Kratos
-    // 10.4: a linear analysis solves with the elastic stiffness alone).
+    const double area = normal.norm();
+    // SURFACE_LOAD is per unit current area in a fixed direction (as in Kratos 10.4); the stiffness
+    // of that area and of the pressure's normal is left out in a linear analysis.
     if (rhs) {
-      const double area = normal.norm();
       for (std::size_t a = 0; a < n; ++a) {
         const auto ia = static_cast<Eigen::Index>(a);
         rhs->segment<3>(ia * 3) += N[ia] * w * (area * load + p * normal);
       }
     }
-    if (!lhs || p == 0.0) continue;
-    // d(a1 x a2)/dx_b = dN_b,eta [a1]x - dN_b,xi [a2]x (e_j x a2 = -[a2]x e_j, a1 x e_j = [a1]x e_j).
+    const bool has_load = load.squaredNorm() > 0.0;
+    if (!lhs || info.GetValue(LINEAR_ANALYSIS) || (p == 0.0 && !has_load)) continue;
+    // d(a1 x a2)/dx_b = dN_b,eta [a1]x - dN_b,xi [a2]x (e_j x a2 = -[a2]x e_j, a1 x e_j = [a1]x e_j);
+    // the area's derivative is its projection on the unit normal.
     const Eigen::Matrix3d S1 = Skew(a1), S2 = Skew(a2);
-    for (std::size_t a = 0; a < n; ++a) {
-      const auto ia = static_cast<Eigen::Index>(a);
-      for (std::size_t b = 0; b < n; ++b) {
-        const auto ib = static_cast<Eigen::Index>(b);
-        lhs->block<3, 3>(ia * 3, ib * 3) -= N[ia] * p * w * (dN(ib, 1) * S1 - dN(ib, 0) * S2);
+    for (std::size_t b = 0; b < n; ++b) {
+      const auto ib = static_cast<Eigen::Index>(b);
+      const Eigen::Matrix3d dnormal = dN(ib, 1) * S1 - dN(ib, 0) * S2;
+      const Eigen::Matrix3d dforce = p * dnormal + (has_load ? Eigen::Matrix3d(load * (normal.transpose() * dnormal) / area)
+                                                             : Eigen::Matrix3d::Zero());
+      for (std::size_t a = 0; a < n; ++a) {
+        const auto ia = static_cast<Eigen::Index>(a);
+        lhs->block<3, 3>(ia * 3, ib * 3) -= N[ia] * w * dforce;
       }
     }
   }

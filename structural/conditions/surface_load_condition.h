@@ -11,7 +11,8 @@ namespace mc {
 /// - The net face pressure p = NEGATIVE_FACE_PRESSURE - POSITIVE_FACE_PRESSURE is a follower
 ///   load: f_a = int N_a p (x_,xi x x_,eta) dxi deta on the current surface (normal as
 ///   Geometry::UnitNormal).
-/// The LHS holds the pressure's follower stiffness; SURFACE_LOAD has none (as in Kratos).
+/// The LHS holds both loads' stiffness (the derivative of the current area and normal), except
+/// in a linear analysis (ProcessInfo LINEAR_ANALYSIS).
 class SurfaceLoadCondition : public BaseLoadCondition {
  public:
   using BaseLoadCondition::BaseLoadCondition;
