@@ -48,10 +48,14 @@ TOLERANCE = 1e-6
 KRATOS_VERSION = harness.KRATOS_VERSION
 
 #: Named subsets. "test": the cases of tests/python/test_robustness_sweep.py (a few seconds in
-#: total with mortarcontact), "test-slow": the ones it runs behind the slow marker.
+#: total with mortarcontact; the coarse cases but the penalty one, which Kratos does not solve),
+#: "test-slow": the ones it runs behind the slow marker.
 SUBSETS = {
-    "test": [],
-    "test-slow": [],
+    "test": [v.name for v in sweep_cases.variants() if v.coarse and v.formulation != "penalty" and v.steps == 1],
+    "test-slow": ["3d_hex_flat_r0.5_overhang-slave-xy_gap_disp_4steps_alm_coarse",
+                  "2d_tri_curved_r1_overhang-slave_gap_disp_1step_alm",
+                  "2d_quad_flat_r0.5_overhang-none_gap_disp_20steps_alm",
+                  "3d_hex_flat_r0.5_overhang-none_gap_disp_4steps_alm"],
 }
 
 

@@ -69,6 +69,7 @@ GAPS = {"gap": 1e-3, "zero": 0.0, "pen": -2e-4}
 APPROACH = {"flat": 0.01, "inclined": 0.01, "curved": 0.02}  # prescribed top displacement beyond the gap
 LOAD = {"flat": 10.0, "inclined": 10.0, "curved": 4.0}  # force control: load per unit top area
 H_LOWER = {2: 1.0 / 16.0, 3: 1.0 / 5.0}
+H_LOWER_COARSE = {2: 1.0 / 5.0, 3: 1.0 / 3.0}  # the smallest cases that still show each failure
 MAX_LAYERS_3D = 6  # through-thickness element layers of a fine 3D body (keeps the DoFs in the thousands)
 
 FORMULATIONS = {
@@ -108,6 +109,7 @@ class Variant:
     rotated: bool = False
     mesher: str = "grid"  # grid (numpy, structured) or gmsh (unstructured triangles / tetrahedra)
     conditions: bool = False
+    coarse: bool = False  # lower body's element size H_LOWER_COARSE
 
     @property
     def name(self) -> str:
@@ -116,7 +118,8 @@ class Variant:
         parts = [f"{self.dim}d", elements, self.shape, f"r{self.ratio:g}", f"overhang-{self.overhang}", self.gap,
                  control, f"{self.steps}step" + ("s" if self.steps > 1 else ""), self.formulation]
         parts += [flag for flag, on in (("nv", self.nv), ("swapped", self.swapped), ("rot30", self.rotated),
-                                        ("gmsh", self.mesher == "gmsh"), ("conditions", self.conditions))
+                                        ("gmsh", self.mesher == "gmsh"), ("conditions", self.conditions),
+                                        ("coarse", self.coarse))
                   if on]
         if self.kinematics != "sd":
             parts.append(self.kinematics)
@@ -154,9 +157,9 @@ def variants() -> list[Variant]:
     # element size ratios (1 +- 0.001: nearly matching nodes)
     for ratio in (0.25, 0.5, 0.999, 1.0, 1.001, 2.0, 4.0):
         out += [r(b2, ratio=ratio), r(b2, upper="tri", lower="tri", shape="curved", ratio=ratio)]
-    for ratio in (0.25, 0.999, 1.0, 1.001, 2.0):
+    for ratio in (0.25, 0.999, 1.0, 1.001, 2.0, 4.0):
         out.append(r(b3, ratio=ratio))
-    for ratio in (1.0, 2.0, 4.0):
+    for ratio in (1.0, 2.0):  # coarser, the upper body's cap has no node near its apex
         out.append(r(b3, upper="tet", shape="curved", ratio=ratio))
     # overhangs: flat and curved, 2D and 3D in one and in two directions
     for overhang in ("slave", "master", "both"):
@@ -208,6 +211,14 @@ def variants() -> list[Variant]:
     # explicit interface conditions
     out += [r(b2, conditions=True), r(b2, shape="curved", upper="tri", conditions=True), r(b3, conditions=True),
             r(b3, upper="tet", shape="curved", conditions=True)]
+    # the smallest cases that show what the families above show (tests/python/test_robustness_sweep.py)
+    c2 = Variant(2, "quad", "quad", ratio=0.5, steps=1, coarse=True)
+    c3 = Variant(3, "hex", "hex", ratio=0.5, steps=1, coarse=True)
+    out += [c2, r(c2, overhang="master"), r(c2, ratio=1.0, overhang="both"), r(c2, shape="curved"),
+            r(c2, upper="tri", lower="tri", shape="curved", ratio=1.0, overhang="slave"),
+            r(c2, formulation="comp"), r(c2, formulation="penalty"), r(c2, rotated=True),
+            r(c2, gap="pen", control="line"), c3, r(c3, upper="tet"), r(c3, overhang="slave-xy", steps=4),
+            r(c3, shape="curved"), r(c3, upper="tet", shape="curved", ratio=1.0), r(c3, overhang="both-xy")]
     unique = list(dict.fromkeys(out))
     for v in unique:
         v.check()
@@ -309,7 +320,7 @@ def build(v: Variant) -> dict:
     the case needs (no files)."""
     dim, vertical = v.dim, v.dim - 1
     w_upper, w_lower, centre = _widths(v)
-    h_lower = H_LOWER[dim]
+    h_lower = (H_LOWER_COARSE if v.coarse else H_LOWER)[dim]
     h_upper = v.ratio * h_lower
     nearly_matching = abs(v.ratio - 1.0) < 0.01
     t_upper = UPPER_HEIGHT[v.shape]
