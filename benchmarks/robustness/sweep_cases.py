@@ -216,7 +216,7 @@ def variants() -> list[Variant]:
     c3 = Variant(3, "hex", "hex", ratio=0.5, steps=1, coarse=True)
     out += [c2, r(c2, overhang="master"), r(c2, ratio=1.0, overhang="both"), r(c2, shape="curved"),
             r(c2, upper="tri", lower="tri", shape="curved", ratio=1.0, overhang="slave"),
-            r(c2, formulation="comp"), r(c2, formulation="penalty"), r(c2, rotated=True),
+            r(c2, ratio=0.25, steps=4), r(c2, formulation="comp"), r(c2, formulation="penalty"), r(c2, rotated=True),
             r(c2, gap="pen", control="line"), c3, r(c3, upper="tet"), r(c3, overhang="slave-xy", steps=4),
             r(c3, shape="curved"), r(c3, upper="tet", shape="curved", ratio=1.0), r(c3, overhang="both-xy")]
     unique = list(dict.fromkeys(out))
