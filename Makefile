@@ -8,7 +8,7 @@ DEBS := g++ cmake ninja-build ccache pkg-config libeigen3-dev libsuitesparse-dev
 PY_BUILD := scikit-build-core pybind11 ninja cmake
 PY_RUN := numpy scipy meshio h5py rich pytest sympy matplotlib gmsh
 
-.PHONY: all deps install demo test test-cpp test-python bench bench-large clean
+.PHONY: all deps install demo test test-cpp test-python bench bench-large bench-robustness clean
 
 all: install
 
@@ -55,6 +55,11 @@ bench-large: install
 	$(PYTHON) benchmarks/hertz/compare.py --cases hertz3d_15k,hertz3d_50k,hertz3d_150k,hertz3d_600k --repeat 1 \
 	  --codes mortarcontact --linear-solver '$(FIELDSPLIT)' \
 	  --output benchmarks/hertz/results_3d_multigrid.md --plot benchmarks/hertz/time_vs_dofs_3d_multigrid.png
+
+# Robustness sweep against Kratos 10.4 (issue 10): about 150 small frictionless cases, each run once
+# by both codes in its own subprocess; writes benchmarks/robustness/results.md. FILTER=regex runs part.
+bench-robustness: install
+	$(PYTHON) benchmarks/robustness/run_sweep.py $(if $(FILTER),--filter '$(FILTER)')
 
 clean:
 	rm -rf build

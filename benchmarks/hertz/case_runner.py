@@ -50,7 +50,9 @@ def _blas_libraries() -> list[str]:
     return sorted(os.path.realpath(p) for p in paths)
 
 
-def _extract(model, get_variable, dim: int, flag_active) -> dict:
+def _extract(model, get_variable, dim: int, flag_active, all_nodes: bool = False) -> dict:
+    """``all_nodes``: also every node's DISPLACEMENT, each slave node's VECTOR_LAGRANGE_MULTIPLIER
+    and the REACTION vectors summed over the bottom and the top (the robustness sweep)."""
     root = model.GetModelPart("Structure")
     axis = dim - 1
 
@@ -61,6 +63,12 @@ def _extract(model, get_variable, dim: int, flag_active) -> dict:
         except Exception:  # variable absent in this code or on this node
             return None
 
+    def vector(node, name):
+        try:
+            return [float(c) for c in node.GetSolutionStepValue(get_variable(name))]
+        except Exception:  # variable absent in this code or on this node
+            return None
+
     slave = []
     for node in root.GetSubModelPart("Contact_slave").Nodes:
         slave.append({"id": node.Id, "x": node.X0, "y": node.Y0, "z": node.Z0,
@@ -68,6 +76,8 @@ def _extract(model, get_variable, dim: int, flag_active) -> dict:
                       "augmented": value(node, "AUGMENTED_NORMAL_CONTACT_PRESSURE", historical=False),
                       "weighted_gap": value(node, "WEIGHTED_GAP"),
                       "active": bool(node.Is(flag_active)) if flag_active is not None else None})
+        if all_nodes:
+            slave[-1]["vector_lm"] = vector(node, "VECTOR_LAGRANGE_MULTIPLIER")
     reactions = {}
     component = "REACTION_" + "XYZ"[axis]
     for part in ("DISPLACEMENT_bottom", "DISPLACEMENT_top"):
@@ -86,14 +96,21 @@ def _extract(model, get_variable, dim: int, flag_active) -> dict:
                 break
             except Exception:  # this spelling of the API, or the value, is not available
                 continue
-    return {"slave": slave, "reactions": reactions, "top_displacement": top[0] if top else None,
-            "nodes": root.NumberOfNodes(), "process_info": info}
+    result = {"slave": slave, "reactions": reactions, "top_displacement": top[0] if top else None,
+              "nodes": root.NumberOfNodes(), "process_info": info}
+    if all_nodes:
+        result["displacements"] = {str(node.Id): vector(node, "DISPLACEMENT") for node in root.Nodes}
+        result["reaction_totals"] = {
+            part: [sum(c) for c in zip(*(vector(node, "REACTION") for node in root.GetSubModelPart(part).Nodes))]
+            for part in ("DISPLACEMENT_bottom", "DISPLACEMENT_top")}
+    return result
 
 
-def run_kratos(parameters_text: str, dim: int, record: dict):
+def run_kratos(parameters_text: str, dim: int, record: dict, all_nodes: bool = False):
     import KratosMultiphysics as KM
     import KratosMultiphysics.ContactStructuralMechanicsApplication  # noqa: F401 (registers the contact solver)
     import KratosMultiphysics.LinearSolversApplication  # noqa: F401 (sparse_lu)
+    import KratosMultiphysics.ConstitutiveLawsApplication  # noqa: F401 (hyperelastic laws; not always pulled in)
     from KratosMultiphysics.StructuralMechanicsApplication.structural_mechanics_analysis import (
         StructuralMechanicsAnalysis)
 
@@ -130,7 +147,7 @@ def run_kratos(parameters_text: str, dim: int, record: dict):
     analysis.RunSolutionLoop()
     analysis.Finalize()
     record["analysis_seconds"] = time.perf_counter() - started
-    record.update(_extract(model, KM.KratosGlobals.GetVariable, dim, KM.ACTIVE))
+    record.update(_extract(model, KM.KratosGlobals.GetVariable, dim, KM.ACTIVE, all_nodes))
 
 
 def mortarcontact_parameters(parameters_path: str, linear_solver: str | None = None):
@@ -147,7 +164,8 @@ def mortarcontact_parameters(parameters_path: str, linear_solver: str | None = N
     return parameters
 
 
-def run_mortarcontact(parameters_path: str, dim: int, record: dict, linear_solver: str | None = None):
+def run_mortarcontact(parameters_path: str, dim: int, record: dict, linear_solver: str | None = None,
+                      all_nodes: bool = False):
     import mortarcontact as mc
     from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
 
@@ -169,7 +187,7 @@ def run_mortarcontact(parameters_path: str, dim: int, record: dict, linear_solve
     searches = [s for p in analysis.processes for s in getattr(p, "searches", [])]
     record["contact_pairs"] = sum(s.ComputingPart().NumberOfConditions() for s in searches)
     record["searches"] = sum(s.NumberOfSearches() for s in searches)
-    record.update(_extract(model, mc.GetVariable, dim, getattr(mc, "ACTIVE", None)))
+    record.update(_extract(model, mc.GetVariable, dim, getattr(mc, "ACTIVE", None), all_nodes))
 
 
 def _mortarcontact_phases(analysis, total: float) -> dict:
@@ -191,6 +209,8 @@ def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description="Runs one Hertz case and writes raw results (JSON).")
     parser.add_argument("--code", choices=("kratos", "mortarcontact"), required=True)
     parser.add_argument("--linear-solver", help="mortarcontact's linear_solver_settings (JSON) instead of the case's")
+    parser.add_argument("--all-nodes", action="store_true",
+                        help="also record every node's displacement and the reaction vectors")
     parser.add_argument("case_dir")
     parser.add_argument("output")
     args = parser.parse_args(argv)
@@ -207,9 +227,9 @@ def main(argv=None) -> int:
     process_started = time.perf_counter()
     try:
         if args.code == "kratos":
-            run_kratos(parameters_text, dim, record)
+            run_kratos(parameters_text, dim, record, args.all_nodes)
         else:
-            run_mortarcontact(parameters_path, dim, record, args.linear_solver)
+            run_mortarcontact(parameters_path, dim, record, args.linear_solver, args.all_nodes)
     except Exception as error:  # reported, not raised: the harness tabulates it
         name = type(error).__name__
         not_available = "NotImplemented" in name or "not implemented" in str(error).lower()

@@ -149,13 +149,13 @@ def _set_mesh_options(gmsh) -> None:
     gmsh.option.setNumber("Mesh.Optimize", 1)
 
 
-def _mesh_body(gmsh, dim: int, scale: float, build) -> tuple[np.ndarray, np.ndarray]:
-    """Meshes one body in a fresh gmsh model; returns (coords (n, 3), connectivity (m, dim+1))
-    with 0-based local node indices, elements positively oriented."""
+def _mesh_body(gmsh, dim: int, size, build) -> tuple[np.ndarray, np.ndarray]:
+    """Meshes one body in a fresh gmsh model with the size callback ``size``; returns (coords (n, 3),
+    connectivity (m, dim+1)) with 0-based local node indices, elements positively oriented."""
     gmsh.model.add("body")
     build()
     _set_mesh_options(gmsh)
-    gmsh.model.mesh.setSizeCallback(_size_callback(dim, scale))
+    gmsh.model.mesh.setSizeCallback(size)
     gmsh.model.mesh.generate(dim)
     tags, coords, _ = gmsh.model.mesh.getNodes()
     coords = np.asarray(coords).reshape(-1, 3)
@@ -203,7 +203,7 @@ def mesh_2d(scale: float):
         gmsh.model.occ.addRectangle(-w, -h, 0, 2.0 * w, h)
         gmsh.model.occ.synchronize()
 
-    return _mesh_bodies(gmsh, 2, scale, cylinder, block)
+    return mesh_bodies(2, _size_callback(2, scale), cylinder, block)
 
 
 def mesh_3d(scale: float):
@@ -221,7 +221,7 @@ def mesh_3d(scale: float):
         gmsh.model.occ.addBox(0, 0, -h, w, w, h)
         gmsh.model.occ.synchronize()
 
-    return _mesh_bodies(gmsh, 3, scale, sphere, block)
+    return mesh_bodies(3, _size_callback(3, scale), sphere, block)
 
 
 # The six tetrahedra of the unit cube around its diagonal (0,0,0)-(1,1,1) (Kuhn): one per order
@@ -236,7 +236,7 @@ for _order in itertools.permutations(range(3)):
     KUHN_TETRAHEDRA.append(_tet)
 
 
-def _oriented(xyz: np.ndarray, cells: np.ndarray) -> np.ndarray:
+def oriented_tetrahedra(xyz: np.ndarray, cells: np.ndarray) -> np.ndarray:
     p = xyz[cells]
     signed = np.einsum("ij,ij->i", np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), p[:, 3] - p[:, 0])
     if (np.abs(signed) < 1e-14 * np.abs(signed).max()).any():
@@ -330,7 +330,7 @@ def _compact(coords: np.ndarray, cells: np.ndarray) -> tuple[np.ndarray, np.ndar
     local = np.full(len(coords), -1, dtype=np.int64)
     local[used] = np.arange(len(used))
     xyz = coords[used]
-    return xyz, _oriented(xyz, local[cells])
+    return xyz, oriented_tetrahedra(xyz, local[cells])
 
 
 def _box_distance(x: float, y: float, z: float, lo, hi) -> float:
@@ -400,12 +400,16 @@ def mesh_3d_grid(scale: float):
         gmsh.finalize()
 
 
-def _mesh_bodies(gmsh, dim: int, scale: float, *builders):
+def mesh_bodies(dim: int, size, *builders):
+    """Meshes each body built by ``builders`` (gmsh geometry calls) with linear triangles or
+    tetrahedra; ``size(entity_dim, tag, x, y, z, lc)`` gives the mesh size."""
+    import gmsh
+
     gmsh.initialize(["-noenv"], readConfigFiles=False)
     try:
         gmsh.option.setNumber("General.Terminal", 0)
         gmsh.option.setNumber("General.NumThreads", 1)
-        return [_mesh_body(gmsh, dim, scale, build) for build in builders]
+        return [_mesh_body(gmsh, dim, size, build) for build in builders]
     finally:
         gmsh.finalize()
 
@@ -501,35 +505,52 @@ def build_case(family: str, label: str) -> dict:
             "slave_faces": len(slave_faces), "master_faces": len(master_faces)}
 
 
+def write_model_part(path: str, title: str, coords: np.ndarray, element_blocks, parts: dict,
+                     condition_blocks=()) -> None:
+    """Writes an mdpa: node ids 1..n in the order of ``coords``; ``element_blocks`` and
+    ``condition_blocks`` are (name, first id, 0-based connectivity), numbered consecutively from
+    their first id; ``parts`` maps a sub-model-part name to 0-based "nodes" and, optionally,
+    "elements" and "conditions" ids. Every entity uses property 0 (the materials file assigns
+    properties per sub-model-part)."""
+    with open(path, "w") as f:
+        f.write(f"// {title}\n")
+        f.write("Begin ModelPartData\nEnd ModelPartData\n\nBegin Properties 0\nEnd Properties\n\n")
+        f.write("Begin Nodes\n")
+        ids = np.arange(1, len(coords) + 1)
+        np.savetxt(f, np.column_stack([ids, coords]), fmt=["%d", "%.16e", "%.16e", "%.16e"])
+        f.write("End Nodes\n\n")
+        for kind, blocks in (("Elements", element_blocks), ("Conditions", condition_blocks)):
+            for name, first, cells in blocks:
+                f.write(f"Begin {kind} {name}\n")
+                table = np.column_stack([first + np.arange(len(cells)), np.zeros(len(cells), dtype=np.int64),
+                                         np.asarray(cells) + 1])
+                np.savetxt(f, table, fmt="%d")
+                f.write(f"End {kind}\n\n")
+        for name, content in parts.items():
+            f.write(f"Begin SubModelPart {name}\n")
+            for kind in ("Nodes", "Elements", "Conditions"):
+                ids = np.asarray(content.get(kind.lower(), []), dtype=np.int64) + (kind == "Nodes")
+                f.write(f"  Begin SubModelPart{kind}\n")
+                np.savetxt(f, ids, fmt="    %d")
+                f.write(f"  End SubModelPart{kind}\n")
+            f.write("End SubModelPart\n\n")
+
+
 def write_mdpa(path: str, case: dict) -> None:
     dim = case["dim"]
     element = "SmallDisplacementElement2D3N" if dim == 2 else "SmallDisplacementElement3D4N"
     n_curved = len(case["curved_cells"])
+    first = {"curved": 1, "block": n_curved + 1}
     ranges = {"curved": np.arange(1, n_curved + 1),
               "block": n_curved + np.arange(1, len(case["block_cells"]) + 1)}
-    with open(path, "w") as f:
-        f.write(f"// {case['family']}_{case['label']}: generated by benchmarks/hertz/generate_cases.py\n")
-        f.write("Begin ModelPartData\nEnd ModelPartData\n\nBegin Properties 0\nEnd Properties\n\n")
-        f.write("Begin Nodes\n")
-        ids = np.arange(1, len(case["coords"]) + 1)
-        np.savetxt(f, np.column_stack([ids, case["coords"]]), fmt=["%d", "%.16e", "%.16e", "%.16e"])
-        f.write("End Nodes\n\n")
-        for key, cells in (("curved", case["curved_cells"]), ("block", case["block_cells"])):
-            f.write(f"Begin Elements {element}\n")
-            table = np.column_stack([ranges[key], np.zeros(len(cells), dtype=np.int64), cells + 1])
-            np.savetxt(f, table, fmt="%d")
-            f.write("End Elements\n\n")
-        for name, content in case["parts"].items():
-            f.write(f"Begin SubModelPart {name}\n  Begin SubModelPartNodes\n")
-            np.savetxt(f, np.asarray(content["nodes"]) + 1, fmt="    %d")
-            f.write("  End SubModelPartNodes\n  Begin SubModelPartElements\n")
-            if "elements" in content:
-                np.savetxt(f, ranges[content["elements"]], fmt="    %d")
-            f.write("  End SubModelPartElements\n  Begin SubModelPartConditions\n  End SubModelPartConditions\n")
-            f.write("End SubModelPart\n\n")
+    blocks = [(element, first[key], case[f"{key}_cells"]) for key in ("curved", "block")]
+    parts = {name: {"nodes": content["nodes"], "elements": ranges[content["elements"]] if "elements" in content else []}
+             for name, content in case["parts"].items()}
+    write_model_part(path, f"{case['family']}_{case['label']}: generated by benchmarks/hertz/generate_cases.py",
+                     case["coords"], blocks, parts)
 
 
-def _assign(part: str, constrained: list, value: list) -> dict:
+def assign_displacement(part: str, constrained: list, value: list) -> dict:
     # A free component gets null, not 0.0: a number would be assigned (without fixity) at the
     # start of every step in both codes, snapping the nodes on the symmetry planes and the top
     # back to zero displacement in that component. On hertz3d_50k that jolt (4.6e-3 on faces
@@ -549,10 +570,10 @@ def project_parameters(name: str, dim: int, delta: float, linear_solver: str) ->
     top_fix[axis] = True
     constraints = []
     if dim == 3:
-        constraints += [_assign("DISPLACEMENT_sym_x", [True, False, False], [0.0, 0.0, 0.0]),
-                        _assign("DISPLACEMENT_sym_y", [False, True, False], [0.0, 0.0, 0.0])]
-    constraints += [_assign("DISPLACEMENT_bottom", [True, True, True], [0.0, 0.0, 0.0]),
-                    _assign("DISPLACEMENT_top", top_fix, top_value)]
+        constraints += [assign_displacement("DISPLACEMENT_sym_x", [True, False, False], [0.0, 0.0, 0.0]),
+                        assign_displacement("DISPLACEMENT_sym_y", [False, True, False], [0.0, 0.0, 0.0])]
+    constraints += [assign_displacement("DISPLACEMENT_bottom", [True, True, True], [0.0, 0.0, 0.0]),
+                    assign_displacement("DISPLACEMENT_top", top_fix, top_value)]
     body = "Contact_slave"
     return {
         "problem_data": {"problem_name": name, "parallel_type": "OpenMP", "echo_level": 0,

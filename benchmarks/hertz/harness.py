@@ -86,18 +86,27 @@ def load_hertz(folder: str) -> dict:
 
 
 def run_once(code: str, folder: str, output: str, threads: int, python: str | None = None,
-             timeout: float = 6 * 3600, linear_solver: str | None = None) -> dict:
-    """One run in a fresh subprocess; returns the runner's record (status, timings, raw fields).
-    ``linear_solver``: mortarcontact's linear_solver_settings (JSON) in place of the case's."""
+             timeout: float = 6 * 3600, linear_solver: str | None = None, all_nodes: bool = False) -> dict:
+    """One run in a fresh subprocess; returns the runner's record (status, timings, raw fields),
+    status "timeout" when the run is stopped after ``timeout`` seconds.
+    ``linear_solver``: mortarcontact's linear_solver_settings (JSON) in place of the case's;
+    ``all_nodes``: see case_runner.py --all-nodes."""
     python = python or sys.executable
     extra = ["--linear-solver", linear_solver] if linear_solver and code == "mortarcontact" else []
+    extra += ["--all-nodes"] if all_nodes else []
     env = dict(os.environ, OMP_NUM_THREADS=str(threads))
     os.makedirs(os.path.dirname(output), exist_ok=True)
     log = os.path.splitext(output)[0] + ".log"
     started = time.perf_counter()
+    if os.path.exists(output):
+        os.remove(output)
     with open(log, "w") as out:
-        completed = subprocess.run([python, RUNNER, "--code", code, *extra, folder, output], stdout=out,
-                                   stderr=subprocess.STDOUT, env=env, timeout=timeout)
+        try:
+            completed = subprocess.run([python, RUNNER, "--code", code, *extra, folder, output], stdout=out,
+                                       stderr=subprocess.STDOUT, env=env, timeout=timeout)
+        except subprocess.TimeoutExpired:
+            return {"code": code, "status": "timeout", "error": f"stopped after {timeout:g} s",
+                    "wall_seconds": time.perf_counter() - started}
     wall = time.perf_counter() - started
     if completed.returncode != 0 or not os.path.exists(output):
         with open(log) as f:
