@@ -80,6 +80,14 @@ std::vector<char> ResidualBasedNewtonRaphsonContactStrategy::ActiveStates() cons
   return states;
 }
 
+void ResidualBasedNewtonRaphsonContactStrategy::SetActiveStates(const std::vector<char>& states) {
+  ModelPart* contact = FindContactModelPart(model_part_);
+  if (!contact) return;
+  std::size_t i = 0;
+  for (Node* node : contact->Nodes())
+    if (node->Is(SLAVE)) node->Set(ACTIVE, static_cast<bool>(states[i++]));
+}
+
 std::size_t ResidualBasedNewtonRaphsonContactStrategy::CountFlips(const std::vector<char>& before) {
   std::size_t changes = 0;
   ModelPart* contact = FindContactModelPart(model_part_);
@@ -115,27 +123,69 @@ bool ResidualBasedNewtonRaphsonContactStrategy::RunNewtonLoop() {
   return false;
 }
 
+bool ResidualBasedNewtonRaphsonContactStrategy::RunFullNewtonLoop() {
+  inverted_element_ = settings_.adaptative_strategy ? FindInvertedElement() : 0;
+  if (inverted_element_ != 0) return false;
+  // Semi-smooth Newton can cycle: the set of one iteration makes the next iterate land in another
+  // set, which brings it back (a stiff penalty closing a gap: all contact nodes switch on, the
+  // linearised push-back overshoots by a fraction of the step, all switch off, and so on; Kratos
+  // has no guard and stops at max_iteration). When the set returns to one of an earlier
+  // iteration, the union of the sets in the cycle is frozen and Newton converges on it, as in the
+  // simplified semi-smooth Newton; the set is then checked at the converged state and, if it
+  // changes, frozen again.
+  std::vector<std::vector<char>> seen{ActiveStates()};
+  bool frozen = false;
+  for (int it = 1; it <= max_iteration_; ++it) {
+    const bool converged = NewtonIteration(it);
+    if (inverted_element_ != 0) return false;
+    if (converged && (!frozen || RecheckActiveSet())) return true;
+    if (frozen) continue;
+    std::vector<char> states = ActiveStates();
+    const auto earlier = std::find(seen.begin(), seen.end() - 1, states);
+    if (earlier == seen.end() - 1) {
+      seen.push_back(std::move(states));
+      continue;
+    }
+    for (auto cycle = earlier; cycle != seen.end(); ++cycle)
+      for (std::size_t i = 0; i < states.size(); ++i) states[i] = states[i] || (*cycle)[i];
+    SetActiveStates(states);
+    frozen = true;
+    model_part_.Set(INTERACTION, false);
+    if (echo_level_ >= 1)
+      Logger::Info(Concat(Name(), ": the active set of iteration ", it, " is that of iteration ", earlier - seen.begin(),
+                          "; the union of the sets of the cycle (", std::count(states.begin(), states.end(), 1),
+                          " active slave nodes) is kept until Newton converges on it"));
+  }
+  return false;
+}
+
+bool ResidualBasedNewtonRaphsonContactStrategy::RecheckActiveSet() {
+  // NL_ITERATION_NUMBER = 1 lets the mortar criterion update the set; the table row of this check
+  // is not printed.
+  model_part_.GetProcessInfo().SetValue(NL_ITERATION_NUMBER, 1);
+  const std::vector<char> before = ActiveStates();
+  const int echo = criteria_->GetEchoLevel();
+  criteria_->SetEchoLevel(0);
+  const bool converged = criteria_->PostCriteria(model_part_, builder_->GetDofSet(), builder_->SystemMatrix(),
+                                                 builder_->Increment(), builder_->Residual());
+  criteria_->SetEchoLevel(echo);
+  last_changes_ = CountFlips(before);
+  return converged;
+}
+
 bool ResidualBasedNewtonRaphsonContactStrategy::SolveWithActiveSet() {
   ProcessInfo& info = model_part_.GetProcessInfo();
   if (model_part_.Is(INTERACTION)) {
     passes_ = 1;
     info.SetValue(INNER_LOOP_ITERATION, 1);
-    return RunNewtonLoop();
+    const bool converged = RunFullNewtonLoop();
+    model_part_.Set(INTERACTION, true);
+    return converged;
   }
   for (passes_ = 1; passes_ <= settings_.inner_loop_iterations; ++passes_) {
     info.SetValue(INNER_LOOP_ITERATION, passes_);
     if (!RunNewtonLoop()) return false;
-    // Active-set check of the converged pass: NL_ITERATION_NUMBER = 1 lets the mortar criterion
-    // update the set; the table row of this check is not printed.
-    info.SetValue(NL_ITERATION_NUMBER, 1);
-    const std::vector<char> before = ActiveStates();
-    const int echo = criteria_->GetEchoLevel();
-    criteria_->SetEchoLevel(0);
-    const bool converged = criteria_->PostCriteria(model_part_, builder_->GetDofSet(), builder_->SystemMatrix(),
-                                                   builder_->Increment(), builder_->Residual());
-    criteria_->SetEchoLevel(echo);
-    last_changes_ = CountFlips(before);
-    if (converged) return true;
+    if (RecheckActiveSet()) return true;
   }
   passes_ = settings_.inner_loop_iterations;
   return false;

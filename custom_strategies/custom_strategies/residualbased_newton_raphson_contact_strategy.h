@@ -27,7 +27,10 @@ struct ContactStrategySettings {
 /// (BaseMortarConvergenceCriteria::PostCriteria) inside a MortarAndConvergenceCriteria.
 ///
 ///  - Full semi-smooth Newton when the computing model part Is(INTERACTION): one Newton loop
-///    in which the active set is updated after every iteration.
+///    in which the active set is updated after every iteration. If the set returns to that of an
+///    earlier iteration (a cycle), the union of the sets of the cycle is kept until Newton
+///    converges on it and checked then, as in the simplified method (Kratos stops at
+///    max_iteration).
 ///  - Simplified semi-smooth Newton otherwise: up to `inner_loop_iterations` passes, each a
 ///    complete Newton loop (the active set is updated after its first iteration, then frozen),
 ///    followed by an active-set check with NL_ITERATION_NUMBER = 1; done when the set no longer
@@ -92,6 +95,10 @@ class ResidualBasedNewtonRaphsonContactStrategy : public NewtonRaphsonStrategy {
  private:
   /// Newton loop of one pass; false when it did not converge or an element got inverted.
   bool RunNewtonLoop();
+  /// The Newton loop of the full semi-smooth Newton, with the guard against a cycling set.
+  bool RunFullNewtonLoop();
+  /// Active-set check at the current (converged) state; true when no node changed.
+  bool RecheckActiveSet();
   /// Full or simplified semi-smooth Newton, per the INTERACTION flag.
   bool SolveWithActiveSet();
   /// SolveWithActiveSet; with the adaptive strategy a SolutionError (singular system of a
@@ -100,6 +107,8 @@ class ResidualBasedNewtonRaphsonContactStrategy : public NewtonRaphsonStrategy {
   bool AdaptiveStep();
   /// ACTIVE flag of every slave node of the contact part, in container order.
   std::vector<char> ActiveStates() const;
+  /// Sets the ACTIVE flag of every slave node of the contact part (the order of ActiveStates).
+  void SetActiveStates(const std::vector<char>& states);
   /// Adds one flip to every slave node whose state differs from `before`; returns how many.
   std::size_t CountFlips(const std::vector<char>& before);
   void SaveStepStart();

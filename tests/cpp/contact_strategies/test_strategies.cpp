@@ -172,11 +172,12 @@ TEST(ContactNewton, FlipFloppingNodeIsNamedInTheFailure) {
   EXPECT_FALSE(strategy->Solve());
   const std::string report = strategy->FailureReport();
   EXPECT_NE(report.find("active set did not settle"), std::string::npos) << report;
-  EXPECT_NE(report.find("nodes still switching between contact and separation: 7 (7 changes)"), std::string::npos)
+  EXPECT_NE(report.find("nodes still switching between contact and separation: 7 (3 changes)"), std::string::npos)
       << report;
   EXPECT_EQ(report.find("3 ("), std::string::npos) << report;
-  // The first evaluation reports an open gap for the inactive node: 7 switches in 8 iterations.
-  EXPECT_EQ(strategy->ActiveSetFlipCounts().at(7), 7);
+  // Node 7 switches on, off and on again: the set of iteration 3 is that of iteration 1, so the
+  // strategy keeps it (the union of the cycle) until Newton converges, which the lying gap prevents.
+  EXPECT_EQ(strategy->ActiveSetFlipCounts().at(7), 3);
   EXPECT_EQ(strategy->ActiveSetFlipCounts().at(3), 1);
 }
 
