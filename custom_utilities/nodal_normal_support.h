@@ -11,17 +11,28 @@ namespace mc {
 
 class ModelPart;
 
+/// How the faces around a node are weighted in its averaged normal.
+enum class NodalNormalWeighting {
+  /// Every face's unit normal counts once (Popp's nodal normal; Kratos 10.4's CalculateUnitNormals
+  /// and ComputeNodesMeanNormalModelPart): m_j = sum_f a_f / |a_f|. The default.
+  kUnit,
+  /// Every face counts with its area (length in 2D): m_j = sum_f a_f. On a curved surface meshed
+  /// with faces of different sizes its first-order error is twice that of kUnit.
+  kArea,
+};
+
 /// The averaged nodal normals of an interface as functions of the current coordinates, with
 /// their exact derivatives (the normal variation of the NV mortar conditions).
 ///
-///   n_j = m_j / |m_j|,   m_j = sum over the faces f holding node j of the area vector a_f(x),
-///   dn_j/dx_k = (I - n_j n_j^T) / |m_j| . sum_f da_f/dx_k,
+///   n_j = m_j / |m_j|,   m_j = sum over the faces f holding node j of w(a_f(x)),
+///   dn_j/dx_k = (I - n_j n_j^T) / |m_j| . sum_f dw/da . da_f/dx_k,
 ///
-/// nonzero for every node k of the faces around j. The area vector is |f| times the unit normal
-/// for lines and triangles, and the closed form (x2 - x0) x (x3 - x1) / 2 for bilinear quads (the
+/// with w(a) = a / |a| (NodalNormalWeighting::kUnit, the default) or w(a) = a (kArea), nonzero
+/// for every node k of the faces around j. The area vector a_f is |f| times the unit normal for
+/// lines and triangles, and the closed form (x2 - x0) x (x3 - x1) / 2 for bilinear quads (the
 /// exact area of a planar quad, and the normal at its centre); NormalCalculationUtilities uses
-/// the same AreaVector, so the stored NORMAL and this class agree. Normals point out of the body
-/// when the faces are ordered as the interface builder generates them.
+/// the same weighted vectors, so the stored NORMAL and this class agree. Normals point out of
+/// the body when the faces are ordered as the interface builder generates them.
 ///
 /// Built once per contact search from the interface conditions (the faces must outlive it);
 /// read-only afterwards, so the pair conditions of all threads share one instance.
@@ -42,6 +53,12 @@ class NodalNormalSupport {
   /// a_f: 2D line: the tangent x1 - x0 rotated by -90 degrees; triangle: (x1-x0) x (x2-x0) / 2;
   /// quadrilateral: (x2-x0) x (x3-x1) / 2. Other geometries: DomainSize() x UnitNormal at the centre.
   static Array3 AreaVector(const Geometry& face);
+  /// The face's contribution to the nodal normal sums: w(a_f) of the current weighting.
+  static Array3 WeightedVector(const Geometry& face);
+  /// Process-wide weighting of the nodal normals (read once from the environment variable
+  /// MORTARCONTACT_NODAL_NORMAL_WEIGHTING = "unit" | "area" when set, else kUnit).
+  static NodalNormalWeighting Weighting();
+  static void SetWeighting(NodalNormalWeighting weighting);
   /// Whether AreaVector has closed-form derivatives for this face (Line2D2, Triangle3D3,
   /// Quadrilateral3D4).
   static bool HasAreaVectorDerivatives(const Geometry& face);

@@ -28,8 +28,8 @@ void NormalCalculationUtilities::ComputeNodalNormals(ModelPart& part) {
   sums.reserve(part.NumberOfNodes());
   for (Condition* condition : part.Conditions()) {
     const Geometry& geometry = condition->GetGeometry();
-    // The same area vector as NodalNormalSupport, whose derivatives the NV conditions use.
-    const Array3 weighted = NodalNormalSupport::AreaVector(geometry);
+    // The same weighted vector as NodalNormalSupport, whose derivatives the NV conditions use.
+    const Array3 weighted = NodalNormalSupport::WeightedVector(geometry);
     for (Node* node : geometry.Nodes()) {
       auto [it, inserted] = sums.try_emplace(node, Array3::Zero());
       it->second += weighted;

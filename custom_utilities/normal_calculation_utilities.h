@@ -9,11 +9,11 @@ namespace mc {
 ///
 /// Condition normal: the unit normal at the condition's local centre (Geometry::UnitNormal, so a
 /// line in 2D uses the tangent rotated by -90 degrees and a face generated from an element
-/// points out of it). Nodal normal: the area-weighted average of the unit normals of the
-/// part's conditions that hold the node, n_i = normalise(sum_c a_c) with the area vector
-/// a_c = |c| n_c (NodalNormalSupport::AreaVector; for a bilinear quad the closed form
-/// (x2 - x0) x (x3 - x1) / 2), so a node on a kink gets the bisector weighted by the sizes of
-/// its faces, and NodalNormalSupport gives the exact derivatives of the same n_i.
+/// points out of it). Nodal normal: the average of the unit normals of the part's conditions
+/// that hold the node, each counted once (n_i = normalise(sum_c n_c), Popp's definition and
+/// Kratos 10.4's), or weighted by their areas (n_i = normalise(sum_c a_c), a_c = |c| n_c) when
+/// NodalNormalSupport::Weighting() is kArea; NodalNormalSupport::WeightedVector gives the
+/// contribution and NodalNormalSupport the exact derivatives of the same n_i.
 class NormalCalculationUtilities {
  public:
   /// Writes condition value NORMAL on every condition of `part` (lines in 2D, surfaces in 3D).
