@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <cstdlib>
+#include <string>
 
 #include "core/geometries/geometry_type.h"
 #include "core/geometries/quadrature.h"
@@ -80,6 +82,39 @@ Eigen::Matrix<T, TDim, 1> Interpolate(const Eigen::Matrix<T, TNodes, TDim>& valu
   return values.transpose() * n;
 }
 
+/// 2D: local coordinate xi of the slave line x(xi) = c + xi b whose interpolated nodal normal
+/// n(xi) = nc + xi nb passes through p, i.e. the root of (p - x(xi)) x n(xi) = 0 (a quadratic)
+/// closest to the orthogonal projection `xi0` of p (Newton from there; one extra step after
+/// convergence settles the AutoDiff derivatives). Falls back to xi0 if the iteration fails.
+template <class T>
+T InverseNodalNormalProjection(const Eigen::Matrix<T, 2, 1>& c, const Eigen::Matrix<T, 2, 1>& b,
+                               const Eigen::Matrix<T, 2, 1>& nc, const Eigen::Matrix<T, 2, 1>& nb,
+                               const Eigen::Matrix<T, 2, 1>& p, const T& xi0) {
+  T xi = xi0;
+  bool converged = false;
+  for (int it = 0; it < 30; ++it) {
+    const Eigen::Matrix<T, 2, 1> r = p - c - xi * b;
+    const Eigen::Matrix<T, 2, 1> n = nc + xi * nb;
+    const T f = Cross2<T>(r, n);
+    const T df = Cross2<T>(Eigen::Matrix<T, 2, 1>(-b), n) + Cross2<T>(r, nb);
+    if (!(std::abs(ValueOf(df)) > 1e-300)) return xi0;
+    const T step = f / df;
+    xi -= step;
+    if (converged) return xi;
+    converged = std::abs(ValueOf(step)) < 1e-15 * (1.0 + std::abs(ValueOf(xi)));
+  }
+  return converged ? xi : xi0;
+}
+
+Segmentation2D Segmentation2DFromEnvironment() {
+  const char* value = std::getenv("MORTARCONTACT_SEGMENTATION_2D");
+  if (!value) return Segmentation2D::kNodalNormals;
+  const std::string text(value);
+  if (text == "nodal_normals") return Segmentation2D::kNodalNormals;
+  if (text == "orthogonal") return Segmentation2D::kOrthogonal;
+  throw InputError(Concat("MORTARCONTACT_SEGMENTATION_2D = '", text, "': expected 'nodal_normals' or 'orthogonal'"));
+}
+
 void CheckSettings(const MortarIntegrationSettings& settings) {
   if (settings.consider_tessellation)
     throw NotImplementedError(
@@ -93,6 +128,11 @@ void CheckSettings(const MortarIntegrationSettings& settings) {
 }
 
 }  // namespace
+
+Segmentation2D DefaultSegmentation2D() {
+  static const Segmentation2D value = Segmentation2DFromEnvironment();
+  return value;
+}
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
 template <class T>
@@ -147,6 +187,15 @@ bool ExactMortarIntegrationUtility<TDim, TNumNodes, TNumNodesMaster>::Compute(
     const T length = sqrt(length2);
     T s[2];
     for (int l = 0; l < 2; ++l) s[l] = 2.0 * (x2.row(l).transpose() - c).dot(e) / length2;
+    if (settings.segmentation_2d == Segmentation2D::kNodalNormals) {
+      // The overlap is the set of slave points whose interpolated-normal ray meets the master:
+      // its ends are the slave points whose ray passes through a master node.
+      const Vec half_e = 0.5 * e;
+      const Vec nc = 0.5 * (normals.row(0) + normals.row(1)).transpose();
+      const Vec nb = 0.5 * (normals.row(1) - normals.row(0)).transpose();
+      for (int l = 0; l < 2; ++l)
+        s[l] = InverseNodalNormalProjection<T>(c, half_e, nc, nb, Vec(x2.row(l).transpose()), s[l]);
+    }
     const bool ordered = ValueOf(s[0]) <= ValueOf(s[1]);
     const T& s_lo = ordered ? s[0] : s[1];
     const T& s_hi = ordered ? s[1] : s[0];

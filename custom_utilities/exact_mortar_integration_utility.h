@@ -8,6 +8,21 @@
 
 namespace mc {
 
+/// 2D: how the overlap of a slave and a master line is found.
+enum class Segmentation2D {
+  /// The slave points whose ray along the interpolated slave nodal normal meets the master
+  /// line: its ends are the slave points whose ray passes through a master node (Popp et al.
+  /// 2009; Kratos 10.4). The same normal field gives the master local coordinates, so the
+  /// master end of every overlap is exactly at a master node. The default.
+  kNodalNormals,
+  /// The master nodes projected orthogonally onto the slave line.
+  kOrthogonal,
+};
+
+/// The process-wide default (environment MORTARCONTACT_SEGMENTATION_2D = "nodal_normals" |
+/// "orthogonal" when set, else kNodalNormals).
+Segmentation2D DefaultSegmentation2D();
+
 /// Settings of the mortar segmentation, filled from the contact process (spec 4.2).
 struct MortarIntegrationSettings {
   /// INTEGRATION_ORDER_CONTACT, 1..5: Gauss points per overlap segment in 2D; in 3D the
@@ -21,6 +36,8 @@ struct MortarIntegrationSettings {
   /// 2D only, x = radius, y = axis: the mortar integrals are taken over the surface of
   /// revolution, each weight times 2 pi r at the point (MortarPairKinematics applies it).
   bool axisymmetric = false;
+  /// 2D overlap rule.
+  Segmentation2D segmentation_2d = DefaultSegmentation2D();
 };
 
 /// One mortar integration point of a (slave, master) pair.
@@ -53,8 +70,9 @@ struct MortarIntegrationPoints {
 ///   (2D: n_s = (t_y, -t_x) with t the unit tangent from node 1 to node 2, as
 ///   Geometry::UnitNormal; 3D: normalised
 ///   dX/dxi x dX/deta). Its sign does not matter for the segmentation.
-/// - 2D: the master nodes are projected onto the slave line along n_s; the overlap is the
-///   intersection of their parametric interval with [-1, 1]; Gauss points on it, ascending xi.
+/// - 2D: the master nodes are projected onto the slave line (Segmentation2D: along the
+///   interpolated slave nodal normals by default, or orthogonally, i.e. along n_s); the overlap is
+///   the intersection of their parametric interval with [-1, 1]; Gauss points on it, ascending xi.
 /// - 3D: slave and master nodes are projected along n_s onto the slave mean plane (through
 ///   the slave centroid, normal n_s); the master polygon is clipped by the (convex) slave
 ///   polygon (Sutherland-Hodgman, both oriented counter-clockwise about n_s, near-duplicate
