@@ -5,6 +5,7 @@
 #include <cassert>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <string>
 
 #include "core/geometries/geometry_type.h"
@@ -128,6 +129,18 @@ void CheckSettings(const MortarIntegrationSettings& settings) {
 }
 
 }  // namespace
+
+FanStart DefaultFanStart() {
+  static const FanStart value = [] {
+    const char* env = std::getenv("MORTARCONTACT_FAN_START");
+    if (!env) return FanStart::kKratosFirstPoint;
+    const std::string text(env);
+    if (text == "kratos") return FanStart::kKratosFirstPoint;
+    if (text == "angle") return FanStart::kSmallestAngle;
+    throw InputError(Concat("MORTARCONTACT_FAN_START = '", text, "': expected 'kratos' or 'angle'"));
+  }();
+  return value;
+}
 
 Segmentation2D DefaultSegmentation2D() {
   static const Segmentation2D value = Segmentation2DFromEnvironment();
@@ -292,21 +305,69 @@ bool ExactMortarIntegrationUtility<TDim, TNumNodes, TNumNodesMaster>::Compute(
     n_poly = n_clean;
     if (!(ValueOf(signed_area(poly, n_poly)) > eps * area_scale)) return false;
 
-    // Start at the vertex of smallest angle about the centroid (Kratos' order).
-    double cx = 0.0, cy = 0.0;
-    for (int k = 0; k < n_poly; ++k) {
-      cx += ValueOf(poly[k](0));
-      cy += ValueOf(poly[k](1));
-    }
-    cx /= n_poly;
-    cy /= n_poly;
     int start = 0;
-    double best = 10.0;
-    for (int k = 0; k < n_poly; ++k) {
-      const double angle = std::atan2(ValueOf(poly[k](1)) - cy, ValueOf(poly[k](0)) - cx);
-      if (angle < best - 1e-12) {
-        best = angle;
-        start = k;
+    if (settings.fan_start == FanStart::kKratosFirstPoint) {
+      // Kratos 10.4 fans the clipped polygon from the first point of its list: the master
+      // vertices inside the slave (master node order), else the slave vertices inside the master
+      // (slave node order), else the edge crossings (slave edges outer, master edges inner).
+      using D2 = Eigen::Vector2d;
+      auto value2 = [&](const P2& q) { return D2(ValueOf(q(0)), ValueOf(q(1))); };
+      std::array<D2, TNumNodes> s2;
+      std::array<D2, TNumNodesMaster> m2;
+      for (int i = 0; i < TNumNodes; ++i) s2[i] = value2(to_plane(x1.row(i).transpose()));
+      for (int l = 0; l < TNumNodesMaster; ++l) m2[l] = value2(to_plane(x2.row(l).transpose()));
+      const double tol = 1e-12 * std::sqrt(area_scale);
+      auto cross = [](const D2& a, const D2& b) { return a(0) * b(1) - a(1) * b(0); };
+      auto inside = [&](const D2& q, const auto& pts, int count) {
+        bool positive = true, negative = true;
+        for (int k = 0; k < count; ++k) {
+          const D2 e = pts[(k + 1) % count] - pts[k];
+          const double side = cross(e, D2(q - pts[k])) / std::max(e.norm(), 1e-300);
+          positive = positive && side >= -tol;
+          negative = negative && side <= tol;
+        }
+        return positive || negative;
+      };
+      bool found = false;
+      D2 first = D2::Zero();
+      for (int l = 0; l < TNumNodesMaster && !found; ++l)
+        if (inside(m2[l], s2, TNumNodes)) first = m2[l], found = true;
+      for (int i = 0; i < TNumNodes && !found; ++i)
+        if (inside(s2[i], m2, TNumNodesMaster)) first = s2[i], found = true;
+      for (int i = 0; i < TNumNodes && !found; ++i)
+        for (int l = 0; l < TNumNodesMaster && !found; ++l) {
+          const D2 r = s2[(i + 1) % TNumNodes] - s2[i];
+          const D2 q = m2[(l + 1) % TNumNodesMaster] - m2[l];
+          const double den = cross(r, q);
+          if (std::abs(den) <= 1e-300) continue;
+          const double t = cross(D2(m2[l] - s2[i]), q) / den;
+          const double u = cross(D2(m2[l] - s2[i]), r) / den;
+          if (t >= -1e-12 && t <= 1.0 + 1e-12 && u >= -1e-12 && u <= 1.0 + 1e-12)
+            first = s2[i] + t * r, found = true;
+        }
+      if (found) {
+        double best = std::numeric_limits<double>::infinity();
+        for (int k = 0; k < n_poly; ++k) {
+          const double distance = (value2(poly[k]) - first).squaredNorm();
+          if (distance < best) best = distance, start = k;
+        }
+      }
+    } else {
+      // The vertex of smallest angle about the vertex centroid.
+      double cx = 0.0, cy = 0.0;
+      for (int k = 0; k < n_poly; ++k) {
+        cx += ValueOf(poly[k](0));
+        cy += ValueOf(poly[k](1));
+      }
+      cx /= n_poly;
+      cy /= n_poly;
+      double best = 10.0;
+      for (int k = 0; k < n_poly; ++k) {
+        const double angle = std::atan2(ValueOf(poly[k](1)) - cy, ValueOf(poly[k](0)) - cx);
+        if (angle < best - 1e-12) {
+          best = angle;
+          start = k;
+        }
       }
     }
 

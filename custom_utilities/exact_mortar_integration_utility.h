@@ -23,6 +23,21 @@ enum class Segmentation2D {
 /// "orthogonal" when set, else kNodalNormals).
 Segmentation2D DefaultSegmentation2D();
 
+/// 3D: the vertex of the clipped polygon from which it is cut into a fan of triangles (the
+/// integration points, and so M, depend on it: its integrand is not polynomial).
+enum class FanStart {
+  /// Kratos 10.4: the first point of its list, i.e. the first master vertex inside the slave
+  /// (master node order), else the first slave vertex inside the master (slave node order), else
+  /// the first edge crossing (slave edges outer, master edges inner). The default.
+  kKratosFirstPoint,
+  /// The vertex of smallest angle about the vertex centroid (in-plane frame t1 = slave edge 0-1).
+  kSmallestAngle,
+};
+
+/// The process-wide default (environment MORTARCONTACT_FAN_START = "kratos" | "angle" when set,
+/// else kKratosFirstPoint).
+FanStart DefaultFanStart();
+
 /// Settings of the mortar segmentation, filled from the contact process (spec 4.2).
 struct MortarIntegrationSettings {
   /// INTEGRATION_ORDER_CONTACT, 1..5: Gauss points per overlap segment in 2D; in 3D the
@@ -38,6 +53,8 @@ struct MortarIntegrationSettings {
   bool axisymmetric = false;
   /// 2D overlap rule.
   Segmentation2D segmentation_2d = DefaultSegmentation2D();
+  /// 3D fan triangulation of the clipped polygon.
+  FanStart fan_start = DefaultFanStart();
 };
 
 /// One mortar integration point of a (slave, master) pair.
@@ -76,10 +93,9 @@ struct MortarIntegrationPoints {
 /// - 3D: slave and master nodes are projected along n_s onto the slave mean plane (through
 ///   the slave centroid, normal n_s); the master polygon is clipped by the (convex) slave
 ///   polygon (Sutherland-Hodgman, both oriented counter-clockwise about n_s, near-duplicate
-///   vertices merged); the polygon is started at the vertex of smallest angle
-///   atan2(t2, t1) about its vertex centroid, with t1 = unit direction slave node 1 -> node 2
-///   and t2 = n_s x t1 (this reproduces Kratos' point order); it is cut into a fan from that
-///   first vertex, and each sub-triangle gets the triangle rule of the order.
+///   vertices merged); it is cut into a fan from the vertex FanStart selects (by default Kratos
+///   10.4's first point: a master vertex inside the slave, else a slave vertex inside the master,
+///   else an edge crossing), and each sub-triangle gets the triangle rule of the order.
 /// - Slave local coordinates: inverse map of the slave geometry along n_s.
 ///   Master local coordinates: the slave point x1(xi) is projected onto the master along the
 ///   interpolated slave nodal normal sum_i N_i(xi) n_i (Kratos), so they depend on the
