@@ -4,9 +4,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
-#include <cstdlib>
 #include <limits>
-#include <string>
 
 #include "core/geometries/geometry_type.h"
 #include "core/geometries/quadrature.h"
@@ -107,15 +105,6 @@ T InverseNodalNormalProjection(const Eigen::Matrix<T, 2, 1>& c, const Eigen::Mat
   return converged ? xi : xi0;
 }
 
-Segmentation2D Segmentation2DFromEnvironment() {
-  const char* value = std::getenv("MORTARCONTACT_SEGMENTATION_2D");
-  if (!value) return Segmentation2D::kNodalNormals;
-  const std::string text(value);
-  if (text == "nodal_normals") return Segmentation2D::kNodalNormals;
-  if (text == "orthogonal") return Segmentation2D::kOrthogonal;
-  throw InputError(Concat("MORTARCONTACT_SEGMENTATION_2D = '", text, "': expected 'nodal_normals' or 'orthogonal'"));
-}
-
 void CheckSettings(const MortarIntegrationSettings& settings) {
   if (settings.consider_tessellation)
     throw NotImplementedError(
@@ -129,23 +118,6 @@ void CheckSettings(const MortarIntegrationSettings& settings) {
 }
 
 }  // namespace
-
-FanStart DefaultFanStart() {
-  static const FanStart value = [] {
-    const char* env = std::getenv("MORTARCONTACT_FAN_START");
-    if (!env) return FanStart::kKratosFirstPoint;
-    const std::string text(env);
-    if (text == "kratos") return FanStart::kKratosFirstPoint;
-    if (text == "angle") return FanStart::kSmallestAngle;
-    throw InputError(Concat("MORTARCONTACT_FAN_START = '", text, "': expected 'kratos' or 'angle'"));
-  }();
-  return value;
-}
-
-Segmentation2D DefaultSegmentation2D() {
-  static const Segmentation2D value = Segmentation2DFromEnvironment();
-  return value;
-}
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
 template <class T>
@@ -200,15 +172,14 @@ bool ExactMortarIntegrationUtility<TDim, TNumNodes, TNumNodesMaster>::Compute(
     const T length = sqrt(length2);
     T s[2];
     for (int l = 0; l < 2; ++l) s[l] = 2.0 * (x2.row(l).transpose() - c).dot(e) / length2;
-    if (settings.segmentation_2d == Segmentation2D::kNodalNormals) {
-      // The overlap is the set of slave points whose interpolated-normal ray meets the master:
-      // its ends are the slave points whose ray passes through a master node.
-      const Vec half_e = 0.5 * e;
-      const Vec nc = 0.5 * (normals.row(0) + normals.row(1)).transpose();
-      const Vec nb = 0.5 * (normals.row(1) - normals.row(0)).transpose();
-      for (int l = 0; l < 2; ++l)
-        s[l] = InverseNodalNormalProjection<T>(c, half_e, nc, nb, Vec(x2.row(l).transpose()), s[l]);
-    }
+    // The overlap is the set of slave points whose interpolated-normal ray meets the master: its
+    // ends are the slave points whose ray passes through a master node (the orthogonal
+    // projections s start the search).
+    const Vec half_e = 0.5 * e;
+    const Vec nc = 0.5 * (normals.row(0) + normals.row(1)).transpose();
+    const Vec nb = 0.5 * (normals.row(1) - normals.row(0)).transpose();
+    for (int l = 0; l < 2; ++l)
+      s[l] = InverseNodalNormalProjection<T>(c, half_e, nc, nb, Vec(x2.row(l).transpose()), s[l]);
     const bool ordered = ValueOf(s[0]) <= ValueOf(s[1]);
     const T& s_lo = ordered ? s[0] : s[1];
     const T& s_hi = ordered ? s[1] : s[0];
@@ -305,11 +276,12 @@ bool ExactMortarIntegrationUtility<TDim, TNumNodes, TNumNodesMaster>::Compute(
     n_poly = n_clean;
     if (!(ValueOf(signed_area(poly, n_poly)) > eps * area_scale)) return false;
 
+    // Kratos 10.4 fans the clipped polygon from the first point of its list: the master vertices
+    // inside the slave (master node order), else the slave vertices inside the master (slave node
+    // order), else the edge crossings (slave edges outer, master edges inner). The choice is
+    // arbitrary for D (exact either way) but not for M; taking Kratos' makes the answers agree.
     int start = 0;
-    if (settings.fan_start == FanStart::kKratosFirstPoint) {
-      // Kratos 10.4 fans the clipped polygon from the first point of its list: the master
-      // vertices inside the slave (master node order), else the slave vertices inside the master
-      // (slave node order), else the edge crossings (slave edges outer, master edges inner).
+    {
       using D2 = Eigen::Vector2d;
       auto value2 = [&](const P2& q) { return D2(ValueOf(q(0)), ValueOf(q(1))); };
       std::array<D2, TNumNodes> s2;
@@ -350,23 +322,6 @@ bool ExactMortarIntegrationUtility<TDim, TNumNodes, TNumNodesMaster>::Compute(
         for (int k = 0; k < n_poly; ++k) {
           const double distance = (value2(poly[k]) - first).squaredNorm();
           if (distance < best) best = distance, start = k;
-        }
-      }
-    } else {
-      // The vertex of smallest angle about the vertex centroid.
-      double cx = 0.0, cy = 0.0;
-      for (int k = 0; k < n_poly; ++k) {
-        cx += ValueOf(poly[k](0));
-        cy += ValueOf(poly[k](1));
-      }
-      cx /= n_poly;
-      cy /= n_poly;
-      double best = 10.0;
-      for (int k = 0; k < n_poly; ++k) {
-        const double angle = std::atan2(ValueOf(poly[k](1)) - cy, ValueOf(poly[k](0)) - cx);
-        if (angle < best - 1e-12) {
-          best = angle;
-          start = k;
         }
       }
     }

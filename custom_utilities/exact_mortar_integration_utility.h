@@ -8,36 +8,6 @@
 
 namespace mc {
 
-/// 2D: how the overlap of a slave and a master line is found.
-enum class Segmentation2D {
-  /// The slave points whose ray along the interpolated slave nodal normal meets the master
-  /// line: its ends are the slave points whose ray passes through a master node (Popp et al.
-  /// 2009; Kratos 10.4). The same normal field gives the master local coordinates, so the
-  /// master end of every overlap is exactly at a master node. The default.
-  kNodalNormals,
-  /// The master nodes projected orthogonally onto the slave line.
-  kOrthogonal,
-};
-
-/// The process-wide default (environment MORTARCONTACT_SEGMENTATION_2D = "nodal_normals" |
-/// "orthogonal" when set, else kNodalNormals).
-Segmentation2D DefaultSegmentation2D();
-
-/// 3D: the vertex of the clipped polygon from which it is cut into a fan of triangles (the
-/// integration points, and so M, depend on it: its integrand is not polynomial).
-enum class FanStart {
-  /// Kratos 10.4: the first point of its list, i.e. the first master vertex inside the slave
-  /// (master node order), else the first slave vertex inside the master (slave node order), else
-  /// the first edge crossing (slave edges outer, master edges inner). The default.
-  kKratosFirstPoint,
-  /// The vertex of smallest angle about the vertex centroid (in-plane frame t1 = slave edge 0-1).
-  kSmallestAngle,
-};
-
-/// The process-wide default (environment MORTARCONTACT_FAN_START = "kratos" | "angle" when set,
-/// else kKratosFirstPoint).
-FanStart DefaultFanStart();
-
 /// Settings of the mortar segmentation, filled from the contact process (spec 4.2).
 struct MortarIntegrationSettings {
   /// INTEGRATION_ORDER_CONTACT, 1..5: Gauss points per overlap segment in 2D; in 3D the
@@ -51,10 +21,6 @@ struct MortarIntegrationSettings {
   /// 2D only, x = radius, y = axis: the mortar integrals are taken over the surface of
   /// revolution, each weight times 2 pi r at the point (MortarPairKinematics applies it).
   bool axisymmetric = false;
-  /// 2D overlap rule.
-  Segmentation2D segmentation_2d = DefaultSegmentation2D();
-  /// 3D fan triangulation of the clipped polygon.
-  FanStart fan_start = DefaultFanStart();
 };
 
 /// One mortar integration point of a (slave, master) pair.
@@ -87,15 +53,17 @@ struct MortarIntegrationPoints {
 ///   (2D: n_s = (t_y, -t_x) with t the unit tangent from node 1 to node 2, as
 ///   Geometry::UnitNormal; 3D: normalised
 ///   dX/dxi x dX/deta). Its sign does not matter for the segmentation.
-/// - 2D: the master nodes are projected onto the slave line (Segmentation2D: along the
-///   interpolated slave nodal normals by default, or orthogonally, i.e. along n_s); the overlap is
-///   the intersection of their parametric interval with [-1, 1]; Gauss points on it, ascending xi.
+/// - 2D: the overlap is the set of slave points whose ray along the interpolated slave nodal
+///   normal meets the master line, so its ends are the slave points whose ray passes through a
+///   master node (Popp et al. 2009; Kratos 10.4) and the master end of every overlap is exactly at
+///   a master node; Gauss points on it, ascending xi.
 /// - 3D: slave and master nodes are projected along n_s onto the slave mean plane (through
 ///   the slave centroid, normal n_s); the master polygon is clipped by the (convex) slave
 ///   polygon (Sutherland-Hodgman, both oriented counter-clockwise about n_s, near-duplicate
-///   vertices merged); it is cut into a fan from the vertex FanStart selects (by default Kratos
-///   10.4's first point: a master vertex inside the slave, else a slave vertex inside the master,
-///   else an edge crossing), and each sub-triangle gets the triangle rule of the order.
+///   vertices merged); it is cut into a fan from Kratos 10.4's first point (a master vertex inside
+///   the slave, else a slave vertex inside the master, else an edge crossing: the integration
+///   points, and so M, whose integrand is not polynomial, depend on it), and each sub-triangle
+///   gets the triangle rule of the order.
 /// - Slave local coordinates: inverse map of the slave geometry along n_s.
 ///   Master local coordinates: the slave point x1(xi) is projected onto the master along the
 ///   interpolated slave nodal normal sum_i N_i(xi) n_i (Kratos), so they depend on the

@@ -2,9 +2,6 @@
 #include "custom_utilities/nodal_normal_support.h"
 
 #include <Eigen/Geometry>
-#include <atomic>
-#include <cstdlib>
-#include <string>
 
 #include "core/geometries/reference_element.h"
 #include "core/model/model_part.h"
@@ -61,33 +58,10 @@ void ForEachAreaVectorDerivative(const Geometry& face, TAdd&& add) {
   }
 }
 
-NodalNormalWeighting WeightingFromEnvironment() {
-  const char* value = std::getenv("MORTARCONTACT_NODAL_NORMAL_WEIGHTING");
-  if (!value) return NodalNormalWeighting::kUnit;
-  const std::string text(value);
-  if (text == "unit") return NodalNormalWeighting::kUnit;
-  if (text == "area") return NodalNormalWeighting::kArea;
-  throw InputError(Concat("MORTARCONTACT_NODAL_NORMAL_WEIGHTING = '", text, "': expected 'unit' or 'area'"));
-}
-
-std::atomic<int>& WeightingStore() {
-  static std::atomic<int> store(static_cast<int>(WeightingFromEnvironment()));
-  return store;
-}
-
 }  // namespace
-
-NodalNormalWeighting NodalNormalSupport::Weighting() {
-  return static_cast<NodalNormalWeighting>(WeightingStore().load(std::memory_order_relaxed));
-}
-
-void NodalNormalSupport::SetWeighting(NodalNormalWeighting weighting) {
-  WeightingStore().store(static_cast<int>(weighting), std::memory_order_relaxed);
-}
 
 Array3 NodalNormalSupport::WeightedVector(const Geometry& face) {
   const Array3 a = AreaVector(face);
-  if (Weighting() == NodalNormalWeighting::kArea) return a;
   const double norm = a.norm();
   return norm > 0.0 ? Array3(a / norm) : Array3::Zero();
 }
@@ -141,24 +115,17 @@ void NodalNormalSupport::Compute(const Node& node, Derivatives& out) const {
   out.nodes.clear();
   out.dn_dx.clear();
   Array3 m = Array3::Zero();
-  const bool unit = Weighting() == NodalNormalWeighting::kUnit;
   for (const Geometry* face : Faces(node)) {
     const Array3 a = AreaVector(*face);
-    // d(a/|a|)/da = (I - a^ a^T) / |a| for unit weights, the identity for area weights.
-    Eigen::Matrix3d chain = Eigen::Matrix3d::Identity();
-    if (unit) {
-      const double norm_a = a.norm();
-      if (!(norm_a > 0.0))
-        throw SolutionError(Concat("nodal normal of node ", node.Id(), ": a face of zero area"));
-      const Array3 unit_a = a / norm_a;
-      chain = (Eigen::Matrix3d::Identity() - unit_a * unit_a.transpose()) / norm_a;
-      m += unit_a;
-    } else {
-      m += a;
-    }
-    // dm/dx_k, accumulated per distinct node (a node's faces share it and its neighbours).
+    const double norm_a = a.norm();
+    if (!(norm_a > 0.0)) throw SolutionError(Concat("nodal normal of node ", node.Id(), ": a face of zero area"));
+    const Array3 unit_a = a / norm_a;
+    m += unit_a;
+    // d(a/|a|)/da = (I - a^ a^T) / |a|, chained with da/dx_k and accumulated per distinct node
+    // (a node's faces share it and its neighbours).
+    const Eigen::Matrix3d chain = (Eigen::Matrix3d::Identity() - unit_a * unit_a.transpose()) / norm_a;
     ForEachAreaVectorDerivative(*face, [&](int local, const Eigen::Matrix3d& da_raw) {
-      const Eigen::Matrix3d da = unit ? Eigen::Matrix3d(chain * da_raw) : da_raw;
+      const Eigen::Matrix3d da = chain * da_raw;
       Node* k = face->pGetNode(static_cast<std::size_t>(local));
       std::size_t i = 0;
       while (i < out.nodes.size() && out.nodes[i] != k) ++i;
@@ -172,7 +139,7 @@ void NodalNormalSupport::Compute(const Node& node, Derivatives& out) const {
   }
   const double norm = m.norm();
   if (!(norm > 0.0))
-    throw SolutionError(Concat("nodal normal of node ", node.Id(), ": the area vectors of its ", Faces(node).size(),
+    throw SolutionError(Concat("nodal normal of node ", node.Id(), ": the unit normals of its ", Faces(node).size(),
                                " interface faces sum to zero"));
   out.normal = m / norm;
   const Eigen::Matrix3d projector = (Eigen::Matrix3d::Identity() - out.normal * out.normal.transpose()) / norm;

@@ -11,24 +11,15 @@ namespace mc {
 
 class ModelPart;
 
-/// How the faces around a node are weighted in its averaged normal.
-enum class NodalNormalWeighting {
-  /// Every face's unit normal counts once (Popp's nodal normal; Kratos 10.4's CalculateUnitNormals
-  /// and ComputeNodesMeanNormalModelPart): m_j = sum_f a_f / |a_f|. The default.
-  kUnit,
-  /// Every face counts with its area (length in 2D): m_j = sum_f a_f. On a curved surface meshed
-  /// with faces of different sizes its first-order error is twice that of kUnit.
-  kArea,
-};
-
 /// The averaged nodal normals of an interface as functions of the current coordinates, with
 /// their exact derivatives (the normal variation of the NV mortar conditions).
 ///
-///   n_j = m_j / |m_j|,   m_j = sum over the faces f holding node j of w(a_f(x)),
-///   dn_j/dx_k = (I - n_j n_j^T) / |m_j| . sum_f dw/da . da_f/dx_k,
+///   n_j = m_j / |m_j|,   m_j = sum over the faces f holding node j of a_f(x) / |a_f(x)|,
+///   dn_j/dx_k = (I - n_j n_j^T) / |m_j| . sum_f (I - u_f u_f^T) / |a_f| . da_f/dx_k,  u_f = a_f / |a_f|,
 ///
-/// with w(a) = a / |a| (NodalNormalWeighting::kUnit, the default) or w(a) = a (kArea), nonzero
-/// for every node k of the faces around j. The area vector a_f is |f| times the unit normal for
+/// nonzero for every node k of the faces around j. Every face's unit normal counts once (Popp's
+/// nodal normal, and Kratos 10.4's): weighted by area instead, a curved surface meshed with faces
+/// of different sizes gets twice the first-order normal error. The area vector a_f is |f| times the unit normal for
 /// lines and triangles, and the closed form (x2 - x0) x (x3 - x1) / 2 for bilinear quads (the
 /// exact area of a planar quad, and the normal at its centre); NormalCalculationUtilities uses
 /// the same weighted vectors, so the stored NORMAL and this class agree. Normals point out of
@@ -53,12 +44,8 @@ class NodalNormalSupport {
   /// a_f: 2D line: the tangent x1 - x0 rotated by -90 degrees; triangle: (x1-x0) x (x2-x0) / 2;
   /// quadrilateral: (x2-x0) x (x3-x1) / 2. Other geometries: DomainSize() x UnitNormal at the centre.
   static Array3 AreaVector(const Geometry& face);
-  /// The face's contribution to the nodal normal sums: w(a_f) of the current weighting.
+  /// The face's contribution to the nodal normal sums: its unit normal a_f / |a_f|.
   static Array3 WeightedVector(const Geometry& face);
-  /// Process-wide weighting of the nodal normals (read once from the environment variable
-  /// MORTARCONTACT_NODAL_NORMAL_WEIGHTING = "unit" | "area" when set, else kUnit).
-  static NodalNormalWeighting Weighting();
-  static void SetWeighting(NodalNormalWeighting weighting);
   /// Whether AreaVector has closed-form derivatives for this face (Line2D2, Triangle3D3,
   /// Quadrilateral3D4).
   static bool HasAreaVectorDerivatives(const Geometry& face);

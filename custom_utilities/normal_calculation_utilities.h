@@ -11,9 +11,8 @@ namespace mc {
 /// line in 2D uses the tangent rotated by -90 degrees and a face generated from an element
 /// points out of it). Nodal normal: the average of the unit normals of the part's conditions
 /// that hold the node, each counted once (n_i = normalise(sum_c n_c), Popp's definition and
-/// Kratos 10.4's), or weighted by their areas (n_i = normalise(sum_c a_c), a_c = |c| n_c) when
-/// NodalNormalSupport::Weighting() is kArea; NodalNormalSupport::WeightedVector gives the
-/// contribution and NodalNormalSupport the exact derivatives of the same n_i.
+/// Kratos 10.4's); NodalNormalSupport::WeightedVector gives the contribution and
+/// NodalNormalSupport the exact derivatives of the same n_i.
 class NormalCalculationUtilities {
  public:
   /// Writes condition value NORMAL on every condition of `part` (lines in 2D, surfaces in 3D).
