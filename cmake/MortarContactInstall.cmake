@@ -10,7 +10,7 @@ install(TARGETS mortarcontact_core mc_build_settings mc_dependencies
   INCLUDES DESTINATION ${MC_INSTALL_INCLUDEDIR})
 
 foreach(layer core structural custom_utilities custom_conditions custom_linear_solvers custom_processes
-              custom_strategies)
+              custom_strategies custom_formulations)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${layer}/
     DESTINATION ${MC_INSTALL_INCLUDEDIR}/${layer}
     FILES_MATCHING PATTERN "*.h")

@@ -43,16 +43,19 @@ Parameters ALMVariablesCalculationProcess::GetDefaultParameters() {
   return Parameters(R"({
     "stiffness_factor": 1.0,
     "penalty_scale_factor": 1.0,
-    "use_scale_factor": true,
-    "penalty_multiplier": 1.0,
-    "penalty_floor": 1.0
+    "use_scale_factor": true
   })");
 }
 
 ALMVariablesCalculationProcess::ALMVariablesCalculationProcess(ModelPart& root, ModelPart& interface,
-                                                               Parameters settings)
-    : root_(root), interface_(interface), settings_(std::move(settings)) {
-  settings_.ValidateAndAssignDefaults(GetDefaultParameters());
+                                                               Parameters settings, double penalty_multiplier,
+                                                               double penalty_floor)
+    : root_(root),
+      interface_(interface),
+      settings_(std::move(settings)),
+      penalty_multiplier_(penalty_multiplier),
+      penalty_floor_(penalty_floor) {
+  settings_.AddMissingParameters(GetDefaultParameters());
 }
 
 void ALMVariablesCalculationProcess::Execute() {
@@ -77,8 +80,8 @@ void ALMVariablesCalculationProcess::Execute() {
 
   const double stiffness_factor = settings_["stiffness_factor"].GetDouble();
   const double eps = std::numeric_limits<double>::epsilon();
-  penalty_ = settings_["penalty_multiplier"].GetDouble() * stiffness_factor * value;
-  if (penalty_ < eps) penalty_ = settings_["penalty_floor"].GetDouble();
+  penalty_ = penalty_multiplier_ * stiffness_factor * value;
+  if (penalty_ < eps) penalty_ = penalty_floor_;
   scale_factor_ = settings_["penalty_scale_factor"].GetDouble() * stiffness_factor * value;
   if (!settings_["use_scale_factor"].GetBool() || scale_factor_ < eps) scale_factor_ = 1.0;
 

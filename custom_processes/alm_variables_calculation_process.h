@@ -20,7 +20,11 @@ namespace mc {
 /// the non-historical INITIAL_PENALTY of every interface node.
 class ALMVariablesCalculationProcess {
  public:
-  ALMVariablesCalculationProcess(ModelPart& root, ModelPart& interface, Parameters settings);
+  /// `settings`: the contact process' advance_ALM_parameters (its other keys are the process');
+  /// the keys of GetDefaultParameters are read where they live, missing ones added.
+  ALMVariablesCalculationProcess(ModelPart& root, ModelPart& interface, Parameters settings,
+                                 double penalty_multiplier = 1.0, double penalty_floor = 1.0);
+  /// stiffness_factor, penalty_scale_factor, use_scale_factor (Kratos' advance_ALM_parameters).
   static Parameters GetDefaultParameters();
 
   void Execute();
@@ -31,6 +35,8 @@ class ALMVariablesCalculationProcess {
   ModelPart& root_;
   ModelPart& interface_;
   Parameters settings_;
+  double penalty_multiplier_;
+  double penalty_floor_;
   double penalty_ = 0.0;
   double scale_factor_ = 0.0;
 };

@@ -126,34 +126,40 @@ ModelPart& ComputingSubPart(ModelPart& root, const std::string& id) {
 
 Parameters ContactSearchProcess::GetDefaultParameters() {
   return Parameters(R"({
-    "simple_search": false,
     "type_search": "in_radius_with_obb",
-    "check_gap": "check_mapping",
-    "bucket_size": 4,
+    "simple_search": false,
+    "adapt_search": false,
     "search_factor": 3.5,
+    "active_check_factor": 0.01,
+    "max_number_results": 1000,
+    "bucket_size": 4,
     "dynamic_search": false,
     "static_check_movement": false,
-    "consider_gap_threshold": false,
+    "database_step_update": 1,
     "normal_orientation_threshold": 0.1,
+    "consider_gap_threshold": false,
     "debug_mode": false,
-    "allocation_size": 1000,
-    "condition_name": "ALMFrictionlessMortarContactCondition",
-    "final_string": "",
-    "predefined_master_slave": true,
-    "id_name": "0",
-    "pure_slip": false,
-    "active_check_factor": 0.01,
-    "contact_property_id": 0,
-    "bounding_box_factor": 0.1
+    "predict_correct_lagrange_multiplier": false,
+    "check_gap": "check_mapping",
+    "octree_search_parameters": {
+      "bounding_box_factor": 0.1,
+      "debug_obb": false,
+      "OBB_intersection_type": "SeparatingAxisTheorem",
+      "build_from_bounding_box": true,
+      "lower_bounding_box_coefficient": 0.0,
+      "higher_bounding_box_coefficient": 1.0
+    }
   })");
 }
 
-ContactSearchProcess::ContactSearchProcess(ModelPart& root, ModelPart& interface, Parameters settings)
+ContactSearchProcess::ContactSearchProcess(ModelPart& root, ModelPart& interface, Parameters search_parameters,
+                                           ContactSearchSlot slot)
     : root_(root),
       interface_(interface),
-      computing_(ComputingSubPart(root, settings.Has("id_name") ? settings["id_name"].GetString() : "0")),
-      settings_(std::move(settings)) {
-  settings_.ValidateAndAssignDefaults(GetDefaultParameters());
+      computing_(ComputingSubPart(root, slot.id)),
+      settings_(std::move(search_parameters)),
+      slot_(std::move(slot)) {
+  settings_.RecursivelyValidateAndAssignDefaults(GetDefaultParameters());
   const std::string type = settings_["type_search"].GetString();
   if (ToLower(type) == "kdop")
     throw NotImplementedError(Concat(settings_.Where(), ".type_search: 'kdop' is not implemented (as in Kratos); use ",
@@ -199,7 +205,7 @@ const PairedCondition& ContactSearchProcess::Prototype(const Geometry& slave, co
   static std::mutex mutex;
   static std::set<std::string> names;
   const std::string name =
-      settings_["condition_name"].GetString() + GeometryToken(slave, master) + settings_["final_string"].GetString();
+      slot_.condition_name + GeometryToken(slave, master) + slot_.final_string;
   const auto& registry = Registry<Condition>::Instance();
   if (!registry.Has(name)) {
     std::vector<std::string> paired;
@@ -284,7 +290,7 @@ ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
   ClearMortarConditions();
   NormalCalculationUtilities::ComputeNodalNormals(interface_);
 
-  const bool automatic = !settings_["predefined_master_slave"].GetBool() && !roles_assigned_;
+  const bool automatic = !slot_.predefined_master_slave && !roles_assigned_;
   std::vector<Condition*> all(interface_.Conditions().begin(), interface_.Conditions().end());
   std::vector<std::size_t> slaves, masters;
   for (std::size_t i = 0; i < all.size(); ++i) {
@@ -308,7 +314,7 @@ ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
 
   const double search_factor = settings_["search_factor"].GetDouble();
   const double threshold = settings_["normal_orientation_threshold"].GetDouble();
-  const double box_factor = settings_["bounding_box_factor"].GetDouble();
+  const double box_factor = settings_["octree_search_parameters"]["bounding_box_factor"].GetDouble();
   const bool in_box = type_search_ == "in_box" || type_search_ == "in_box_with_obb";
   const bool with_obb = type_search_ == "in_radius_with_obb" || type_search_ == "in_box_with_obb";
   const bool simple = settings_["simple_search"].GetBool();
@@ -316,7 +322,7 @@ ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
   const bool gap_threshold = settings_["consider_gap_threshold"].GetBool();
   const double distance_threshold =
       root_.GetProcessInfo().Has(DISTANCE_THRESHOLD) ? root_.GetProcessInfo().GetValue(DISTANCE_THRESHOLD) : 1e24;
-  const auto allocation = static_cast<std::size_t>(std::max(1, settings_["allocation_size"].GetInt()));
+  const auto allocation = static_cast<std::size_t>(std::max(1, settings_["max_number_results"].GetInt()));
 
   // Master faces around each node, to complete the coverage of the slave faces (below).
   std::unordered_map<const Node*, std::vector<std::size_t>> masters_at_node;
@@ -422,7 +428,7 @@ ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
     for (std::size_t m : candidates[s]) pairs.emplace_back(all[s], all[m]);
   IndexType next_id = 1;
   if (root_.NumberOfConditions() > 0) next_id = root_.Conditions()[root_.NumberOfConditions() - 1]->Id() + 1;
-  const int property_id = settings_["contact_property_id"].GetInt();
+  const int property_id = slot_.property_id;
   Properties* pair_properties = property_id > 0 ? &root_.GetProperties(property_id) : nullptr;
   // NV pairs: the faces around each slave node, from the part whose nodal NORMAL the mortar
   // updater refreshes ("Contact"), built once per search and shared.

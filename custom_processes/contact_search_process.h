@@ -24,6 +24,17 @@ struct ContactSearchStatistics {
   double seconds = 0.0;
 };
 
+/// What the contact process tells the search of one interface slot, besides the user's
+/// search_parameters.
+struct ContactSearchSlot {
+  std::string id = "0";  ///< the slot: pairs go to ComputingContact.ComputingContactSub<id>
+  /// Pair-condition name stem; the name is stem + geometry token + final_string.
+  std::string condition_name = "ALMFrictionlessMortarContactCondition";
+  std::string final_string;
+  bool predefined_master_slave = true;  ///< roles from assume_master_slave, else assigned
+  int property_id = 0;                  ///< properties of the pairs (0: the slave condition's)
+};
+
 /// Contact search of one interface slot (spec 4.3): pairs every slave condition of
 /// `Contact.ContactSub<k>` with the master conditions facing it and creates one pair condition
 /// per (slave, master) in `ComputingContact.ComputingContactSub<k>`.
@@ -55,11 +66,15 @@ struct ContactSearchStatistics {
 /// group keeps both roles, pairing each condition only with higher ids).
 class ContactSearchProcess {
  public:
-  ContactSearchProcess(ModelPart& root, ModelPart& interface, Parameters settings);
+  /// `search_parameters` is the contact process' block of that name, validated here (unknown keys
+  /// are errors naming their JSON path) and read where it lives, so later errors name it too.
+  ContactSearchProcess(ModelPart& root, ModelPart& interface, Parameters search_parameters,
+                       ContactSearchSlot slot = {});
 
-  /// Forwarded search keys (spec 4.3) plus: condition_name, final_string, id_name,
-  /// predefined_master_slave, pure_slip, active_check_factor, contact_property_id (0: the
-  /// slave condition's property), bounding_box_factor.
+  /// Kratos' search_parameters (spec 4.3), every key with its default. Not all act here:
+  /// adapt_search, dynamic_search, static_check_movement, debug_mode,
+  /// predict_correct_lagrange_multiplier and octree_search_parameters other than
+  /// bounding_box_factor are accepted; database_step_update is the contact process'.
   static Parameters GetDefaultParameters();
 
   /// Clears this slot's pairs, searches, creates the pairs and predicts the active set.
@@ -73,6 +88,7 @@ class ContactSearchProcess {
   ModelPart& InterfacePart() const noexcept { return interface_; }
   ModelPart& ComputingPart() const noexcept { return computing_; }
   const Parameters& Settings() const noexcept { return settings_; }
+  const ContactSearchSlot& Slot() const noexcept { return slot_; }
 
   /// Canonical search type and gap check names ("in_radius_with_obb", "mapping_check", ...).
   const std::string& SearchType() const noexcept { return type_search_; }
@@ -94,6 +110,7 @@ class ContactSearchProcess {
   ModelPart& interface_;
   ModelPart& computing_;
   Parameters settings_;
+  ContactSearchSlot slot_;
   std::string type_search_;
   std::string check_gap_;
   bool roles_assigned_ = false;

@@ -38,9 +38,22 @@ void AddContactProcessesToPython(py::module_& m) {
 
   py::class_<ContactSearchProcess>(m, "ContactSearchProcess",
                                    "Contact search of one interface slot: creates the pair conditions.")
-      .def(py::init<ModelPart&, ModelPart&, Parameters>(), py::arg("root"), py::arg("interface"),
-           py::arg("settings"), py::keep_alive<1, 2>(), py::keep_alive<1, 3>())
-      .def_static("GetDefaultParameters", &ContactSearchProcess::GetDefaultParameters)
+      .def(py::init([](ModelPart& root, ModelPart& interface, Parameters search_parameters, std::string slot,
+                       std::string condition_name, bool predefined_master_slave, int property_id,
+                       std::string final_string) {
+             return std::make_unique<ContactSearchProcess>(
+                 root, interface, std::move(search_parameters),
+                 ContactSearchSlot{std::move(slot), std::move(condition_name), std::move(final_string),
+                                   predefined_master_slave, property_id});
+           }),
+           py::arg("root"), py::arg("interface"), py::arg("search_parameters"), py::arg("slot") = "0",
+           py::arg("condition_name") = ContactSearchSlot{}.condition_name, py::arg("predefined_master_slave") = true,
+           py::arg("property_id") = 0, py::arg("final_string") = "", py::keep_alive<1, 2>(), py::keep_alive<1, 3>(),
+           "search_parameters: the contact process' block (validated here); slot: the interface slot; "
+           "condition_name: pair-condition name stem; predefined_master_slave: roles from assume_master_slave; "
+           "property_id: properties of the pairs (0: the slave condition's).")
+      .def_static("GetDefaultParameters", &ContactSearchProcess::GetDefaultParameters,
+                  "Kratos' search_parameters with their defaults.")
       .def(
           "UpdateMortarConditions",
           [](ContactSearchProcess& self) {
@@ -68,8 +81,11 @@ void AddContactProcessesToPython(py::module_& m) {
 
   py::class_<ALMVariablesCalculationProcess>(m, "ALMVariablesCalculationProcess",
                                              "Automatic ALM penalty and scale factor (thesis eq. 4.11).")
-      .def(py::init<ModelPart&, ModelPart&, Parameters>(), py::arg("root"), py::arg("interface"),
-           py::arg("settings"), py::keep_alive<1, 2>(), py::keep_alive<1, 3>())
+      .def(py::init<ModelPart&, ModelPart&, Parameters, double, double>(), py::arg("root"), py::arg("interface"),
+           py::arg("settings"), py::arg("penalty_multiplier") = 1.0, py::arg("penalty_floor") = 1.0,
+           py::keep_alive<1, 2>(), py::keep_alive<1, 3>(),
+           "settings: the contact process' advance_ALM_parameters; penalty_multiplier / penalty_floor: 1 / 1 "
+           "for ALM, 1e4 / 1e16 for penalty.")
       .def_static("GetDefaultParameters", &ALMVariablesCalculationProcess::GetDefaultParameters)
       .def("Execute", &ALMVariablesCalculationProcess::Execute)
       .def("Penalty", &ALMVariablesCalculationProcess::Penalty)

@@ -52,6 +52,7 @@ PYBIND11_MODULE(_core, m) {
   mc::python::AddContactProcessesToPython(m);
   mc::python::AddContactStrategiesToPython(m);
   mc::python::AddContactLinearSolversToPython(m);
+  mc::python::AddContactFormulationsToPython(m);
   mc::python::ExportRegisteredNames(m);
   m.def("ExportRegisteredNames", [m]() mutable { mc::python::ExportRegisteredNames(m); },
         "Re-exports registered variables and flags as module attributes (after loading a plugin).");

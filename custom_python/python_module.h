@@ -27,6 +27,7 @@ void AddContactProcessesToPython(py::module_& m);
 void AddContactConditionsToPython(py::module_& m);
 void AddContactStrategiesToPython(py::module_& m);
 void AddContactLinearSolversToPython(py::module_& m);
+void AddContactFormulationsToPython(py::module_& m);
 void ExportRegisteredNames(py::module_& m);
 
 /// Runs f with the GIL released: strategy calls assemble and solve in OpenMP threads, and the

@@ -54,6 +54,9 @@ MC_DECLARE_VARIABLE(double, MAX_GAP_FACTOR);
 MC_DECLARE_VARIABLE(double, MAX_GAP_THRESHOLD);
 MC_DECLARE_VARIABLE(int, INNER_LOOP_ITERATION);
 MC_DECLARE_VARIABLE(double, REACTION_CHECK_STIFFNESS_FACTOR);
+/// ProcessInfo: the registered mortar_type of the contact solver (ContactFormulation), which the
+/// contact processes check theirs against.
+MC_DECLARE_VARIABLE(std::string, MORTAR_TYPE);
 
 // Properties.
 MC_DECLARE_VARIABLE(int, INTEGRATION_ORDER_CONTACT);

@@ -11,7 +11,7 @@ namespace mc {
 class ALMFrictionlessMortarConvergenceCriteria : public BaseMortarConvergenceCriteria {
  public:
   explicit ALMFrictionlessMortarConvergenceCriteria(Parameters settings = Parameters())
-      : BaseMortarConvergenceCriteria(std::move(settings), "alm_frictionless_mortar_criteria") {}
+      : BaseMortarConvergenceCriteria(std::move(settings)) {}
   std::string Name() const override { return "alm_frictionless_mortar_criteria"; }
 
  protected:

@@ -25,21 +25,17 @@ void RecomputeWeightedGap(ModelPart& model_part, ModelPart& contact_part, Mortar
 
 }  // namespace
 
-std::string BaseMortarConvergenceCriteria::DefaultParametersJson(const std::string& name) {
-  return Concat(R"({
-      "name"                        : ")",
-                name, R"(",
+Parameters BaseMortarConvergenceCriteria::GetDefaultParameters() {
+  return Parameters(R"({
       "compute_dynamic_factor"      : false,
       "gidio_debug"                 : false,
-      "pure_slip"                   : false,
       "print_convergence_criterion" : false
   })");
 }
 
-BaseMortarConvergenceCriteria::BaseMortarConvergenceCriteria(Parameters settings, const std::string& name) {
-  settings.ValidateAndAssignDefaults(Parameters(DefaultParametersJson(name)));
+BaseMortarConvergenceCriteria::BaseMortarConvergenceCriteria(Parameters settings) {
+  settings.AddMissingParameters(GetDefaultParameters());
   compute_dynamic_factor_ = settings["compute_dynamic_factor"].GetBool();
-  pure_slip_ = settings["pure_slip"].GetBool();
   print_ = settings["print_convergence_criterion"].GetBool();
 }
 

@@ -24,16 +24,15 @@ namespace mc {
 ///    (simplified semi-smooth Newton, the set is frozen afterwards). Converged when no node
 ///    changed; the answer is also stored in ProcessInfo[ACTIVE_SET_CONVERGED].
 ///
-/// Settings: `compute_dynamic_factor` (false), `gidio_debug` (false: accepted; per-iteration
-/// dumps are not written by this version), `pure_slip` (false, frictional only),
+/// Settings, keys of Kratos' contact_settings: `compute_dynamic_factor` (false), `gidio_debug`
+/// (false: accepted; per-iteration dumps are not written by this version),
 /// `print_convergence_criterion` (false).
 class BaseMortarConvergenceCriteria : public ConvergenceCriteria {
  public:
-  static std::string DefaultParametersJson(const std::string& name);
-  /// `name` is the Name() of the concrete class (the default of the "name" key).
-  BaseMortarConvergenceCriteria(Parameters settings, const std::string& name);
-  explicit BaseMortarConvergenceCriteria(Parameters settings = Parameters())
-      : BaseMortarConvergenceCriteria(std::move(settings), "base_mortar_criteria") {}
+  static Parameters GetDefaultParameters();
+  /// Reads its keys from `settings` (the solver's validated contact_settings, or any object:
+  /// missing keys are added with their defaults; the owner of the block rejects unknown ones).
+  explicit BaseMortarConvergenceCriteria(Parameters settings = Parameters());
 
   std::string Name() const override { return "base_mortar_criteria"; }
   bool PreCriteria(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A, const Vector& dx,
@@ -49,7 +48,6 @@ class BaseMortarConvergenceCriteria : public ConvergenceCriteria {
   const ActiveSetUtilities::ChangedNodes& LastChangedNodes() const noexcept { return changed_; }
   std::size_t LastChangeCount() const noexcept { return changed_.size(); }
   bool ComputeDynamicFactor() const noexcept { return compute_dynamic_factor_; }
-  bool PureSlip() const noexcept { return pure_slip_; }
   bool PrintConvergenceCriterion() const noexcept { return print_; }
 
  protected:
@@ -64,7 +62,6 @@ class BaseMortarConvergenceCriteria : public ConvergenceCriteria {
   std::shared_ptr<MortarUpdater> updater_;
   ActiveSetUtilities::ChangedNodes changed_;
   bool compute_dynamic_factor_ = false;
-  bool pure_slip_ = false;
   bool print_ = false;
 };
 

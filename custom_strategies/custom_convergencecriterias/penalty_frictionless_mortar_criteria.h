@@ -11,7 +11,7 @@ namespace mc {
 class PenaltyFrictionlessMortarConvergenceCriteria : public BaseMortarConvergenceCriteria {
  public:
   explicit PenaltyFrictionlessMortarConvergenceCriteria(Parameters settings = Parameters())
-      : BaseMortarConvergenceCriteria(std::move(settings), "penalty_frictionless_mortar_criteria") {}
+      : BaseMortarConvergenceCriteria(std::move(settings)) {}
   std::string Name() const override { return "penalty_frictionless_mortar_criteria"; }
 
  protected:

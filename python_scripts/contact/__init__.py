@@ -24,24 +24,5 @@ def register_contact_processes(registry: dict) -> None:
         registry[(CONTACT_MODULE, name)] = cls
 
 
-def check_contact_pairing(solver_settings: "_core.Parameters", processes) -> None:
-    """Start-up check of spec 2.10: each ALM / penalty contact process needs the matching
-    ``contact_settings.mortar_type`` (substring dispatch as in Kratos, so suffixes such as
-    ``WithNormalUpdate`` pass). Call it once the solver settings and the processes exist."""
-    mortar_type = ""
-    if solver_settings.Has("contact_settings") and solver_settings["contact_settings"].Has("mortar_type"):
-        mortar_type = solver_settings["contact_settings"]["mortar_type"].GetString()
-    for process in processes:
-        if not isinstance(process, ALMContactProcess):
-            continue
-        expected = process.mortar_type
-        compatible = mortar_type.startswith(expected) and (
-            "Components" in expected or "Components" not in mortar_type)
-        if not compatible:
-            raise _core.InputError(
-                f"{process.python_module} with contact_type '{process.settings['contact_type'].GetString()}' needs "
-                f"solver_settings.contact_settings.mortar_type \"{expected}\", got \"{mortar_type}\"")
-
-
 __all__ = ["ALMContactProcess", "CONTACT_PROCESSES", "ExplicitPenaltyContactProcess", "MPCContactProcess",
-           "MeshTyingProcess", "PenaltyContactProcess", "check_contact_pairing", "register_contact_processes"]
+           "MeshTyingProcess", "PenaltyContactProcess", "register_contact_processes"]

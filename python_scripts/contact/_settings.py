@@ -1,7 +1,9 @@
 """Defaults and input layouts shared by the contact processes (spec 4.1-4.8).
 
 Every process owns its defaults as JSON text built here, so the documented numbers live in one
-place; the per-process differences (spec 4.5-4.8) are applied on top of the common ones.
+place; the per-process differences (spec 4.5-4.8) are applied on top of the common ones. Blocks
+read by C++ classes take those classes' own defaults (search_parameters, the automatic ALM
+estimate).
 """
 from __future__ import annotations
 
@@ -11,31 +13,12 @@ from .. import _core
 
 SLOTS = [str(k) for k in range(10)]
 
-SEARCH_DEFAULTS = {
-    "type_search": "in_radius_with_obb",
-    "simple_search": False,
-    "adapt_search": False,
-    "search_factor": 3.5,
-    "active_check_factor": 0.01,
-    "max_number_results": 1000,
-    "bucket_size": 4,
-    "dynamic_search": False,
-    "static_check_movement": False,
-    "database_step_update": 1,
-    "normal_orientation_threshold": 1.0e-1,
-    "consider_gap_threshold": False,
-    "debug_mode": False,
-    "predict_correct_lagrange_multiplier": False,
-    "check_gap": "check_mapping",
-    "octree_search_parameters": {
-        "bounding_box_factor": 0.1,
-        "debug_obb": False,
-        "OBB_intersection_type": "SeparatingAxisTheorem",
-        "build_from_bounding_box": True,
-        "lower_bounding_box_coefficient": 0.0,
-        "higher_bounding_box_coefficient": 1.0,
-    },
-}
+
+
+def search_defaults() -> dict:
+    """Kratos' search_parameters, declared by the C++ search that reads them."""
+    return json.loads(_core.ContactSearchProcess.GetDefaultParameters().WriteJsonString())
+
 
 # Keys accepted and ignored by every process (spec 4.2).
 IGNORED_KEYS = {"help": "", "mesh_id": 0, "computing_model_part_name": ""}
@@ -65,7 +48,7 @@ def common_defaults() -> dict:
         "integration_order": 2,
         "consider_tessellation": False,
         "normal_check_proportion": 0.1,
-        "search_parameters": json.loads(json.dumps(SEARCH_DEFAULTS)),
+        "search_parameters": search_defaults(),
     }
 
 
@@ -89,15 +72,15 @@ def alm_defaults() -> dict:
             "max_gap_factor": 1.0e2,
             "logistic_exponent_factor": 6.0,
         },
+        # manual_ALM, penalty and scale_factor are the process'; the keys of the automatic
+        # estimate are the C++ calculation's.
         "advance_ALM_parameters": {
             "manual_ALM": False,
-            "stiffness_factor": 1.0,
-            "penalty_scale_factor": 1.0,
-            "use_scale_factor": True,
             "penalty": 1.0e-12,
             "scale_factor": 1.0,
             "adapt_penalty": False,
             "max_gap_factor": 1.0e-3,
+            **json.loads(_core.ALMVariablesCalculationProcess.GetDefaultParameters().WriteJsonString()),
         },
         "alternative_formulations": {"axisymmetric": False},
     }

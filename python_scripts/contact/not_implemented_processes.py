@@ -2,8 +2,6 @@
 whose formulation arrives with later issues: explicit penalty, MPC contact, mesh tying."""
 from __future__ import annotations
 
-import json
-
 from .. import _core
 from . import _settings
 from .search_base_process import NotImplementedContactProcess
@@ -67,7 +65,7 @@ class MeshTyingProcess(NotImplementedContactProcess):
 
     @classmethod
     def GetDefaultParameters(cls) -> "_core.Parameters":
-        search = json.loads(json.dumps(_settings.SEARCH_DEFAULTS))
+        search = _settings.search_defaults()
         search["database_step_update"] = 999999999
         del search["octree_search_parameters"]["build_from_bounding_box"]
         for key in ("simple_search", "adapt_search", "static_check_movement", "normal_orientation_threshold",
@@ -96,7 +94,7 @@ class MeshTyingProcess(NotImplementedContactProcess):
         settings.ValidateAndAssignDefaults(self.GetDefaultParameters())
         if user_search:
             settings["search_parameters"].RecursivelyValidateAndAssignDefaults(
-                _settings.to_parameters(_settings.SEARCH_DEFAULTS))
+                _core.ContactSearchProcess.GetDefaultParameters())
         for key in ("mesh_tying_model_part", "assume_master_slave", "mesh_tying_property_ids"):
             settings[key].ValidateAndAssignDefaults(self.GetDefaultParameters()[key])
         variable = settings["variable_name"].GetString()

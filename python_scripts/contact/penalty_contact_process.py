@@ -19,18 +19,9 @@ class PenaltyContactProcess(ALMContactProcess):
     """No multiplier DoFs; the scale factor is unused."""
 
     python_module = "penalty_contact_process"
-    method = "Penalty"
-    mortar_types = {"Frictionless": "PenaltyContactFrictionless", "Frictional": "PenaltyContactFrictional",
-                    "FrictionalPureSlip": "PenaltyContactFrictionalPureSlip"}
     penalty_multiplier = 1.0e4
     penalty_floor = 1.0e16
 
     @classmethod
     def GetDefaultParameters(cls) -> "_core.Parameters":
         return _settings.to_parameters(penalty_defaults())
-
-    def _check_types(self) -> None:
-        if self.settings["contact_type"].GetString().startswith("FrictionlessComponents"):
-            raise _core.InputError(f"{self.python_module}: contact_type 'FrictionlessComponents' exists only for "
-                                   "alm_contact_process; use 'Frictionless'")
-        super()._check_types()

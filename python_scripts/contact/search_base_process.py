@@ -66,25 +66,6 @@ class SearchBaseProcess(Process):
             slots.append(("0", [], slaves["0"].GetStringArray(), ids["0"].GetInt(), mus["0"].GetDouble()))
         return slots
 
-    def condition_stem(self) -> str:
-        raise NotImplementedError
-
-    def search_settings(self, slot: str, slaves: list[str], property_id: int) -> "_core.Parameters":
-        """The keys forwarded to the C++ search (spec 4.3)."""
-        sp = self.settings["search_parameters"]
-        forwarded = _core.Parameters()
-        for key in ("simple_search", "type_search", "check_gap", "bucket_size", "search_factor", "dynamic_search",
-                    "static_check_movement", "consider_gap_threshold", "normal_orientation_threshold", "debug_mode",
-                    "active_check_factor"):
-            forwarded.AddValue(key, sp[key])
-        forwarded.AddValue("allocation_size", sp["max_number_results"])
-        forwarded.AddValue("bounding_box_factor", sp["octree_search_parameters"]["bounding_box_factor"])
-        forwarded.AddValue("condition_name", _core.Parameters(f'"{self.condition_stem()}"'))
-        forwarded.AddValue("id_name", _core.Parameters(f'"{slot}"'))
-        forwarded.AddValue("predefined_master_slave", _core.Parameters("true" if slaves else "false"))
-        forwarded.AddValue("contact_property_id", _core.Parameters(str(property_id)))
-        return forwarded
-
     # Hooks ---------------------------------------------------------------------------------------
     def ExecuteInitialize(self) -> None:
         # Imported here: the processes package registers this one on import.
@@ -107,7 +88,8 @@ class SearchBaseProcess(Process):
             properties.SetValue(_core.CONSIDER_TESSELLATION, self.settings["consider_tessellation"].GetBool())
             properties.SetValue(_core.ACTIVE_CHECK_FACTOR, sp["active_check_factor"].GetDouble())
             self.searches.append(_core.ContactSearchProcess(
-                self.root, interface, self.search_settings(slot, slaves, properties.Id)))
+                self.root, interface, sp, slot=slot, condition_name=self.condition_stem,
+                predefined_master_slave=bool(slaves), property_id=properties.Id))
 
     def check_solver_variables(self) -> None:
         """Hook: the start-up check of the mortar_type pairing (spec 2.10)."""

@@ -6,11 +6,11 @@ contact factory does (spec 3.2):
   wraps it with the mortar (active-set) criterion in a ``MortarAndConvergenceCriteria``, which
   prints the convergence table (``fancy_convergence_criterion``) and, with
   ``condn_convergence_criterion``, the condition number;
-- any other name builds the structural criterion (spec 3.1); when ``mortar_type`` contains
-  ``ALMContact`` or ``MeshTying`` it is ANDed with the mortar criterion (no table).
+- any other name builds the structural criterion (spec 3.1); for a formulation with multipliers
+  it is ANDed with the mortar criterion (no table).
 
-Names are matched case-insensitively. The mortar criterion follows ``mortar_type`` by substring,
-as Kratos does, so suffixes such as ``WithNormalUpdate`` keep working.
+Names are matched case-insensitively. The mortar criterion and the multiplier blocks are the
+formulation's (``ContactFormulation``).
 """
 from __future__ import annotations
 
@@ -51,42 +51,6 @@ def _value(settings, key, kind):
     return getattr(settings[key], "Get" + kind)()
 
 
-def mortar_criterion_class(mortar_type: str, core=None):
-    """The mortar (active-set) criterion class of ``mortar_type`` (spec 3.3), or None for ""."""
-    core = _core_module(core)
-    if not mortar_type:
-        return None
-    if "ALMContactFrictionlessComponents" in mortar_type:
-        return core.ALMFrictionlessComponentsMortarConvergenceCriteria
-    if "ALMContactFrictionless" in mortar_type:
-        return core.ALMFrictionlessMortarConvergenceCriteria
-    if "PenaltyContactFrictionless" in mortar_type:
-        return core.PenaltyFrictionlessMortarConvergenceCriteria
-    if "MeshTying" in mortar_type:
-        return core.MeshTyingMortarConvergenceCriteria
-    if "ContactFrictional" in mortar_type:
-        raise core.NotImplementedFeatureError(
-            f"contact_settings.mortar_type: \"{mortar_type}\": frictional contact is not implemented yet; "
-            "use ALMContactFrictionless, ALMContactFrictionlessComponents or PenaltyContactFrictionless")
-    valid = ["ALMContactFrictionless", "ALMContactFrictionlessComponents", "ALMContactFrictional",
-             "ALMContactFrictionalPureSlip", "PenaltyContactFrictionless", "PenaltyContactFrictional",
-             "ScalarMeshTying", "ComponentsMeshTying"]
-    raise core.InputError(f"contact_settings.mortar_type: unknown value \"{mortar_type}\"{_nearest(mortar_type, valid)}")
-
-
-def _mortar_criterion(solver_settings, core):
-    contact = _contact_settings(solver_settings)
-    mortar_type = _value(contact, "mortar_type", "String")
-    cls = mortar_criterion_class(mortar_type, core)
-    if cls is None:
-        return None
-    if cls is core.MeshTyingMortarConvergenceCriteria:
-        return cls()
-    settings = {key: _value(contact, key, "Bool")
-                for key in ("print_convergence_criterion", "compute_dynamic_factor", "gidio_debug")}
-    return cls(core.Parameters(json.dumps(settings)))
-
-
 def _block_criterion(cls, solver_settings, blocks, core):
     """``cls`` with the tolerances of ``blocks`` [(block keys, _INCREMENT or _RESIDUAL), ...]:
     displacement keys from solver_settings, the others from contact_settings."""
@@ -100,12 +64,8 @@ def _block_criterion(cls, solver_settings, blocks, core):
     return cls(core.Parameters(json.dumps(settings)))
 
 
-def _contact_mechanical_criterion(name, solver_settings, core):
-    mortar_type = _value(_contact_settings(solver_settings), "mortar_type", "String")
-    if not mortar_type:
-        raise core.InputError(f"solver_settings.convergence_criterion: \"{name}\" needs "
-                              "contact_settings.mortar_type (e.g. \"ALMContactFrictionless\")")
-    if "Penalty" in mortar_type:
+def _contact_mechanical_criterion(name, solver_settings, formulation, core):
+    if formulation.multiplier_blocks == 0:
         # Penalty formulations have no multipliers: displacement (and rotation) blocks only.
         def displacement():
             return _block_criterion(core.DisplacementContactCriteria, solver_settings,
@@ -117,11 +77,6 @@ def _contact_mechanical_criterion(name, solver_settings, core):
 
         mixed = lambda: residual(with_rotation=False)  # noqa: E731 (Kratos reuses the residual criterion)
     else:
-        if "ALMContactFrictional" in mortar_type:
-            raise core.NotImplementedFeatureError(
-                f"solver_settings.convergence_criterion \"{name}\" with mortar_type \"{mortar_type}\": the "
-                "frictional contact criteria are not implemented yet")
-
         def displacement():
             return _block_criterion(core.DisplacementLagrangeMultiplierContactCriteria, solver_settings,
                                     [(_DISPLACEMENT, _INCREMENT), (_ROTATION, _INCREMENT),
@@ -157,8 +112,10 @@ def _structural_criterion(name, solver_settings, core):
             "or_criterion": lambda: core.OrCriteria(residual(), displacement())}[name]()
 
 
-def create_contact_convergence_criteria(solver_settings, echo_level: int = 0, mortar_updater=None, core=None):
-    """The convergence criterion of a contact solver from its validated ``solver_settings``.
+def create_contact_convergence_criteria(solver_settings, formulation, echo_level: int = 0, mortar_updater=None,
+                                        core=None):
+    """The convergence criterion of a contact solver from its validated ``solver_settings`` and its
+    ``formulation`` (``ContactFormulation``: the active-set criterion and the multiplier blocks).
 
     ``mortar_updater`` (a ``MortarUpdater``) is handed to the mortar criterion; it can also be
     set later with ``criteria.SetMortarUpdater`` on the returned ``MortarAndConvergenceCriteria``.
@@ -174,19 +131,19 @@ def create_contact_convergence_criteria(solver_settings, echo_level: int = 0, mo
                                               "which is not implemented")
     contact = _contact_settings(solver_settings)
     if name in CONTACT_CRITERIA:
-        mechanical = _contact_mechanical_criterion(name, solver_settings, core)
+        mechanical = _contact_mechanical_criterion(name, solver_settings, formulation, core)
         criteria = core.MortarAndConvergenceCriteria(
-            mechanical, _mortar_criterion(solver_settings, core),
+            mechanical, formulation.CreateActiveSetCriterion(contact),
             print_convergence_criterion=_value(contact, "print_convergence_criterion", "Bool"),
             condition_number=_value(contact, "condn_convergence_criterion", "Bool"),
             print_table=_value(contact, "fancy_convergence_criterion", "Bool"))
     else:
         criteria = _structural_criterion(name, solver_settings, core)
-        mortar_type = _value(contact, "mortar_type", "String")
-        if "ALMContact" in mortar_type or "MeshTying" in mortar_type:
-            # The plain AND of Kratos, with the residual refreshed after the update: a
-            # mortar-and criterion without its table.
-            criteria = core.MortarAndConvergenceCriteria(criteria, _mortar_criterion(solver_settings, core),
+        if formulation.multiplier_blocks > 0:
+            # As Kratos, the formulations with multipliers AND the structural criterion with their
+            # active-set criterion (with the residual refreshed after the update: a mortar-and
+            # criterion without its table); the penalty formulations keep the structural one alone.
+            criteria = core.MortarAndConvergenceCriteria(criteria, formulation.CreateActiveSetCriterion(contact),
                                                          print_convergence_criterion=False, condition_number=False,
                                                          print_table=False)
     if mortar_updater is not None and hasattr(criteria, "SetMortarUpdater"):

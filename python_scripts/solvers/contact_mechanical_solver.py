@@ -1,43 +1,20 @@
 """The contact solver (spec 2.9, 2.10): the structural solver plus the variables and DoFs of the
-``mortar_type``, the contact convergence criteria and the semi-smooth Newton contact strategy."""
+formulation registered under ``contact_settings.mortar_type`` (``ContactFormulation``), the contact
+convergence criteria and the semi-smooth Newton contact strategy."""
 from __future__ import annotations
 
 from .. import _core
-from ..utilities import nearest, warn
+from ..utilities import warn
 from ..contact_solvers import create_contact_convergence_criteria, create_contact_strategy
 from .mechanical_solver import MechanicalSolver
-
-#: mortar_type -> (extra historical variables, (DoF, reaction) pairs)
-MORTAR_TYPES = {
-    "ALMContactFrictionless": (["LAGRANGE_MULTIPLIER_CONTACT_PRESSURE", "WEIGHTED_GAP", "WEIGHTED_SCALAR_RESIDUAL"],
-                               [("LAGRANGE_MULTIPLIER_CONTACT_PRESSURE", "WEIGHTED_SCALAR_RESIDUAL")]),
-    "ALMContactFrictionlessComponents": (
-        ["VECTOR_LAGRANGE_MULTIPLIER", "WEIGHTED_GAP", "WEIGHTED_VECTOR_RESIDUAL"],
-        [(f"VECTOR_LAGRANGE_MULTIPLIER_{c}", f"WEIGHTED_VECTOR_RESIDUAL_{c}") for c in "XYZ"]),
-    "PenaltyContactFrictionless": (["WEIGHTED_GAP"], []),
-}
-KNOWN_MORTAR_TYPES = ("ALMContactFrictionless", "ALMContactFrictionlessComponents", "ALMContactFrictional",
-                      "ALMContactFrictionalPureSlip", "PenaltyContactFrictionless", "PenaltyContactFrictional",
-                      "PenaltyContactFrictionalPureSlip", "ScalarMeshTying", "ComponentsMeshTying")
-
 
 class ContactMechanicalSolver(MechanicalSolver):
     #: contact criteria names are resolved by the contact factory (spec 3.2)
     criteria_names = None
 
     def __init__(self, model, settings, **kwargs):
-        contact = settings["contact_settings"]
-        mortar_type = contact["mortar_type"].GetString()
-        # Kratos dispatches on substrings, so suffixes such as "WithNormalUpdate" are tolerated.
-        base = next((t for t in sorted(KNOWN_MORTAR_TYPES, key=len, reverse=True) if mortar_type.startswith(t)), None)
-        if base is None:
-            raise _core.InputError(f"{contact.Where()}.mortar_type: unknown \"{mortar_type}\""
-                                   f"{nearest(mortar_type, KNOWN_MORTAR_TYPES)}")
-        if base not in MORTAR_TYPES:
-            raise _core.NotImplementedFeatureError(
-                f"{contact.Where()}.mortar_type: \"{mortar_type}\" is not implemented yet (available: "
-                f"{', '.join(MORTAR_TYPES)})")
-        self.mortar_type = base
+        mortar_type = settings["contact_settings"]["mortar_type"]
+        self.formulation = _core.ContactFormulation.Get(mortar_type.GetString(), mortar_type.Where())
         # The DoF set follows the contact pairs, which change from step to step.
         settings["clear_storage"].SetBool(True)
         settings["reform_dofs_at_each_step"].SetBool(True)
@@ -46,14 +23,14 @@ class ContactMechanicalSolver(MechanicalSolver):
 
     def AddVariables(self) -> None:
         super().AddVariables()
-        variables, _ = MORTAR_TYPES[self.mortar_type]
-        for name in ["NORMAL", "NODAL_H", *variables]:
+        for name in ["NORMAL", "NODAL_H", *self.formulation.variables]:
             self.main_model_part.AddNodalSolutionStepVariable(_core.GetVariable(name))
+        # The contact processes check their formulation against the solver's.
+        self.main_model_part.ProcessInfo.SetValue(_core.MORTAR_TYPE, self.formulation.mortar_type)
 
     def AddDofs(self) -> None:
         super().AddDofs()
-        _, dofs = MORTAR_TYPES[self.mortar_type]
-        for dof, reaction in dofs:
+        for dof, reaction in self.formulation.dofs:
             _core.VariableUtils.AddDof(self.main_model_part, _core.GetVariable(dof), _core.GetVariable(reaction))
 
     def set_sub_step_callbacks(self, initialize, finalize) -> None:
@@ -68,7 +45,7 @@ class ContactMechanicalSolver(MechanicalSolver):
                 f"{s.Where()}: explicit contact solvers are not implemented yet")
         updater = _core.ContactMortarUpdater()
         self.mortar_updater = updater  # its timings are read by the benchmarks
-        criteria = create_contact_convergence_criteria(s, self.echo_level, updater)
+        criteria = create_contact_convergence_criteria(s, self.formulation, self.echo_level, updater)
         linear_solver = self._create_contact_linear_solver()
         initialize, finalize = self.sub_step_callbacks
         return create_contact_strategy(part, s, self._create_scheme(part), linear_solver, criteria,
@@ -85,9 +62,8 @@ class ContactMechanicalSolver(MechanicalSolver):
                 settings.AddValue("scaling", _core.Parameters("false"))
             settings["scaling"].SetBool(True)
         linear_solver = _core.CreateLinearSolver(settings)
-        condensable = self.mortar_type == "ALMContactFrictionlessComponents"
         mixed = contact["mixed_ulm_solver_parameters"]
-        if condensable and contact["use_mixed_ulm_solver"].GetBool():
+        if self.formulation.condensable and contact["use_mixed_ulm_solver"].GetBool():
             if mixed["solver_type"].GetString() == "mixed_ulm_linear_solver":
                 return _core.CreateMixedULMLinearSolver(linear_solver)
             warn(f"{mixed.Where()}.solver_type: \"{mixed['solver_type'].GetString()}\" is not "

@@ -12,8 +12,7 @@ import pytest
 
 import mortarcontact as mc
 from mortarcontact import _core
-from mortarcontact.contact import (ALMContactProcess, MeshTyingProcess, PenaltyContactProcess,
-                                   check_contact_pairing)
+from mortarcontact.contact import ALMContactProcess, MeshTyingProcess, PenaltyContactProcess
 from mortarcontact.processes import PROCESS_REGISTRY, create_process
 
 IMPLEMENTED = {("alm_contact_process", "Frictionless"), ("penalty_contact_process", "Frictionless")}
@@ -86,7 +85,7 @@ def test_defaults_of_each_process():
     assert penalty["tangent_factor"].GetDouble() == 1.0e-3
     assert penalty["advance_ALM_parameters"]["penalty"].GetDouble() == 1.0e16
     assert penalty["advance_ALM_parameters"]["max_gap_factor"].GetDouble() == 5.0e-4
-    assert PenaltyContactProcess(_core.Model()).condition_stem() == "PenaltyFrictionlessMortarContactCondition"
+    assert PenaltyContactProcess(_core.Model()).condition_stem == "PenaltyFrictionlessMortarContactCondition"
 
 
 def test_mesh_tying_partial_search_parameters_come_from_the_base_defaults():
@@ -106,13 +105,36 @@ def test_not_yet_implemented_contact_types(contact_type):
 
 
 def test_mortar_type_pairing():
+    """The process checks its formulation against the one the solver registered (spec 2.10)."""
     process = ALMContactProcess(_core.Model(), _core.Parameters("{}"))
-    check_contact_pairing(_core.Parameters('{"contact_settings": {"mortar_type": "ALMContactFrictionless"}}'), [process])
-    for wrong in ("PenaltyContactFrictionless", "ALMContactFrictionlessComponents", ""):
-        with pytest.raises(mc.InputError, match='needs solver_settings.contact_settings.mortar_type '
-                                                 '"ALMContactFrictionless"'):
-            check_contact_pairing(_core.Parameters(json.dumps({"contact_settings": {"mortar_type": wrong}})),
-                                  [process])
+    process.root = _core.Model().CreateModelPart("Structure", 2)
+    info = process.root.GetProcessInfo()
+    info.SetValue(_core.MORTAR_TYPE, "ALMContactFrictionless")
+    process.check_solver_variables()
+    for wrong, found in (("PenaltyContactFrictionless", '"PenaltyContactFrictionless"'),
+                         ("ALMContactFrictionlessComponents", '"ALMContactFrictionlessComponents"'),
+                         ("", "none")):
+        info.SetValue(_core.MORTAR_TYPE, wrong)
+        with pytest.raises(mc.InputError, match=f'needs solver_settings.contact_settings.mortar_type '
+                                                 f'"ALMContactFrictionless"; found {found}'):
+            process.check_solver_variables()
+
+
+def test_formulations_are_registered_once():
+    names = _core.ContactFormulation.Names()
+    assert {"ALMContactFrictionless", "ALMContactFrictionlessComponents", "PenaltyContactFrictionless",
+            "ALMContactFrictional", "ScalarMeshTying"} <= set(names)
+    components = _core.ContactFormulation.Get("ALMContactFrictionlessComponents")
+    assert components.condensable and components.multiplier == "VECTOR_LAGRANGE_MULTIPLIER"
+    assert components.ConditionStem(True, False) == "ALMNVFrictionlessComponentsMortarContactCondition"
+    # Kratos dispatches on substrings: a suffix keeps the formulation.
+    assert _core.ContactFormulation.Get("ALMContactFrictionlessWithNormalUpdate").mortar_type == "ALMContactFrictionless"
+    with pytest.raises(mc.InputError, match="did you mean 'ALMContactFrictionless'"):
+        _core.ContactFormulation.Get("ALMContatFrictionless")
+    with pytest.raises(mc.NotImplementedFeatureError, match="ComponentsMeshTying.*mesh tying"):
+        _core.ContactFormulation.Get("ComponentsMeshTying")
+    assert _core.ContactFormulation.ContactTypes("penalty_contact_process") == [
+        "Frictional", "FrictionalPureSlip", "Frictionless"]
 
 
 needs_bindings = pytest.mark.skipif(
@@ -129,6 +151,7 @@ def test_alm_process_builds_interface_and_pairs(csma_cases):
         root.AddNodalSolutionStepVariable(var)
     _core.ReadModelPart(root, os.path.join(csma_cases, "ALM_frictionless_contact_test_2D",
                                            "hyper_simple_patch_test.mdpa"))
+    root.GetProcessInfo().SetValue(_core.MORTAR_TYPE, "ALMContactFrictionless")  # as the contact solver does
     process = ALMContactProcess(model, _core.Parameters(
         '{"assume_master_slave": {"0": ["Parts_Parts_Auto2"]}, "contact_model_part": {"0": ["Contact_Part"]}}'))
     process.ExecuteInitialize()

@@ -431,8 +431,9 @@ TEST(NormalVariationConditions, PairsFromTheContactSearch) {
       node->Set(MASTER, !slave);
     }
   }
-  ContactSearchProcess search(in.root, in.contact,
-                              Parameters(R"({"condition_name": "ALMNVFrictionlessMortarContactCondition"})"));
+  ContactSearchSlot slot;
+  slot.condition_name = "ALMNVFrictionlessMortarContactCondition";
+  ContactSearchProcess search(in.root, in.contact, Parameters(), slot);
   const ContactSearchStatistics stats = search.UpdateMortarConditions();
   EXPECT_EQ(stats.pairs, 4u);  // the slave segments over the master, with the masters they overlap
   Pairs pairs;

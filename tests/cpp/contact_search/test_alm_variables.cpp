@@ -41,15 +41,14 @@ TEST(ALMVariables, PenaltyVariantAndFloors) {
   Model model;
   ModelPart& sub = Patch(model);
   ModelPart& root = sub.GetRootModelPart();
-  ALMVariablesCalculationProcess penalty(root, sub, Parameters(R"({"penalty_multiplier": 1e4, "penalty_floor": 1e16,
-                                                                   "use_scale_factor": false})"));
+  ALMVariablesCalculationProcess penalty(root, sub, Parameters(R"({"use_scale_factor": false})"), 1e4, 1e16);
   penalty.Execute();
   EXPECT_NEAR(penalty.Penalty(), 1e4 * 1.0e5 / 0.999, 1e-2);
   EXPECT_EQ(penalty.ScaleFactor(), 1.0);
   // Without YOUNG_MODULUS the estimate is zero: the floors apply.
   root.GetProperties(1).SetValue(YOUNG_MODULUS, 0.0);
   root.GetProperties(2).SetValue(YOUNG_MODULUS, 0.0);
-  ALMVariablesCalculationProcess floors(root, sub, Parameters(R"({"penalty_multiplier": 1e4, "penalty_floor": 1e16})"));
+  ALMVariablesCalculationProcess floors(root, sub, Parameters("{}"), 1e4, 1e16);
   floors.Execute();
   EXPECT_EQ(floors.Penalty(), 1e16);
   EXPECT_EQ(floors.ScaleFactor(), 1.0);

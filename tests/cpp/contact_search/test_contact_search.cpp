@@ -133,7 +133,9 @@ TEST(ContactSearch, GapChecksOnAdjacentFaces) {
   ContactInterfaceSettings settings;
   settings.parts = {"Contact_Part"};
   ModelPart& sub = ContactInterfaceBuilder(root).Build(settings);
-  ContactSearchProcess search(root, sub, SearchSettings(R"("predefined_master_slave": false)"));
+  ContactSearchSlot automatic;
+  automatic.predefined_master_slave = false;
+  ContactSearchProcess search(root, sub, SearchSettings(), automatic);
   const ContactSearchStatistics stats = search.UpdateMortarConditions();
   EXPECT_EQ(stats.pairs, 1u);
   EXPECT_EQ(stats.slave_conditions, 1u);

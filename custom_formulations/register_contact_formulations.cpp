@@ -1,0 +1,103 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "custom_formulations/register_contact_formulations.h"
+
+#include <mutex>
+#include <tuple>
+#include <vector>
+
+#include "custom_formulations/contact_formulation.h"
+#include "custom_strategies/custom_convergencecriterias/alm_frictionless_components_mortar_criteria.h"
+#include "custom_strategies/custom_convergencecriterias/alm_frictionless_mortar_criteria.h"
+#include "custom_strategies/custom_convergencecriterias/mesh_tying_mortar_criteria.h"
+#include "custom_strategies/custom_convergencecriterias/penalty_frictionless_mortar_criteria.h"
+
+namespace mc {
+
+namespace {
+
+template <class TCriterion>
+ContactFormulation::CriterionFactory Criterion() {
+  return [](Parameters settings) { return std::make_shared<TCriterion>(std::move(settings)); };
+}
+
+void RegisterAll() {
+  using D = ContactFormulation::Description;
+  const std::vector<std::pair<std::string, std::string>> vector_multiplier = {
+      {"VECTOR_LAGRANGE_MULTIPLIER_X", "WEIGHTED_VECTOR_RESIDUAL_X"},
+      {"VECTOR_LAGRANGE_MULTIPLIER_Y", "WEIGHTED_VECTOR_RESIDUAL_Y"},
+      {"VECTOR_LAGRANGE_MULTIPLIER_Z", "WEIGHTED_VECTOR_RESIDUAL_Z"}};
+
+  ContactFormulation::Register(D{
+      .mortar_type = "ALMContactFrictionless",
+      .process = "alm_contact_process",
+      .contact_type = "Frictionless",
+      .enforcement = "ALM",
+      .contact_kind = "Frictionless",
+      .variables = {"LAGRANGE_MULTIPLIER_CONTACT_PRESSURE", "WEIGHTED_GAP", "WEIGHTED_SCALAR_RESIDUAL"},
+      .dofs = {{"LAGRANGE_MULTIPLIER_CONTACT_PRESSURE", "WEIGHTED_SCALAR_RESIDUAL"}},
+      .multiplier = "LAGRANGE_MULTIPLIER_CONTACT_PRESSURE",
+      .multiplier_blocks = 1,
+      // The scalar system's multiplier columns are n . D: the thesis solves it monolithically.
+      .condensable = false,
+      .axisymmetric = true,
+      .active_set_criterion = Criterion<ALMFrictionlessMortarConvergenceCriteria>(),
+  });
+  ContactFormulation::Register(D{
+      .mortar_type = "ALMContactFrictionlessComponents",
+      .process = "alm_contact_process",
+      .contact_type = "FrictionlessComponents",
+      .enforcement = "ALM",
+      .contact_kind = "FrictionlessComponents",
+      .variables = {"VECTOR_LAGRANGE_MULTIPLIER", "WEIGHTED_GAP", "WEIGHTED_VECTOR_RESIDUAL"},
+      .dofs = vector_multiplier,
+      .multiplier = "VECTOR_LAGRANGE_MULTIPLIER",
+      .multiplier_blocks = 1,
+      .condensable = true,
+      .axisymmetric = false,
+      .active_set_criterion = Criterion<ALMFrictionlessComponentsMortarConvergenceCriteria>(),
+  });
+  ContactFormulation::Register(D{
+      .mortar_type = "PenaltyContactFrictionless",
+      .process = "penalty_contact_process",
+      .contact_type = "Frictionless",
+      .enforcement = "Penalty",
+      .contact_kind = "Frictionless",
+      .variables = {"WEIGHTED_GAP"},
+      .dofs = {},
+      .multiplier = "",
+      .multiplier_blocks = 0,
+      .condensable = false,
+      .axisymmetric = true,
+      .active_set_criterion = Criterion<PenaltyFrictionlessMortarConvergenceCriteria>(),
+  });
+
+  // Known names, not implemented yet: asking for them is a clear NotImplementedError.
+  const std::string friction = "frictional mortar contact";
+  for (const auto& [mortar_type, process, contact_type, enforcement] :
+       std::vector<std::tuple<std::string, std::string, std::string, std::string>>{
+           {"ALMContactFrictional", "alm_contact_process", "Frictional", "ALM"},
+           {"ALMContactFrictionalPureSlip", "alm_contact_process", "FrictionalPureSlip", "ALM"},
+           {"PenaltyContactFrictional", "penalty_contact_process", "Frictional", "Penalty"},
+           {"PenaltyContactFrictionalPureSlip", "penalty_contact_process", "FrictionalPureSlip", "Penalty"}})
+    ContactFormulation::Register(D{.mortar_type = mortar_type,
+                                   .process = process,
+                                   .contact_type = contact_type,
+                                   .enforcement = enforcement,
+                                   .contact_kind = "Frictional",
+                                   .not_implemented = friction});
+  for (const std::string& mortar_type : {"ScalarMeshTying", "ComponentsMeshTying"})
+    ContactFormulation::Register(D{.mortar_type = mortar_type,
+                                   .process = "mesh_tying_process",
+                                   .active_set_criterion =
+                                       [](Parameters) { return std::make_shared<MeshTyingMortarConvergenceCriteria>(); },
+                                   .not_implemented = "mortar mesh tying"});
+}
+
+}  // namespace
+
+void RegisterContactFormulations() {
+  static std::once_flag once;
+  std::call_once(once, RegisterAll);
+}
+
+}  // namespace mc
