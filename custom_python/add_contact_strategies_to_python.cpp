@@ -135,7 +135,9 @@ void AddContactStrategiesToPython(py::module_& m) {
       m, "BaseMortarConvergenceCriteria", "base_mortar_criteria: mortar quantities refresh, no active set.")
       .def(py::init<Parameters>(), py::arg("settings") = Parameters())
       .def("SetMortarUpdater", &BaseMortarConvergenceCriteria::SetMortarUpdater, py::arg("updater"))
-      .def("LastChangedNodes", &BaseMortarConvergenceCriteria::LastChangedNodes);
+      .def("LastChangedNodes", &BaseMortarConvergenceCriteria::LastChangedNodes)
+      .def_static("GetDefaultParameters", &BaseMortarConvergenceCriteria::GetDefaultParameters,
+                  "Its keys of contact_settings with their defaults.");
   BindMortarCriteria<ALMFrictionlessMortarConvergenceCriteria>(m, "ALMFrictionlessMortarConvergenceCriteria",
                                                                "alm_frictionless_mortar_criteria");
   BindMortarCriteria<ALMFrictionlessComponentsMortarConvergenceCriteria>(
@@ -183,7 +185,8 @@ void AddContactStrategiesToPython(py::module_& m) {
            py::arg("settings") = Parameters(), py::arg("max_iteration") = 10, py::arg("compute_reactions") = true,
            py::arg("reform_dofs_at_each_step") = false, py::arg("move_mesh") = true, py::arg("echo_level") = 0,
            py::keep_alive<1, 2>())
-      .def_static("GetDefaultParameters", [] { return Parameters(ContactNewton::DefaultParametersJson()); })
+      .def_static("GetDefaultParameters", &ContactNewton::GetDefaultParameters,
+                  "Its keys of contact_settings with their defaults.")
       .def("SetMortarUpdater", &ContactNewton::SetMortarUpdater, py::arg("updater"))
       .def(
           "SetSubStepCallbacks",

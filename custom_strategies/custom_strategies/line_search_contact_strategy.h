@@ -39,14 +39,12 @@ class LineSearchContactStrategy : public ResidualBasedNewtonRaphsonContactStrate
     double multiplier = 1.0;
   };
 
-  static std::string DefaultParametersJson() { return R"({ "name" : "line_search_contact_strategy" })"; }
-
   LineSearchContactStrategy(ModelPart& model_part, std::shared_ptr<Scheme> scheme,
                             std::shared_ptr<ConvergenceCriteria> criteria,
-                            std::shared_ptr<BuilderAndSolver> builder_and_solver, ContactStrategySettings settings = {},
-                            int max_iteration = 10, bool compute_reactions = true,
-                            bool reform_dofs_at_each_step = false, bool move_mesh_flag = true,
-                            double min_step = 0.1);
+                            std::shared_ptr<BuilderAndSolver> builder_and_solver,
+                            ContactStrategySettings settings = ReadSettings(Parameters()), int max_iteration = 10,
+                            bool compute_reactions = true, bool reform_dofs_at_each_step = false,
+                            bool move_mesh_flag = true, double min_step = 0.1);
 
   std::string Name() const override { return "line_search_contact_strategy"; }
   void InitializeSolutionStep() override;

@@ -13,30 +13,29 @@
 
 namespace mc {
 
-std::string ResidualBasedNewtonRaphsonContactStrategy::DefaultParametersJson() {
-  return R"({
-      "name"                  : "newton_raphson_contact_strategy",
+Parameters ResidualBasedNewtonRaphsonContactStrategy::GetDefaultParameters() {
+  return Parameters(R"({
       "adaptative_strategy"   : false,
       "split_factor"          : 10.0,
       "max_number_splits"     : 3,
       "inner_loop_iterations" : 5
-  })";
+  })");
 }
 
 ContactStrategySettings ResidualBasedNewtonRaphsonContactStrategy::ReadSettings(Parameters settings) {
-  settings.ValidateAndAssignDefaults(Parameters(DefaultParametersJson()));
+  settings.AddMissingParameters(GetDefaultParameters());
   ContactStrategySettings s;
   s.adaptative_strategy = settings["adaptative_strategy"].GetBool();
   s.split_factor = settings["split_factor"].GetDouble();
   s.max_number_splits = settings["max_number_splits"].GetInt();
   s.inner_loop_iterations = settings["inner_loop_iterations"].GetInt();
   if (!(s.split_factor > 1.0))
-    throw InputError(Concat(settings.Where(), ": split_factor = ", s.split_factor, " must be greater than 1"));
+    throw InputError(Concat(settings["split_factor"].Where(), ": ", s.split_factor, " must be greater than 1"));
   if (s.max_number_splits < 1)
-    throw InputError(Concat(settings.Where(), ": max_number_splits = ", s.max_number_splits, " must be at least 1"));
+    throw InputError(Concat(settings["max_number_splits"].Where(), ": ", s.max_number_splits, " must be at least 1"));
   if (s.inner_loop_iterations < 1)
     throw InputError(
-        Concat(settings.Where(), ": inner_loop_iterations = ", s.inner_loop_iterations, " must be at least 1"));
+        Concat(settings["inner_loop_iterations"].Where(), ": ", s.inner_loop_iterations, " must be at least 1"));
   return s;
 }
 

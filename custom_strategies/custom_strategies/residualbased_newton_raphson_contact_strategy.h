@@ -13,13 +13,13 @@
 
 namespace mc {
 
-/// Settings of the contact Newton strategy (Kratos' keys and defaults, copied by the solver
-/// from `contact_settings`).
+/// Settings of the contact Newton strategy, read from its keys of `contact_settings`
+/// (ResidualBasedNewtonRaphsonContactStrategy::ReadSettings; defaults in GetDefaultParameters).
 struct ContactStrategySettings {
-  bool adaptative_strategy = false;  ///< split the step when it does not converge
-  double split_factor = 10.0;        ///< DELTA_TIME divisor per split level
-  int max_number_splits = 3;         ///< split levels tried before giving up
-  int inner_loop_iterations = 5;     ///< active-set passes of the simplified semi-smooth Newton
+  bool adaptative_strategy;   ///< split the step when it does not converge
+  double split_factor;        ///< DELTA_TIME divisor per split level
+  int max_number_splits;      ///< split levels tried before giving up
+  int inner_loop_iterations;  ///< active-set passes of the simplified semi-smooth Newton
 };
 
 /// "newton_raphson_contact_strategy": Newton-Raphson for mortar contact, i.e. the semi-smooth
@@ -58,15 +58,19 @@ class ResidualBasedNewtonRaphsonContactStrategy : public NewtonRaphsonStrategy {
     std::function<void()> finalize_solution_step;
   };
 
-  static std::string DefaultParametersJson();
-  /// Validates the strategy keys (`name`, `adaptative_strategy`, `split_factor`,
-  /// `max_number_splits`, `inner_loop_iterations`).
+  /// Its keys of Kratos' contact_settings: adaptative_strategy (false), split_factor (10),
+  /// max_number_splits (3), inner_loop_iterations (5).
+  static Parameters GetDefaultParameters();
+  /// Reads its keys from `settings` (the solver's validated contact_settings, or any object:
+  /// missing keys are added with their defaults; the owner of the block rejects unknown ones)
+  /// and checks their ranges.
   static ContactStrategySettings ReadSettings(Parameters settings);
 
   ResidualBasedNewtonRaphsonContactStrategy(ModelPart& model_part, std::shared_ptr<Scheme> scheme,
                                             std::shared_ptr<ConvergenceCriteria> criteria,
                                             std::shared_ptr<BuilderAndSolver> builder_and_solver,
-                                            ContactStrategySettings settings = {}, int max_iteration = 10,
+                                            ContactStrategySettings settings = ReadSettings(Parameters()),
+                                            int max_iteration = 10,
                                             bool compute_reactions = true, bool reform_dofs_at_each_step = false,
                                             bool move_mesh_flag = true);
 

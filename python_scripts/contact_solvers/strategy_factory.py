@@ -1,11 +1,7 @@
 """The contact strategy from ``solver_settings`` (spec 2.9)."""
 from __future__ import annotations
 
-import json
-
 from .convergence_criteria_factory import _core_module, _value
-
-STRATEGY_KEYS = ("adaptative_strategy", "split_factor", "max_number_splits", "inner_loop_iterations")
 
 
 def create_builder_and_solver(solver_settings, linear_solver, core=None):
@@ -26,8 +22,8 @@ def create_contact_strategy(model_part, solver_settings, scheme, linear_solver, 
     - ``solving_strategy_settings.type``: ``newton_raphson`` -> ResidualBasedNewtonRaphsonContactStrategy,
       ``line_search`` -> LineSearchContactStrategy (split displacement / multiplier steps),
       ``arc_length`` -> not implemented;
-    - the four keys ``adaptative_strategy``, ``split_factor``, ``max_number_splits`` and
-      ``inner_loop_iterations`` come from ``contact_settings``;
+    - the strategy reads its keys (``adaptative_strategy``, ``split_factor``, ``max_number_splits``,
+      ``inner_loop_iterations``) from ``contact_settings``;
     - the computing model part gets INTERACTION unless ``simplified_semi_smooth_newton``
       (full semi-smooth Newton by default);
     - ``initialize_sub_step`` / ``finalize_sub_step`` (callables without arguments: the processes'
@@ -47,10 +43,8 @@ def create_contact_strategy(model_part, solver_settings, scheme, linear_solver, 
     if _value(s, "analysis_type", "String") == "linear":
         return core.LinearStrategy(model_part, scheme, builder, **common)
     kind = _value(s["solving_strategy_settings"], "type", "String")
-    settings = core.Parameters(json.dumps({key: getattr(contact[key], "GetBool" if key == "adaptative_strategy"
-                                                        else ("GetDouble" if key == "split_factor" else "GetInt"))()
-                                           for key in STRATEGY_KEYS}))
-    args = dict(settings=settings, max_iteration=_value(s, "max_iteration", "Int"), **common)
+    # The strategy reads its keys from contact_settings itself.
+    args = dict(settings=contact, max_iteration=_value(s, "max_iteration", "Int"), **common)
     if kind == "newton_raphson":
         strategy = core.ResidualBasedNewtonRaphsonContactStrategy(model_part, scheme, criteria, builder, **args)
     elif kind == "line_search":

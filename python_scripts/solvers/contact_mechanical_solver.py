@@ -8,6 +8,56 @@ from ..utilities import warn
 from ..contact_solvers import create_contact_convergence_criteria, create_contact_strategy
 from .mechanical_solver import MechanicalSolver
 
+#: The solver's own keys of contact_settings (Kratos' names and defaults). The keys of the classes
+#: that read the block themselves are theirs: see contact_settings_defaults().
+CONTACT_SETTINGS = """{
+    "mortar_type": "",
+    "condn_convergence_criterion": false,
+    "fancy_convergence_criterion": true,
+    "ensure_contact": false,
+    "frictional_decomposed": true,
+    "inner_loop_adaptive": false,
+    "rotation_relative_tolerance": 1.0e-4,
+    "rotation_absolute_tolerance": 1.0e-9,
+    "rotation_residual_relative_tolerance": 1.0e-4,
+    "rotation_residual_absolute_tolerance": 1.0e-9,
+    "contact_displacement_relative_tolerance": 1.0e-4,
+    "contact_displacement_absolute_tolerance": 1.0e-9,
+    "contact_residual_relative_tolerance": 1.0e-4,
+    "contact_residual_absolute_tolerance": 1.0e-9,
+    "frictional_stick_contact_displacement_relative_tolerance": 1.0e-4,
+    "frictional_stick_contact_displacement_absolute_tolerance": 1.0e-9,
+    "frictional_stick_contact_residual_relative_tolerance": 1.0e-4,
+    "frictional_stick_contact_residual_absolute_tolerance": 1.0e-9,
+    "frictional_slip_contact_displacement_relative_tolerance": 1.0e-4,
+    "frictional_slip_contact_displacement_absolute_tolerance": 1.0e-9,
+    "frictional_slip_contact_residual_relative_tolerance": 1.0e-4,
+    "frictional_slip_contact_residual_absolute_tolerance": 1.0e-9,
+    "ratio_normal_tangent_threshold": 1.0e-4,
+    "silent_strategy": true,
+    "simplified_semi_smooth_newton": false,
+    "rescale_linear_solver": false,
+    "use_mixed_ulm_solver": true,
+    "mixed_ulm_solver_parameters": {
+        "solver_type": "mixed_ulm_linear_solver",
+        "tolerance": 1.0e-6,
+        "max_iteration_number": 200,
+        "echo_level": 0
+    },
+    "fallback_if_dual_lm_not_valid": true,
+    "delta_time_factor_for_contact": 0.5
+}"""
+
+
+def contact_settings_defaults() -> _core.Parameters:
+    """Every key of contact_settings: the solver's, the contact strategy's and the active-set
+    criteria's (the strategy and the criteria read theirs from the validated block)."""
+    defaults = _core.Parameters(CONTACT_SETTINGS)
+    for owner in (_core.ResidualBasedNewtonRaphsonContactStrategy, _core.BaseMortarConvergenceCriteria):
+        defaults.AddMissingParameters(owner.GetDefaultParameters())
+    return defaults
+
+
 class ContactMechanicalSolver(MechanicalSolver):
     #: contact criteria names are resolved by the contact factory (spec 3.2)
     criteria_names = None

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from .. import _core
 from ..utilities import warn
+from .contact_mechanical_solver import contact_settings_defaults
 
 STRUCTURAL_DEFAULTS = """{
     "solver_type": "mechanical_solver",
@@ -67,51 +68,6 @@ STRUCTURAL_DEFAULTS = """{
     "fraction_delta_time": 0.333333333333333333333333333333333333,
     "contact_settings": {},
     "mpc_contact_settings": {}
-}"""
-
-CONTACT_SETTINGS_DEFAULTS = """{
-    "mortar_type": "",
-    "condn_convergence_criterion": false,
-    "fancy_convergence_criterion": true,
-    "print_convergence_criterion": false,
-    "ensure_contact": false,
-    "frictional_decomposed": true,
-    "compute_dynamic_factor": false,
-    "gidio_debug": false,
-    "adaptative_strategy": false,
-    "split_factor": 10.0,
-    "max_number_splits": 3,
-    "inner_loop_iterations": 5,
-    "inner_loop_adaptive": false,
-    "rotation_relative_tolerance": 1.0e-4,
-    "rotation_absolute_tolerance": 1.0e-9,
-    "rotation_residual_relative_tolerance": 1.0e-4,
-    "rotation_residual_absolute_tolerance": 1.0e-9,
-    "contact_displacement_relative_tolerance": 1.0e-4,
-    "contact_displacement_absolute_tolerance": 1.0e-9,
-    "contact_residual_relative_tolerance": 1.0e-4,
-    "contact_residual_absolute_tolerance": 1.0e-9,
-    "frictional_stick_contact_displacement_relative_tolerance": 1.0e-4,
-    "frictional_stick_contact_displacement_absolute_tolerance": 1.0e-9,
-    "frictional_stick_contact_residual_relative_tolerance": 1.0e-4,
-    "frictional_stick_contact_residual_absolute_tolerance": 1.0e-9,
-    "frictional_slip_contact_displacement_relative_tolerance": 1.0e-4,
-    "frictional_slip_contact_displacement_absolute_tolerance": 1.0e-9,
-    "frictional_slip_contact_residual_relative_tolerance": 1.0e-4,
-    "frictional_slip_contact_residual_absolute_tolerance": 1.0e-9,
-    "ratio_normal_tangent_threshold": 1.0e-4,
-    "silent_strategy": true,
-    "simplified_semi_smooth_newton": false,
-    "rescale_linear_solver": false,
-    "use_mixed_ulm_solver": true,
-    "mixed_ulm_solver_parameters": {
-        "solver_type": "mixed_ulm_linear_solver",
-        "tolerance": 1.0e-6,
-        "max_iteration_number": 200,
-        "echo_level": 0
-    },
-    "fallback_if_dual_lm_not_valid": true,
-    "delta_time_factor_for_contact": 0.5
 }"""
 
 MPC_CONTACT_SETTINGS_DEFAULTS = """{
@@ -183,10 +139,10 @@ def validate_solver_settings(settings: _core.Parameters) -> None:
     """Translates legacy keys, then validates against the defaults (unknown keys are errors)."""
     translate_legacy_solver_settings(settings)
     settings.RecursivelyValidateAndAssignDefaults(_core.Parameters(STRUCTURAL_DEFAULTS))
-    for key, defaults in (("contact_settings", CONTACT_SETTINGS_DEFAULTS),
-                          ("mpc_contact_settings", MPC_CONTACT_SETTINGS_DEFAULTS)):
+    for key, defaults in (("contact_settings", contact_settings_defaults()),
+                          ("mpc_contact_settings", _core.Parameters(MPC_CONTACT_SETTINGS_DEFAULTS))):
         if settings[key].size() > 0:
-            settings[key].RecursivelyValidateAndAssignDefaults(_core.Parameters(defaults))
+            settings[key].RecursivelyValidateAndAssignDefaults(defaults)
     if not settings["model_part_name"].GetString():
         raise _core.InputError(f"{settings.Where()}.model_part_name: must name the model part (e.g. \"Structure\")")
     if settings["domain_size"].GetInt() not in (2, 3):
