@@ -86,6 +86,13 @@ struct Hit {
   void Add(ContactProblem& p, IndexType id = 1) const {
     p.AddContactNode(id, Array3::Zero(), K, AnchorSpring::Law::kLinear, F, Obstacle{c, R});
   }
+  // The exact position and pressure at node `id` of `p`, to 1e-12.
+  void ExpectSolution(const ContactProblem& p, IndexType id = 1) const {
+    const Array3 x = ExactPosition();
+    EXPECT_NEAR(p.U(id)[0], x[0], 1e-12);
+    EXPECT_NEAR(p.U(id)[1], x[1], 1e-12);
+    EXPECT_NEAR(p.Lm(id), ExactPressure(), 1e-12);
+  }
 };
 
 TEST(ContactNewton, FullSemiSmoothNewtonFindsTheExactContactAndConvergesQuadratically) {
@@ -95,10 +102,8 @@ TEST(ContactNewton, FullSemiSmoothNewtonFindsTheExactContactAndConvergesQuadrati
   p.mp.Set(INTERACTION, true);
   auto strategy = MakeStrategy(p, Defaults(), 30, Criteria(p));
   ASSERT_TRUE(strategy->Solve()) << strategy->FailureReport();
+  hit.ExpectSolution(p);
   const Array3 x = hit.ExactPosition();
-  EXPECT_NEAR(p.U(1)[0], x[0], 1e-12);
-  EXPECT_NEAR(p.U(1)[1], x[1], 1e-12);
-  EXPECT_NEAR(p.Lm(1), hit.ExactPressure(), 1e-12);
   // The pressure is compressive and the energy search found a point on the circle.
   EXPECT_LT(p.Lm(1), -0.1);
   EXPECT_NEAR((x - hit.c).norm(), hit.R, 1e-14);
@@ -133,9 +138,7 @@ TEST(ContactNewton, SimplifiedSemiSmoothNewtonConvergesWithAFrozenSet) {
   p.mp.Set(INTERACTION, false);
   auto strategy = MakeStrategy(p, Defaults(), 30, Criteria(p));
   ASSERT_TRUE(strategy->Solve()) << strategy->FailureReport();
-  EXPECT_NEAR(p.U(1)[0], hit.ExactPosition()[0], 1e-12);
-  EXPECT_NEAR(p.U(1)[1], hit.ExactPosition()[1], 1e-12);
-  EXPECT_NEAR(p.Lm(1), hit.ExactPressure(), 1e-12);
+  hit.ExpectSolution(p);
   EXPECT_EQ(strategy->InnerLoopIterations(), 1);
   EXPECT_EQ(p.mp.GetProcessInfo().GetValue(INNER_LOOP_ITERATION), 1);
   EXPECT_EQ(strategy->ActiveSetFlipCounts().at(1), 1);
