@@ -58,22 +58,6 @@ Vector RandomRhs(const Vector& assembled, unsigned seed) {
   return b;
 }
 
-/// A ContactSystem (constructed from `args`) assembled, with the right-hand side
-/// RandomRhs(residual, seed).
-template <class System>
-struct Assembled {
-  System system;
-  SparseMatrix A;
-  Vector b;
-  std::vector<Dof*> dofs;
-  template <class... Args>
-  explicit Assembled(unsigned seed, Args&&... args) : system(std::forward<Args>(args)...) {
-    Vector residual;
-    system.Assemble(A, residual, dofs);
-    b = RandomRhs(residual, seed);
-  }
-};
-
 Eigen::Index RowOf(const std::vector<Dof*>& dofs, const Node& node, const Variable<double>& var) {
   for (std::size_t i = 0; i < dofs.size(); ++i)
     if (dofs[i]->node == &node && dofs[i]->variable == &var) return static_cast<Eigen::Index>(i);
@@ -100,8 +84,9 @@ TYPED_TEST(CondensationTest, MatchesMonolithicForEveryActivePattern) {
     std::vector<bool> active(kSlave);
     for (int i = 0; i < kSlave; ++i) active[i] = pattern == 1 || (pattern == 0 && i % 2 == 0);
     const int n_active = static_cast<int>(std::count(active.begin(), active.end(), true));
-    Assembled<typename TypeParam::System> assembled(11 + pattern, active);
-    const auto& [system, A, b, dofs] = assembled;
+    AssembledSystem<typename TypeParam::System> assembled(active);
+    const auto& [system, A, residual, dofs] = assembled;
+    const Vector b = RandomRhs(residual, 11 + pattern);
     const Vector reference = SolveMonolithic(A, b);
     MixedULMLinearSolver solver = MakeMixed();
     const Vector x = SolveMixed(solver, A, dofs, b);
@@ -131,8 +116,9 @@ TYPED_TEST(CondensationTest, MatchesMonolithicForEveryActivePattern) {
 
 TYPED_TEST(CondensationTest, NonDiagonalSlaveMultiplierBlockFallsBackToFullSystem) {
   constexpr int kSlave = TypeParam::kSlave;
-  Assembled<typename TypeParam::System> assembled(3, std::vector<bool>(kSlave, true));
-  auto& [system, A, b, dofs] = assembled;
+  AssembledSystem<typename TypeParam::System> assembled(std::vector<bool>(kSlave, true));
+  auto& [system, A, residual, dofs] = assembled;
+  const Vector b = RandomRhs(residual, 3);
 
   // K(slave node 1 DISPLACEMENT_X, VECTOR_LAGRANGE_MULTIPLIER_Y of slave node 2) != 0.
   const Eigen::Index s = RowOf(dofs, *system.slaves[0], DISPLACEMENT_X);
@@ -160,8 +146,9 @@ TYPED_TEST(CondensationTest, NonDiagonalInactiveMultiplierRowFallsBack) {
   constexpr int kSlave = TypeParam::kSlave;
   std::vector<bool> active(kSlave, true);
   active[1] = false;
-  Assembled<typename TypeParam::System> assembled(5, active);
-  auto& [system, A, b, dofs] = assembled;
+  AssembledSystem<typename TypeParam::System> assembled(active);
+  auto& [system, A, residual, dofs] = assembled;
+  const Vector b = RandomRhs(residual, 5);
   const Eigen::Index i = RowOf(dofs, *system.slaves[1], VECTOR_LAGRANGE_MULTIPLIER_X);
   const Eigen::Index j = RowOf(dofs, *system.masters[0], DISPLACEMENT_Y);
   A.coeffRef(i, j) = -0.2;
@@ -205,8 +192,9 @@ TYPED_TEST(CondensationTest, FixedMultiplierAndFixedSlaveDisplacementStayUnconde
 // not exact for its rational shape functions, but each pair's dual basis is biorthogonal in the
 // pair's own quadrature, so D stays diagonal and the system condenses.
 TEST(MixedULMLinearSolver, WarpedSlaveQuadrilateralCondensesAndMatches) {
-  const Assembled<ContactSystem<3, 4, 4>> assembled(13, std::vector<bool>{true, true, true, false}, true);
-  const auto& [system, A, b, dofs] = assembled;
+  const AssembledSystem<ContactSystem<3, 4, 4>> assembled(std::vector<bool>{true, true, true, false}, true);
+  const auto& [system, A, residual, dofs] = assembled;
+  const Vector b = RandomRhs(residual, 13);
   MixedULMLinearSolver solver = MakeMixed();
   const Vector x = SolveMixed(solver, A, dofs, b);
   EXPECT_TRUE(solver.LastSolveWasCondensed()) << solver.FallbackReason();
@@ -218,8 +206,9 @@ TEST(MixedULMLinearSolver, NameDirectnessAndSolveWithoutDofData) {
   EXPECT_EQ(solver.Name(), "mixed_ulm_linear_solver(umfpack)");
   EXPECT_TRUE(solver.IsDirect());
   EXPECT_TRUE(solver.AdditionalPhysicalDataIsNeeded());
-  const Assembled<ContactSystem<2, 2, 2>> assembled(1, std::vector<bool>{true, false});
-  const auto& [system, A, b, dofs] = assembled;
+  const AssembledSystem<ContactSystem<2, 2, 2>> assembled(std::vector<bool>{true, false});
+  const auto& [system, A, residual, dofs] = assembled;
+  const Vector b = RandomRhs(residual, 1);
   solver.Initialize(A);
   Vector x = Vector::Zero(b.size());
   solver.Solve(A, x, b);  // e.g. LinearSolver.Solve from Python: no DoFs, full system

@@ -95,27 +95,36 @@ struct Hit {
   }
 };
 
-TEST(ContactNewton, FullSemiSmoothNewtonFindsTheExactContactAndConvergesQuadratically) {
+// The Hit problem at node 1 solved with the full (`interaction`) or the simplified semi-smooth
+// Newton: either way the exact solution, the node activated once, after the first (separated)
+// iteration, and never again, in one inner loop.
+struct SolvedHit {
   Hit hit;
-  ContactProblem p(hit.k, hit.eps);
-  hit.Add(p);
-  p.mp.Set(INTERACTION, true);
-  auto strategy = MakeStrategy(p, Defaults(), 30, Criteria(p));
-  ASSERT_TRUE(strategy->Solve()) << strategy->FailureReport();
-  hit.ExpectSolution(p);
-  const Array3 x = hit.ExactPosition();
+  ContactProblem p{hit.k, hit.eps};
+  std::unique_ptr<ResidualBasedNewtonRaphsonContactStrategy> strategy;
+  explicit SolvedHit(bool interaction) {
+    hit.Add(p);
+    p.mp.Set(INTERACTION, interaction);
+    strategy = MakeStrategy(p, Defaults(), 30, Criteria(p));
+    EXPECT_TRUE(strategy->Solve()) << strategy->FailureReport();
+    hit.ExpectSolution(p);
+    EXPECT_EQ(strategy->ActiveSetFlipCounts().at(1), 1);
+    EXPECT_EQ(strategy->InnerLoopIterations(), 1);
+  }
+};
+
+TEST(ContactNewton, FullSemiSmoothNewtonFindsTheExactContactAndConvergesQuadratically) {
+  SolvedHit s(true);
+  const Array3 x = s.hit.ExactPosition();
   // The pressure is compressive and the energy search found a point on the circle.
-  EXPECT_LT(p.Lm(1), -0.1);
-  EXPECT_NEAR((x - hit.c).norm(), hit.R, 1e-14);
-  EXPECT_TRUE(p.mp.GetNode(1).Is(ACTIVE));
-  EXPECT_TRUE(p.mp.GetProcessInfo().GetValue(ACTIVE_SET_CONVERGED));
-  // Activated once, after the first (separated) iteration, then never again.
-  EXPECT_EQ(strategy->ActiveSetFlipCounts().at(1), 1);
-  EXPECT_EQ(strategy->InnerLoopIterations(), 1);
+  EXPECT_LT(s.p.Lm(1), -0.1);
+  EXPECT_NEAR((x - s.hit.c).norm(), s.hit.R, 1e-14);
+  EXPECT_TRUE(s.p.mp.GetNode(1).Is(ACTIVE));
+  EXPECT_TRUE(s.p.mp.GetProcessInfo().GetValue(ACTIVE_SET_CONVERGED));
 
   // Quadratic rate with the set fixed (iterations >= 2): |dx_{k+1}| / |dx_k|^2 stays of order 1
   // while |dx| drops from 0.3 to 1e-10.
-  const auto& h = strategy->IterationHistory();
+  const auto& h = s.strategy->IterationHistory();
   ASSERT_GE(h.size(), 4u);
   int checked = 0;
   for (std::size_t i = 1; i + 1 < h.size(); ++i) {
@@ -132,16 +141,8 @@ TEST(ContactNewton, FullSemiSmoothNewtonFindsTheExactContactAndConvergesQuadrati
 }
 
 TEST(ContactNewton, SimplifiedSemiSmoothNewtonConvergesWithAFrozenSet) {
-  Hit hit;
-  ContactProblem p(hit.k, hit.eps);
-  hit.Add(p);
-  p.mp.Set(INTERACTION, false);
-  auto strategy = MakeStrategy(p, Defaults(), 30, Criteria(p));
-  ASSERT_TRUE(strategy->Solve()) << strategy->FailureReport();
-  hit.ExpectSolution(p);
-  EXPECT_EQ(strategy->InnerLoopIterations(), 1);
-  EXPECT_EQ(p.mp.GetProcessInfo().GetValue(INNER_LOOP_ITERATION), 1);
-  EXPECT_EQ(strategy->ActiveSetFlipCounts().at(1), 1);
+  SolvedHit s(false);
+  EXPECT_EQ(s.p.mp.GetProcessInfo().GetValue(INNER_LOOP_ITERATION), 1);
 }
 
 TEST(ContactNewton, SeparatedNodeStaysInactiveWithZeroPressure) {
