@@ -21,6 +21,7 @@
 #include "custom_strategies/custom_strategies/line_search_contact_strategy.h"
 #include "custom_strategies/custom_strategies/residualbased_newton_raphson_contact_strategy.h"
 #include "custom_utilities/contact_variables.h"
+#include "tests/cpp/common/error_message.h"
 
 namespace mc {
 namespace {
@@ -253,25 +254,31 @@ struct Ramp {
     const double t = p.mp.GetProcessInfo().GetValue(TIME);
     p.springs[1]->SetForce(Array3(std::atan(5.0) * std::min(1.0, 2.0 - t), 0.0, 0.0));
   }
-  ResidualBasedNewtonRaphsonContactStrategy::SubStepCallbacks Callbacks() {
-    return {[this] { ++initialize_calls; ApplyLoad(); }, [this] { ++finalize_calls; }};
+  // The adaptive strategy with the splitting keys `splitting` of contact_settings, the load ramp
+  // as its sub-step callbacks.
+  std::unique_ptr<ResidualBasedNewtonRaphsonContactStrategy> AdaptiveStrategy(const std::string& splitting) {
+    const ContactStrategySettings settings = ResidualBasedNewtonRaphsonContactStrategy::ReadSettings(
+        Parameters(R"({"adaptative_strategy": true, )" + splitting + "}"));
+    auto strategy = MakeStrategy(p, settings, 12, Criteria(p, 1e-10));
+    strategy->SetSubStepCallbacks({[this] { ++initialize_calls; ApplyLoad(); }, [this] { ++finalize_calls; }});
+    return strategy;
+  }
+  // Starts the step at time t.
+  void Advance(double t) {
+    p.mp.CloneTimeStep(t);
+    ApplyLoad();
   }
 };
 
 TEST(ContactAdaptive, SplitsAStepThatDoesNotConverge) {
   Ramp r;
-  const ContactStrategySettings settings = ResidualBasedNewtonRaphsonContactStrategy::ReadSettings(
-      Parameters(R"({"adaptative_strategy": true, "max_number_splits": 2})"));
-  auto strategy = MakeStrategy(r.p, settings, 12, Criteria(r.p, 1e-10));
-  strategy->SetSubStepCallbacks(r.Callbacks());
-  r.p.mp.CloneTimeStep(1.0);
-  r.ApplyLoad();
+  auto strategy = r.AdaptiveStrategy(R"("max_number_splits": 2)");
+  r.Advance(1.0);
   ASSERT_TRUE(strategy->Solve());
   EXPECT_NEAR(r.p.U(1)[0], 5.0, 1e-8);
   EXPECT_EQ(strategy->SplitLevelUsed(), 0);
 
-  r.p.mp.CloneTimeStep(2.0);
-  r.ApplyLoad();
+  r.Advance(2.0);
   ASSERT_TRUE(strategy->Solve()) << strategy->FailureReport();
   EXPECT_EQ(strategy->SplitLevelUsed(), 1);
   EXPECT_NEAR(r.p.U(1)[0], 0.0, 1e-8);
@@ -287,23 +294,13 @@ TEST(ContactAdaptive, SplitsAStepThatDoesNotConverge) {
 
 TEST(ContactAdaptive, FailsClearlyWhenSplittingDoesNotHelp) {
   Ramp r;
-  const ContactStrategySettings settings = ResidualBasedNewtonRaphsonContactStrategy::ReadSettings(
-      Parameters(R"({"adaptative_strategy": true, "split_factor": 2.0, "max_number_splits": 1})"));
-  auto strategy = MakeStrategy(r.p, settings, 12, Criteria(r.p, 1e-10));
-  strategy->SetSubStepCallbacks(r.Callbacks());
-  r.p.mp.CloneTimeStep(1.0);
-  r.ApplyLoad();
+  auto strategy = r.AdaptiveStrategy(R"("split_factor": 2.0, "max_number_splits": 1)");
+  r.Advance(1.0);
   ASSERT_TRUE(strategy->Solve());
-  r.p.mp.CloneTimeStep(2.0);
-  r.ApplyLoad();
-  try {
-    strategy->Solve();
-    FAIL() << "expected a SolutionError";
-  } catch (const SolutionError& e) {
-    const std::string message = e.what();
-    EXPECT_NE(message.find("split the step 1 times (smallest sub-step 0.5)"), std::string::npos) << message;
-    EXPECT_NE(message.find("newton_raphson_contact_strategy: step"), std::string::npos) << message;
-  }
+  r.Advance(2.0);
+  const std::string message = test::ErrorMessageOf<SolutionError>([&] { strategy->Solve(); });
+  EXPECT_NE(message.find("split the step 1 times (smallest sub-step 0.5)"), std::string::npos) << message;
+  EXPECT_NE(message.find("newton_raphson_contact_strategy: step"), std::string::npos) << message;
 }
 
 TEST(ContactStrategySettingsTest, DefaultsAndValidation) {
