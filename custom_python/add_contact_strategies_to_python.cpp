@@ -8,11 +8,7 @@
 #include "custom_strategies/custom_convergencecriterias/contact_mortar_updater.h"
 #include "custom_strategies/custom_convergencecriterias/alm_frictionless_components_mortar_criteria.h"
 #include "custom_strategies/custom_convergencecriterias/alm_frictionless_mortar_criteria.h"
-#include "custom_strategies/custom_convergencecriterias/displacement_contact_criteria.h"
-#include "custom_strategies/custom_convergencecriterias/displacement_lagrangemultiplier_contact_criteria.h"
-#include "custom_strategies/custom_convergencecriterias/displacement_lagrangemultiplier_mixed_contact_criteria.h"
-#include "custom_strategies/custom_convergencecriterias/displacement_lagrangemultiplier_residual_contact_criteria.h"
-#include "custom_strategies/custom_convergencecriterias/displacement_residual_contact_criteria.h"
+#include "custom_strategies/custom_convergencecriterias/block_contact_criteria.h"
 #include "custom_strategies/custom_convergencecriterias/mesh_tying_mortar_criteria.h"
 #include "custom_strategies/custom_convergencecriterias/mortar_and_criteria.h"
 #include "custom_strategies/custom_convergencecriterias/penalty_frictionless_mortar_criteria.h"
@@ -67,7 +63,7 @@ template <class Criteria>
 void BindBlockCriteria(py::module_& m, const char* name, const char* doc) {
   py::class_<Criteria, BlockContactCriteria, std::shared_ptr<Criteria>>(m, name, doc)
       .def(py::init<Parameters>(), py::arg("settings") = Parameters())
-      .def_static("GetDefaultParameters", [] { return Parameters(Criteria::DefaultParametersJson()); });
+      .def_static("GetDefaultParameters", &Criteria::GetDefaultParameters);
 }
 
 template <class Criteria>

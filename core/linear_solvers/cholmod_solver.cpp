@@ -3,7 +3,6 @@
 
 #include <suitesparse/cholmod.h>
 
-#include <cassert>
 #include <cmath>
 
 namespace mc {
@@ -46,7 +45,7 @@ struct CholmodSolver::Handles {
   cholmod_factor* factor = nullptr;
 };
 
-CholmodSolver::CholmodSolver() : handles_(std::make_unique<Handles>()) {
+CholmodSolver::CholmodSolver() : DirectSolver("CHOLMOD"), handles_(std::make_unique<Handles>()) {
   cholmod_start(&handles_->common);
   handles_->common.supernodal = CHOLMOD_SUPERNODAL;
   handles_->common.print = 0;
@@ -54,28 +53,20 @@ CholmodSolver::CholmodSolver() : handles_(std::make_unique<Handles>()) {
 }
 
 CholmodSolver::~CholmodSolver() {
-  Clear();
+  Release();
   cholmod_finish(&handles_->common);
 }
 
-void CholmodSolver::Initialize(const SparseMatrix& A) {
-  Clear();
-  if (A.rows() != A.cols()) throw SolutionError(Concat("CHOLMOD: matrix is ", A.rows(), "x", A.cols(), ", not square"));
-  const SparseMatrix& M = CompressedView(A, compressed_);
+void CholmodSolver::Analyze(const SparseMatrix& M) {
   cholmod_sparse view = View(M);
   handles_->factor = cholmod_analyze(&view, &handles_->common);
   if (handles_->factor == nullptr) {
     throw SolutionError(Concat("CHOLMOD analysis of a ", M.rows(), "-equation matrix failed (status ",
                                handles_->common.status, ")"));
   }
-  pattern_.Assign(M);
-  ++symbolic_count_;
 }
 
-void CholmodSolver::Solve(const SparseMatrix& A, Vector& x, const Vector& b) {
-  assert(b.size() == A.rows());
-  const SparseMatrix& M = CompressedView(A, compressed_);
-  if (handles_->factor == nullptr || !pattern_.Matches(M)) Initialize(M);
+void CholmodSolver::Factorize(const SparseMatrix& M) {
   const double asymmetry = Asymmetry(M);
   if (asymmetry > 1e-12) {
     throw SolutionError(Concat("CHOLMOD needs a symmetric matrix; largest |a_ij - a_ji| is ", asymmetry,
@@ -93,6 +84,10 @@ void CholmodSolver::Solve(const SparseMatrix& A, Vector& x, const Vector& b) {
                               equation);
   }
   if (common.status != CHOLMOD_OK) throw SolutionError(Concat("CHOLMOD factorization failed (status ", common.status, ")"));
+}
+
+void CholmodSolver::Substitute(const SparseMatrix& M, Vector& x, const Vector& b) {
+  cholmod_common& common = handles_->common;
   cholmod_dense rhs{};
   rhs.nrow = static_cast<std::size_t>(b.size());
   rhs.ncol = 1;
@@ -107,10 +102,9 @@ void CholmodSolver::Solve(const SparseMatrix& A, Vector& x, const Vector& b) {
   cholmod_free_dense(&solution, &common);
 }
 
-void CholmodSolver::Clear() {
+void CholmodSolver::Release() {
   if (handles_->factor != nullptr) cholmod_free_factor(&handles_->factor, &handles_->common);
   handles_->factor = nullptr;
-  pattern_.Clear();
 }
 
 }  // namespace mc

@@ -28,34 +28,26 @@ struct EigenSparseLUSolver::BackendFor : EigenSparseLUSolver::Backend {
   Eigen::SparseLU<SparseMatrix, OrderingType> lu;
 };
 
-EigenSparseLUSolver::EigenSparseLUSolver(Ordering ordering) : ordering_(ordering) {}
+EigenSparseLUSolver::EigenSparseLUSolver(Ordering ordering) : DirectSolver("SparseLU"), ordering_(ordering) {}
 
 EigenSparseLUSolver::~EigenSparseLUSolver() = default;
 
-void EigenSparseLUSolver::Initialize(const SparseMatrix& A) {
-  const SparseMatrix& M = CompressedView(A, compressed_);
-  if (A.rows() != A.cols()) throw SolutionError(Concat("SparseLU: matrix is ", A.rows(), "x", A.cols(), ", not square"));
+void EigenSparseLUSolver::Analyze(const SparseMatrix& M) {
   if (ordering_ == Ordering::kMetis) {
     backend_ = std::make_unique<BackendFor<Eigen::MetisOrdering<int>>>();
   } else {
     backend_ = std::make_unique<BackendFor<Eigen::COLAMDOrdering<int>>>();
   }
   backend_->Analyze(M);
-  pattern_.Assign(M);
-  ++symbolic_count_;
 }
 
-void EigenSparseLUSolver::Solve(const SparseMatrix& A, Vector& x, const Vector& b) {
-  const SparseMatrix& M = CompressedView(A, compressed_);
-  if (!backend_ || !pattern_.Matches(M)) Initialize(M);
+void EigenSparseLUSolver::Factorize(const SparseMatrix& M) {
   const std::string failure = backend_->Factorize(M);
   if (!failure.empty()) throw SingularMatrixError(Concat("Eigen SparseLU: singular matrix: ", failure), -1);
-  backend_->Solve(b, x);
 }
 
-void EigenSparseLUSolver::Clear() {
-  backend_.reset();
-  pattern_.Clear();
-}
+void EigenSparseLUSolver::Substitute(const SparseMatrix& M, Vector& x, const Vector& b) { backend_->Solve(b, x); }
+
+void EigenSparseLUSolver::Release() { backend_.reset(); }
 
 }  // namespace mc

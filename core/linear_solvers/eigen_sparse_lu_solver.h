@@ -4,8 +4,7 @@
 #include <memory>
 #include <string>
 
-#include "core/linear_solvers/linear_solver.h"
-#include "core/linear_solvers/sparse_pattern.h"
+#include "core/linear_solvers/direct_solver.h"
 
 namespace mc {
 
@@ -13,7 +12,7 @@ namespace mc {
 /// "sparse_lu" / "eigen_sparse_lu" map to UMFPACK). The column ordering is COLAMD, or METIS
 /// nested dissection with `ordering = "metis"`. Eigen reports no usable pivot index, so
 /// SingularMatrixError carries equation -1 and Eigen's message.
-class EigenSparseLUSolver : public LinearSolver {
+class EigenSparseLUSolver : public DirectSolver {
  public:
   enum class Ordering { kColamd, kMetis };
 
@@ -21,23 +20,19 @@ class EigenSparseLUSolver : public LinearSolver {
   ~EigenSparseLUSolver() override;
 
   std::string Name() const override { return "sparse_lu_eigen"; }
-  bool IsDirect() const override { return true; }
-  void Initialize(const SparseMatrix& A) override;
-  void Solve(const SparseMatrix& A, Vector& x, const Vector& b) override;
-  void Clear() override;
-
-  int SymbolicAnalysesNumber() const noexcept { return symbolic_count_; }
 
  private:
+  void Analyze(const SparseMatrix& A) override;
+  void Factorize(const SparseMatrix& A) override;
+  void Substitute(const SparseMatrix& A, Vector& x, const Vector& b) override;
+  void Release() override;
+
   struct Backend;  // the SparseLU instantiation for the chosen ordering
   template <class OrderingType>
   struct BackendFor;
 
   Ordering ordering_;
   std::unique_ptr<Backend> backend_;
-  SparsePattern pattern_;
-  SparseMatrix compressed_;
-  int symbolic_count_ = 0;
 };
 
 }  // namespace mc

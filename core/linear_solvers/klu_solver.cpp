@@ -3,8 +3,6 @@
 
 #include <suitesparse/klu.h>
 
-#include <cassert>
-
 namespace mc {
 
 struct KluSolver::Handles {
@@ -13,30 +11,31 @@ struct KluSolver::Handles {
   klu_numeric* numeric = nullptr;
 };
 
-KluSolver::KluSolver() : handles_(std::make_unique<Handles>()) { klu_defaults(&handles_->common); }
+namespace {
 
-KluSolver::~KluSolver() { Clear(); }
+// KLU's API is not const-correct: it takes int* and double* for arrays it only reads.
+int* Pointers(const SparseMatrix& M) { return const_cast<int*>(M.outerIndexPtr()); }
+int* Indices(const SparseMatrix& M) { return const_cast<int*>(M.innerIndexPtr()); }
 
-void KluSolver::Initialize(const SparseMatrix& A) {
-  Clear();
-  if (A.rows() != A.cols()) throw SolutionError(Concat("KLU: matrix is ", A.rows(), "x", A.cols(), ", not square"));
-  SparseMatrix& M = const_cast<SparseMatrix&>(CompressedView(A, compressed_));  // KLU's API is not const-correct
-  handles_->symbolic = klu_analyze(static_cast<int>(M.rows()), M.outerIndexPtr(), M.innerIndexPtr(), &handles_->common);
+}  // namespace
+
+KluSolver::KluSolver() : DirectSolver("KLU"), handles_(std::make_unique<Handles>()) { klu_defaults(&handles_->common); }
+
+KluSolver::~KluSolver() { Release(); }
+
+void KluSolver::Analyze(const SparseMatrix& M) {
+  handles_->symbolic = klu_analyze(static_cast<int>(M.rows()), Pointers(M), Indices(M), &handles_->common);
   if (handles_->symbolic == nullptr) {
     throw SolutionError(Concat("KLU analysis of a ", M.rows(), "-equation matrix failed (status ",
                                handles_->common.status, ")"));
   }
-  pattern_.Assign(M);
-  ++symbolic_count_;
 }
 
-void KluSolver::Solve(const SparseMatrix& A, Vector& x, const Vector& b) {
-  assert(b.size() == A.rows());
-  SparseMatrix& M = const_cast<SparseMatrix&>(CompressedView(A, compressed_));
-  if (handles_->symbolic == nullptr || !pattern_.Matches(M)) Initialize(M);
+void KluSolver::Factorize(const SparseMatrix& M) {
   FreeNumeric();
   klu_common& common = handles_->common;
-  handles_->numeric = klu_factor(M.outerIndexPtr(), M.innerIndexPtr(), M.valuePtr(), handles_->symbolic, &common);
+  handles_->numeric =
+      klu_factor(Pointers(M), Indices(M), const_cast<double*>(M.valuePtr()), handles_->symbolic, &common);
   if (common.status == KLU_SINGULAR) {
     FreeNumeric();
     const long column = common.singular_col < M.cols() ? common.singular_col : -1;
@@ -46,6 +45,10 @@ void KluSolver::Solve(const SparseMatrix& A, Vector& x, const Vector& b) {
     FreeNumeric();
     throw SolutionError(Concat("KLU numeric factorization failed (status ", common.status, ")"));
   }
+}
+
+void KluSolver::Substitute(const SparseMatrix& M, Vector& x, const Vector& b) {
+  klu_common& common = handles_->common;
   x = b;
   if (klu_solve(handles_->symbolic, handles_->numeric, static_cast<int>(M.rows()), 1, x.data(), &common) != 1) {
     throw SolutionError(Concat("KLU solve failed (status ", common.status, ")"));
@@ -57,11 +60,10 @@ void KluSolver::FreeNumeric() {
   handles_->numeric = nullptr;
 }
 
-void KluSolver::Clear() {
+void KluSolver::Release() {
   FreeNumeric();
   if (handles_->symbolic != nullptr) klu_free_symbolic(&handles_->symbolic, &handles_->common);
   handles_->symbolic = nullptr;
-  pattern_.Clear();
 }
 
 }  // namespace mc

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cassert>
 #include <vector>
 
 namespace mc {
@@ -52,12 +51,7 @@ void SetControl(double (&control)[UMFPACK_CONTROL], Eigen::Index equations) {
 
 }  // namespace
 
-UmfpackSolver::~UmfpackSolver() { Clear(); }
-
-void UmfpackSolver::Initialize(const SparseMatrix& A) {
-  Clear();
-  if (A.rows() != A.cols()) throw SolutionError(Concat("UMFPACK: matrix is ", A.rows(), "x", A.cols(), ", not square"));
-  const SparseMatrix& M = CompressedView(A, compressed_);
+void UmfpackSolver::Analyze(const SparseMatrix& M) {
   // The 64-bit interface: with 32-bit sizes UMFPACK runs out of addressable workspace on 3D
   // problems of ~1e5 equations long before memory is exhausted.
   outer_.assign(M.outerIndexPtr(), M.outerIndexPtr() + M.outerSize() + 1);
@@ -75,14 +69,9 @@ void UmfpackSolver::Initialize(const SparseMatrix& A) {
     throw SolutionError(Concat("UMFPACK symbolic analysis of a ", M.rows(), "-equation matrix failed: ",
                                UmfpackStatusText(status)));
   }
-  pattern_.Assign(M);
-  ++symbolic_count_;
 }
 
-void UmfpackSolver::Solve(const SparseMatrix& A, Vector& x, const Vector& b) {
-  assert(b.size() == A.rows());
-  const SparseMatrix& M = CompressedView(A, compressed_);
-  if (symbolic_ == nullptr || !pattern_.Matches(M)) Initialize(M);
+void UmfpackSolver::Factorize(const SparseMatrix& M) {
   FreeNumeric();
   double info[UMFPACK_INFO];
   const auto status = umfpack_dl_numeric(outer_.data(), inner_.data(), M.valuePtr(), symbolic_, &numeric_, control_,
@@ -105,6 +94,9 @@ void UmfpackSolver::Solve(const SparseMatrix& A, Vector& x, const Vector& b) {
     FreeNumeric();
     throw SolutionError(Concat("UMFPACK numeric factorization failed: ", UmfpackStatusText(status)));
   }
+}
+
+void UmfpackSolver::Substitute(const SparseMatrix& M, Vector& x, const Vector& b) {
   x.resize(M.cols());
   const auto solve_status = umfpack_dl_solve(UMFPACK_A, outer_.data(), inner_.data(), M.valuePtr(), x.data(),
                                              b.data(), numeric_, control_, nullptr);
@@ -136,11 +128,10 @@ void UmfpackSolver::FreeNumeric() {
   numeric_ = nullptr;
 }
 
-void UmfpackSolver::Clear() {
+void UmfpackSolver::Release() {
   FreeNumeric();
   if (symbolic_ != nullptr) umfpack_dl_free_symbolic(&symbolic_);
   symbolic_ = nullptr;
-  pattern_.Clear();
 }
 
 }  // namespace mc

@@ -5,6 +5,18 @@
 
 namespace mc {
 
+namespace {
+
+// Calls `step` on the first criterion, then on the second.
+template <class... Params, class... Args>
+void CallOnBoth(ConvergenceCriteria& first, ConvergenceCriteria& second, void (ConvergenceCriteria::*step)(Params...),
+                Args&... args) {
+  (first.*step)(args...);
+  (second.*step)(args...);
+}
+
+}  // namespace
+
 CombinedCriteria::CombinedCriteria(std::shared_ptr<ConvergenceCriteria> first,
                                    std::shared_ptr<ConvergenceCriteria> second)
     : first_(std::move(first)), second_(std::move(second)) {
@@ -13,21 +25,18 @@ CombinedCriteria::CombinedCriteria(std::shared_ptr<ConvergenceCriteria> first,
 }
 
 void CombinedCriteria::Initialize(ModelPart& model_part) {
-  first_->Initialize(model_part);
-  second_->Initialize(model_part);
+  CallOnBoth(*first_, *second_, &ConvergenceCriteria::Initialize, model_part);
   ConvergenceCriteria::Initialize(model_part);
 }
 
 void CombinedCriteria::InitializeSolutionStep(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A,
                                               const Vector& dx, const Vector& b) {
-  first_->InitializeSolutionStep(model_part, dofs, A, dx, b);
-  second_->InitializeSolutionStep(model_part, dofs, A, dx, b);
+  CallOnBoth(*first_, *second_, &ConvergenceCriteria::InitializeSolutionStep, model_part, dofs, A, dx, b);
 }
 
 void CombinedCriteria::InitializeNonLinearIteration(ModelPart& model_part, const DofsArray& dofs,
                                                     const SparseMatrix& A, const Vector& dx, const Vector& b) {
-  first_->InitializeNonLinearIteration(model_part, dofs, A, dx, b);
-  second_->InitializeNonLinearIteration(model_part, dofs, A, dx, b);
+  CallOnBoth(*first_, *second_, &ConvergenceCriteria::InitializeNonLinearIteration, model_part, dofs, A, dx, b);
 }
 
 bool CombinedCriteria::PreCriteria(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A,
@@ -46,14 +55,12 @@ bool CombinedCriteria::PostCriteria(ModelPart& model_part, const DofsArray& dofs
 
 void CombinedCriteria::FinalizeNonLinearIteration(ModelPart& model_part, const DofsArray& dofs,
                                                   const SparseMatrix& A, const Vector& dx, const Vector& b) {
-  first_->FinalizeNonLinearIteration(model_part, dofs, A, dx, b);
-  second_->FinalizeNonLinearIteration(model_part, dofs, A, dx, b);
+  CallOnBoth(*first_, *second_, &ConvergenceCriteria::FinalizeNonLinearIteration, model_part, dofs, A, dx, b);
 }
 
 void CombinedCriteria::FinalizeSolutionStep(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A,
                                             const Vector& dx, const Vector& b) {
-  first_->FinalizeSolutionStep(model_part, dofs, A, dx, b);
-  second_->FinalizeSolutionStep(model_part, dofs, A, dx, b);
+  CallOnBoth(*first_, *second_, &ConvergenceCriteria::FinalizeSolutionStep, model_part, dofs, A, dx, b);
 }
 
 std::vector<CriterionValue> CombinedCriteria::LastValues() const {

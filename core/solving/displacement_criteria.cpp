@@ -4,9 +4,6 @@
 
 #include <cmath>
 
-#include "core/model/model_part.h"
-#include "core/utilities/logger.h"
-#include "core/variables/kernel_variables.h"
 
 namespace mc {
 
@@ -26,18 +23,7 @@ bool DisplacementCriteria::PostCriteria(ModelPart& model_part, const DofsArray& 
     value += u * u;
     ++n;
   }
-  increment = std::sqrt(increment);
-  value = std::sqrt(value);
-  ratio_ = value > 0.0 ? increment / value : (increment > 0.0 ? 1.0 : 0.0);
-  absolute_ = n > 0 ? increment / std::sqrt(static_cast<double>(n)) : 0.0;
-  const bool converged = ratio_ <= relative_tolerance_ || absolute_ <= absolute_tolerance_;
-  if (echo_level_ >= 1)
-    Logger::Info(FormatLine(model_part.GetProcessInfo().GetValue(NL_ITERATION_NUMBER), LastValues(), converged));
-  return converged;
-}
-
-std::vector<CriterionValue> DisplacementCriteria::LastValues() const {
-  return {{"|du|/|u|", ratio_, relative_tolerance_}, {"|du|", absolute_, absolute_tolerance_}};
+  return Decide(model_part, std::sqrt(increment), std::sqrt(value), n);
 }
 
 }  // namespace mc

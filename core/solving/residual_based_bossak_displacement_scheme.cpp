@@ -110,37 +110,32 @@ void ResidualBasedBossakDisplacementScheme::AddDynamicsToRHS(const Entity& entit
 void ResidualBasedBossakDisplacementScheme::CalculateSystemContributions(Entity& entity, Matrix& lhs, Vector& rhs,
                                                                          EquationIdVectorType& ids,
                                                                          const ProcessInfo& info) {
-  static thread_local Matrix mass;
-  static thread_local Matrix damping;
   entity.CalculateLocalSystem(lhs, rhs, info);
-  entity.CalculateMassMatrix(mass, info);
-  entity.CalculateDampingMatrix(damping, info);
-  AddDynamicsToLHS(lhs, mass, damping);
-  AddDynamicsToRHS(entity, rhs, mass, damping);
-  entity.EquationIdVector(ids, info);
+  AddDynamics(entity, &lhs, &rhs, ids, info);
 }
 
 void ResidualBasedBossakDisplacementScheme::CalculateLHSContribution(Entity& entity, Matrix& lhs,
                                                                      EquationIdVectorType& ids,
                                                                      const ProcessInfo& info) {
-  static thread_local Matrix mass;
-  static thread_local Matrix damping;
   entity.CalculateLeftHandSide(lhs, info);
-  entity.CalculateMassMatrix(mass, info);
-  entity.CalculateDampingMatrix(damping, info);
-  AddDynamicsToLHS(lhs, mass, damping);
-  entity.EquationIdVector(ids, info);
+  AddDynamics(entity, &lhs, nullptr, ids, info);
 }
 
 void ResidualBasedBossakDisplacementScheme::CalculateRHSContribution(Entity& entity, Vector& rhs,
                                                                      EquationIdVectorType& ids,
                                                                      const ProcessInfo& info) {
+  entity.CalculateRightHandSide(rhs, info);
+  AddDynamics(entity, nullptr, &rhs, ids, info);
+}
+
+void ResidualBasedBossakDisplacementScheme::AddDynamics(Entity& entity, Matrix* lhs, Vector* rhs,
+                                                        EquationIdVectorType& ids, const ProcessInfo& info) {
   static thread_local Matrix mass;
   static thread_local Matrix damping;
-  entity.CalculateRightHandSide(rhs, info);
   entity.CalculateMassMatrix(mass, info);
   entity.CalculateDampingMatrix(damping, info);
-  AddDynamicsToRHS(entity, rhs, mass, damping);
+  if (lhs) AddDynamicsToLHS(*lhs, mass, damping);
+  if (rhs) AddDynamicsToRHS(entity, *rhs, mass, damping);
   entity.EquationIdVector(ids, info);
 }
 

@@ -51,6 +51,9 @@ class ResidualBasedBossakDisplacementScheme : public Scheme {
  private:
   /// Velocity and acceleration of every DoF with time derivatives, from its current value.
   void UpdateDerivatives(const DofsArray& dofs) const;
+  /// Adds the inertia and damping terms of `entity` to the LHS and / or RHS given, then its
+  /// equation ids.
+  void AddDynamics(Entity& entity, Matrix* lhs, Vector* rhs, EquationIdVectorType& ids, const ProcessInfo& info);
   void AddDynamicsToLHS(Matrix& lhs, const Matrix& mass, const Matrix& damping) const;
   void AddDynamicsToRHS(const Entity& entity, Vector& rhs, const Matrix& mass, const Matrix& damping) const;
 

@@ -4,9 +4,6 @@
 
 #include <cmath>
 
-#include "core/model/model_part.h"
-#include "core/utilities/logger.h"
-#include "core/variables/kernel_variables.h"
 
 namespace mc {
 
@@ -33,16 +30,7 @@ bool ResidualCriteria::PostCriteria(ModelPart& model_part, const DofsArray& dofs
     initial_norm_ = norm;
     initial_set_ = true;
   }
-  ratio_ = initial_norm_ > 0.0 ? norm / initial_norm_ : (norm > 0.0 ? 1.0 : 0.0);
-  absolute_ = n > 0 ? norm / std::sqrt(static_cast<double>(n)) : 0.0;
-  const bool converged = ratio_ <= relative_tolerance_ || absolute_ <= absolute_tolerance_;
-  if (echo_level_ >= 1)
-    Logger::Info(FormatLine(model_part.GetProcessInfo().GetValue(NL_ITERATION_NUMBER), LastValues(), converged));
-  return converged;
-}
-
-std::vector<CriterionValue> ResidualCriteria::LastValues() const {
-  return {{"|r|/|r0|", ratio_, relative_tolerance_}, {"|r|", absolute_, absolute_tolerance_}};
+  return Decide(model_part, norm, initial_norm_, n);
 }
 
 }  // namespace mc

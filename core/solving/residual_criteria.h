@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
-#include "core/solving/convergence_criteria.h"
+#include "core/solving/norm_criteria.h"
 
 namespace mc {
 
@@ -9,27 +9,22 @@ namespace mc {
 /// its tolerance; r0 is the residual of the first iteration of the step (the out-of-balance
 /// force the step starts from). `r` is the residual the strategy passes: by default the one
 /// assembled at the start of the iteration, so a linear problem converges at iteration 2.
-class ResidualCriteria : public ConvergenceCriteria {
+class ResidualCriteria : public NormCriteria {
  public:
   /// Kratos' defaults: `residual_relative_tolerance` 1e-4, `residual_absolute_tolerance` 1e-9.
   explicit ResidualCriteria(double relative_tolerance = 1e-4, double absolute_tolerance = 1e-9)
-      : relative_tolerance_(relative_tolerance), absolute_tolerance_(absolute_tolerance) {}
+      : NormCriteria(relative_tolerance, absolute_tolerance, "|r|/|r0|", "|r|") {}
 
   std::string Name() const override { return "residual_criterion"; }
   void InitializeSolutionStep(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A,
                               const Vector& dx, const Vector& b) override;
   bool PostCriteria(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A, const Vector& dx,
                     const Vector& b) override;
-  std::vector<CriterionValue> LastValues() const override;
   double InitialResidualNorm() const noexcept { return initial_norm_; }
 
  private:
-  double relative_tolerance_;
-  double absolute_tolerance_;
   bool initial_set_ = false;
   double initial_norm_ = 0.0;
-  double ratio_ = 0.0;
-  double absolute_ = 0.0;
 };
 
 }  // namespace mc

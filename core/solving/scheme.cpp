@@ -6,30 +6,35 @@
 
 namespace mc {
 
-void Scheme::Initialize(ModelPart& model_part) {
+namespace {
+
+// Runs one life-cycle step of every active element and condition.
+void CallOnActiveEntities(ModelPart& model_part, void (Entity::*step)(const ProcessInfo&)) {
   const ProcessInfo& info = model_part.GetProcessInfo();
-  ForEachActiveEntity(model_part, [&](Entity& e) { e.Initialize(info); });
+  ForEachActiveEntity(model_part, [&](Entity& e) { (e.*step)(info); });
+}
+
+}  // namespace
+
+void Scheme::Initialize(ModelPart& model_part) {
+  CallOnActiveEntities(model_part, &Entity::Initialize);
   initialized_ = true;
 }
 
 void Scheme::InitializeSolutionStep(ModelPart& model_part) {
-  const ProcessInfo& info = model_part.GetProcessInfo();
-  ForEachActiveEntity(model_part, [&](Entity& e) { e.InitializeSolutionStep(info); });
+  CallOnActiveEntities(model_part, &Entity::InitializeSolutionStep);
 }
 
 void Scheme::InitializeNonLinIteration(ModelPart& model_part) {
-  const ProcessInfo& info = model_part.GetProcessInfo();
-  ForEachActiveEntity(model_part, [&](Entity& e) { e.InitializeNonLinearIteration(info); });
+  CallOnActiveEntities(model_part, &Entity::InitializeNonLinearIteration);
 }
 
 void Scheme::FinalizeNonLinIteration(ModelPart& model_part) {
-  const ProcessInfo& info = model_part.GetProcessInfo();
-  ForEachActiveEntity(model_part, [&](Entity& e) { e.FinalizeNonLinearIteration(info); });
+  CallOnActiveEntities(model_part, &Entity::FinalizeNonLinearIteration);
 }
 
 void Scheme::FinalizeSolutionStep(ModelPart& model_part) {
-  const ProcessInfo& info = model_part.GetProcessInfo();
-  ForEachActiveEntity(model_part, [&](Entity& e) { e.FinalizeSolutionStep(info); });
+  CallOnActiveEntities(model_part, &Entity::FinalizeSolutionStep);
 }
 
 void Scheme::Update(ModelPart& model_part, const DofsArray& dofs, const Vector& dx) {

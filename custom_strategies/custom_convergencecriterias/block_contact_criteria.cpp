@@ -13,25 +13,99 @@ namespace mc {
 
 namespace {
 
+using Measure = BlockContactCriteria::Measure;
+
+/// How one family is measured by a criterion, and the prefix of its tolerance keys
+/// (`<prefix>_relative_tolerance`, `<prefix>_absolute_tolerance`).
+struct BlockKeys {
+  Measure measure;
+  const char* prefix;
+  double relative_default = 1e-4;
+  double absolute_default = 1e-9;
+};
+
+/// One criterion: Kratos' name and its blocks, indexed by DofFamily (none: not measured).
+struct CriterionRow {
+  const char* name;
+  std::array<std::optional<BlockKeys>, kDofFamilies> blocks;
+};
+
+constexpr BlockKeys kDisplacementIncrement{Measure::kIncrement, "displacement"};
+constexpr BlockKeys kDisplacementResidual{Measure::kResidual, "residual"};
+constexpr BlockKeys kRotationIncrement{Measure::kIncrement, "rotation"};
+constexpr BlockKeys kRotationResidual{Measure::kResidual, "rotation_residual"};
+constexpr BlockKeys kMultiplierIncrement{Measure::kIncrement, "contact_displacement"};
+constexpr BlockKeys kMultiplierResidual{Measure::kResidual, "contact_residual"};
+
+/// The table, indexed by BlockCriterion.
+constexpr std::array<CriterionRow, 5> kCriteria = {{
+    {"displacement_contact_criteria", {kDisplacementIncrement, kRotationIncrement, std::nullopt}},
+    {"displacement_residual_contact_criteria", {kDisplacementResidual, kRotationResidual, std::nullopt}},
+    {"displacement_lagrangemultiplier_contact_criteria",
+     {kDisplacementIncrement, kRotationIncrement, kMultiplierIncrement}},
+    {"displacement_lagrangemultiplier_residual_contact_criteria",
+     {kDisplacementResidual, kRotationResidual, kMultiplierResidual}},
+    {"displacement_lagrange_multiplier_mixed_contact_criteria",
+     {kDisplacementResidual, kRotationResidual, kMultiplierIncrement}},
+}};
+
+const CriterionRow& RowOf(BlockCriterion criterion) { return kCriteria[static_cast<std::size_t>(criterion)]; }
+
+std::string RelativeKey(const BlockKeys& keys) { return Concat(keys.prefix, "_relative_tolerance"); }
+std::string AbsoluteKey(const BlockKeys& keys) { return Concat(keys.prefix, "_absolute_tolerance"); }
+
+BlockContactCriteria::Blocks ReadBlocks(BlockCriterion criterion, Parameters& settings) {
+  settings.ValidateAndAssignDefaults(BlockContactCriteria::GetDefaultParameters(criterion));
+  const CriterionRow& row = RowOf(criterion);
+  BlockContactCriteria::Blocks blocks;
+  for (std::size_t f = 0; f < kDofFamilies; ++f) {
+    if (!row.blocks[f]) continue;
+    const BlockKeys& keys = *row.blocks[f];
+    const std::string relative = RelativeKey(keys);
+    const std::string absolute = AbsoluteKey(keys);
+    BlockContactCriteria::Block block{keys.measure, settings[relative].GetDouble(), settings[absolute].GetDouble()};
+    if (!(block.relative_tolerance >= 0.0) || !(block.absolute_tolerance >= 0.0))
+      throw InputError(Concat(settings.Where(), ": ", relative, " = ", block.relative_tolerance, " and ", absolute,
+                              " = ", block.absolute_tolerance, " must not be negative"));
+    blocks[f] = block;
+  }
+  return blocks;
+}
+
 constexpr double kTiny = std::numeric_limits<double>::epsilon();
 // Relative size of an increment that no longer changes the unknowns (a few hundred ulps).
 constexpr double kRoundOffIncrement = 256.0 * std::numeric_limits<double>::epsilon();
 
-// Column names: the symbol of the unknown of each family, and of its residual.
-constexpr std::array<const char*, kDofFamilies> kIncrementRatio = {"|du|/|u|", "|dw|/|w|", "|dlm|/|lm|"};
-constexpr std::array<const char*, kDofFamilies> kIncrementAbsolute = {"|du|/n", "|dw|/n", "|dlm|/n"};
-constexpr std::array<const char*, kDofFamilies> kResidualRatio = {"|r_u|^2/|r_u0|^2", "|r_w|^2/|r_w0|^2",
-                                                                   "|r_lm|^2/|r_lm0|^2"};
-constexpr std::array<const char*, kDofFamilies> kResidualAbsolute = {"|r_u|^2/n", "|r_w|^2/n", "|r_lm|^2/n"};
+// The symbol of the unknown of each family, in the column names ("|du|/|u|", "|r_lm|^2/n").
+constexpr std::array<const char*, kDofFamilies> kSymbol = {"u", "w", "lm"};
 
 }  // namespace
 
-BlockContactCriteria::BlockContactCriteria(const Blocks& blocks, bool ensure_contact, bool print_convergence_criterion)
-    : blocks_(blocks), ensure_contact_(ensure_contact), print_(print_convergence_criterion) {
+Parameters BlockContactCriteria::GetDefaultParameters(BlockCriterion criterion) {
+  const CriterionRow& row = RowOf(criterion);
+  Parameters defaults;
+  defaults.AddString("name", row.name);
+  defaults.AddBool("ensure_contact", false);
+  defaults.AddBool("print_convergence_criterion", false);
+  for (const auto& keys : row.blocks) {
+    if (!keys) continue;
+    defaults.AddDouble(RelativeKey(*keys), keys->relative_default);
+    defaults.AddDouble(AbsoluteKey(*keys), keys->absolute_default);
+  }
+  return defaults;
+}
+
+BlockContactCriteria::BlockContactCriteria(BlockCriterion criterion, Parameters settings)
+    : criterion_(criterion),
+      blocks_(ReadBlocks(criterion, settings)),
+      ensure_contact_(settings["ensure_contact"].GetBool()),
+      print_(settings["print_convergence_criterion"].GetBool()) {
   assert(blocks_[static_cast<std::size_t>(DofFamily::kDisplacement)].has_value());
   for (std::size_t f = 0; f < kDofFamilies; ++f)
     if (blocks_[f] && blocks_[f]->measure == Measure::kResidual) SetActualizeRHSFlag(true);
 }
+
+std::string BlockContactCriteria::Name() const { return RowOf(criterion_).name; }
 
 void BlockContactCriteria::InitializeSolutionStep(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A,
                                                   const Vector& dx, const Vector& b) {
@@ -112,27 +186,14 @@ std::vector<CriterionValue> BlockContactCriteria::LastValues() const {
   for (std::size_t f = 0; f < kDofFamilies; ++f) {
     if (!blocks_[f] || !results_[f].present) continue;
     const Block& block = *blocks_[f];
+    const char* x = kSymbol[f];
     const bool increment = block.measure == Measure::kIncrement;
-    values.push_back({increment ? kIncrementRatio[f] : kResidualRatio[f], results_[f].ratio, block.relative_tolerance});
-    values.push_back(
-        {increment ? kIncrementAbsolute[f] : kResidualAbsolute[f], results_[f].absolute, block.absolute_tolerance});
+    values.push_back({increment ? Concat("|d", x, "|/|", x, "|") : Concat("|r_", x, "|^2/|r_", x, "0|^2"),
+                      results_[f].ratio, block.relative_tolerance});
+    values.push_back({increment ? Concat("|d", x, "|/n") : Concat("|r_", x, "|^2/n"), results_[f].absolute,
+                      block.absolute_tolerance});
   }
   return values;
-}
-
-BlockContactCriteria::Blocks BlockContactCriteria::ReadBlocks(
-    Parameters& settings, const std::string& defaults_json, const std::array<std::optional<BlockKeys>, kDofFamilies>& keys) {
-  settings.ValidateAndAssignDefaults(Parameters(defaults_json));
-  Blocks blocks;
-  for (std::size_t f = 0; f < kDofFamilies; ++f) {
-    if (!keys[f]) continue;
-    Block block{keys[f]->measure, settings[keys[f]->relative].GetDouble(), settings[keys[f]->absolute].GetDouble()};
-    if (!(block.relative_tolerance >= 0.0) || !(block.absolute_tolerance >= 0.0))
-      throw InputError(Concat(settings.Where(), ": ", keys[f]->relative, " = ", block.relative_tolerance, " and ",
-                              keys[f]->absolute, " = ", block.absolute_tolerance, " must not be negative"));
-    blocks[f] = block;
-  }
-  return blocks;
 }
 
 }  // namespace mc

@@ -4,6 +4,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "core/parameters/parameters.h"
 #include "core/solving/convergence_criteria.h"
@@ -11,9 +12,31 @@
 
 namespace mc {
 
-/// The engine of the displacement / residual / mixed contact criteria: the free DoFs are split
-/// into families (displacement, rotation, Lagrange multiplier, see FamilyOf) and each family
-/// that is configured and present is measured on its own, by increment or by residual:
+/// The block criteria of Kratos' contact application. Each is a row of the table in
+/// block_contact_criteria.cpp: its Kratos name and, per DoF family, the measure and the prefix
+/// of the tolerance keys. Kratos' names and keys:
+///
+///   criterion                                                  displacement  rotation            multiplier
+///   displacement_contact_criteria                              displacement  rotation            -
+///   displacement_residual_contact_criteria                     residual      rotation_residual   -
+///   displacement_lagrangemultiplier_contact_criteria           displacement  rotation            contact_displacement
+///   displacement_lagrangemultiplier_residual_contact_criteria  residual      rotation_residual   contact_residual
+///   displacement_lagrange_multiplier_mixed_contact_criteria    residual      rotation_residual   contact_displacement
+///
+/// (`displacement`, `contact_displacement`: increments; `residual`, `contact_residual`:
+/// residuals). The mixed criterion is usually the most robust for ALM: the multiplier residual
+/// (the weak gap) is a poor indicator while the active set still changes.
+enum class BlockCriterion {
+  kDisplacement,
+  kDisplacementResidual,
+  kDisplacementLagrangeMultiplier,
+  kDisplacementLagrangeMultiplierResidual,
+  kDisplacementLagrangeMultiplierMixed,
+};
+
+/// The engine of the block criteria: the free DoFs are split into families (displacement,
+/// rotation, Lagrange multiplier, see FamilyOf) and each family that the criterion's row names
+/// and that is present is measured on its own, by increment or by residual:
 ///
 ///   increment:  ratio = |dx| / |x|        absolute = |dx| / n
 ///   residual:   ratio = |r|^2 / |r_0|^2   absolute = |r|^2 / n
@@ -24,6 +47,10 @@ namespace mc {
 /// A family converges when ratio <= relative tolerance or absolute <= absolute tolerance; the
 /// criterion converges when every family does. A multiplier family whose values are all zero
 /// (no node in contact) counts as converged, or is an error with `ensure_contact`.
+///
+/// Settings (Kratos' names and defaults): `ensure_contact` (false), `print_convergence_criterion`
+/// (false) and, per family of the row, `<prefix>_relative_tolerance` (1e-4) and
+/// `<prefix>_absolute_tolerance` (1e-9).
 class BlockContactCriteria : public ConvergenceCriteria {
  public:
   enum class Measure { kIncrement, kResidual };
@@ -42,8 +69,13 @@ class BlockContactCriteria : public ConvergenceCriteria {
     bool converged = true;
   };
 
-  BlockContactCriteria(const Blocks& blocks, bool ensure_contact, bool print_convergence_criterion);
+  /// Validates `settings` against the defaults of `criterion` (unknown keys rejected with the
+  /// nearest valid one) and reads its tolerances.
+  BlockContactCriteria(BlockCriterion criterion, Parameters settings);
+  /// Kratos' defaults of `criterion`, keys in Kratos' order.
+  static Parameters GetDefaultParameters(BlockCriterion criterion);
 
+  std::string Name() const override;
   void InitializeSolutionStep(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A,
                               const Vector& dx, const Vector& b) override;
   bool PostCriteria(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A, const Vector& dx,
@@ -59,19 +91,8 @@ class BlockContactCriteria : public ConvergenceCriteria {
   bool EnsureContact() const noexcept { return ensure_contact_; }
   bool PrintConvergenceCriterion() const noexcept { return print_; }
 
- protected:
-  /// Tolerance keys of one family in the settings of a named criterion.
-  struct BlockKeys {
-    Measure measure;
-    const char* relative;
-    const char* absolute;
-  };
-  /// Validates `settings` against `defaults` (unknown keys rejected with the nearest valid
-  /// one) and reads the families' tolerances.
-  static Blocks ReadBlocks(Parameters& settings, const std::string& defaults_json,
-                           const std::array<std::optional<BlockKeys>, kDofFamilies>& keys);
-
  private:
+  BlockCriterion criterion_;
   Blocks blocks_;
   bool ensure_contact_;
   bool print_;
@@ -79,5 +100,24 @@ class BlockContactCriteria : public ConvergenceCriteria {
   std::array<double, kDofFamilies> initial_residual_{};
   bool initial_residual_set_ = false;
 };
+
+/// One row of the table as a type of its own, so that each criterion keeps its Kratos class name
+/// (in Python too) and a constructor taking only the settings.
+template <BlockCriterion kCriterion>
+class NamedBlockContactCriteria final : public BlockContactCriteria {
+ public:
+  explicit NamedBlockContactCriteria(Parameters settings = Parameters())
+      : BlockContactCriteria(kCriterion, std::move(settings)) {}
+  static Parameters GetDefaultParameters() { return BlockContactCriteria::GetDefaultParameters(kCriterion); }
+};
+
+using DisplacementContactCriteria = NamedBlockContactCriteria<BlockCriterion::kDisplacement>;
+using DisplacementResidualContactCriteria = NamedBlockContactCriteria<BlockCriterion::kDisplacementResidual>;
+using DisplacementLagrangeMultiplierContactCriteria =
+    NamedBlockContactCriteria<BlockCriterion::kDisplacementLagrangeMultiplier>;
+using DisplacementLagrangeMultiplierResidualContactCriteria =
+    NamedBlockContactCriteria<BlockCriterion::kDisplacementLagrangeMultiplierResidual>;
+using DisplacementLagrangeMultiplierMixedContactCriteria =
+    NamedBlockContactCriteria<BlockCriterion::kDisplacementLagrangeMultiplierMixed>;
 
 }  // namespace mc

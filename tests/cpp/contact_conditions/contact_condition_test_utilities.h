@@ -13,6 +13,7 @@
 #include "custom_conditions/mortar_contact_condition.h"
 #include "custom_utilities/contact_variables.h"
 #include "custom_utilities/normal_calculation_utilities.h"
+#include "tests/cpp/common/finite_differences.h"
 
 namespace mc::test {
 
@@ -37,33 +38,6 @@ inline Node& MakeNode(ModelPart& part, IndexType id, const Array3& x) {
   node.AddDof(VECTOR_LAGRANGE_MULTIPLIER_Y, &WEIGHTED_VECTOR_RESIDUAL_Y);
   node.AddDof(VECTOR_LAGRANGE_MULTIPLIER_Z, &WEIGHTED_VECTOR_RESIDUAL_Z);
   return node;
-}
-
-/// Sets a DoF value; for displacements also the current coordinates (x = X0 + u).
-inline void SetDofValue(Dof& dof, double value) {
-  dof.Value() = value;
-  const Variable<double>* u[3] = {&DISPLACEMENT_X, &DISPLACEMENT_Y, &DISPLACEMENT_Z};
-  for (int c = 0; c < 3; ++c)
-    if (dof.variable == u[c]) dof.node->Coordinates()[c] = dof.node->X0()[c] + value;
-}
-
-/// Central finite differences of -RHS with respect to every DoF of the condition.
-inline Matrix FiniteDifferenceLhs(Condition& condition, const ProcessInfo& info, double h) {
-  DofsVectorType dofs;
-  condition.GetDofList(dofs, info);
-  const auto n = static_cast<Eigen::Index>(dofs.size());
-  Matrix fd(n, n);
-  Vector plus, minus;
-  for (Eigen::Index q = 0; q < n; ++q) {
-    const double value = dofs[q]->Value();
-    SetDofValue(*dofs[q], value + h);
-    condition.CalculateRightHandSide(plus, info);
-    SetDofValue(*dofs[q], value - h);
-    condition.CalculateRightHandSide(minus, info);
-    SetDofValue(*dofs[q], value);
-    fd.col(q) = -(plus - minus) / (2.0 * h);
-  }
-  return fd;
 }
 
 }  // namespace mc::test

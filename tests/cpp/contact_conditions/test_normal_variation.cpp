@@ -326,18 +326,7 @@ double CheckAgainstFiniteDifferences(const Pairs& nv, const Pairs* fixed_pairs, 
   const Vector r = assembly.Residual(nv, info);
   EXPECT_GT(r.norm(), 0.0);
   const Matrix tangent = assembly.Tangent(nv, info);
-  const double h = 1e-6;
-  Matrix fd(assembly.Size(), assembly.Size());
-  for (Eigen::Index q = 0; q < assembly.Size(); ++q) {
-    Dof& dof = *assembly.dofs[q];
-    const double value = dof.Value();
-    SetDofValue(dof, value + h);
-    const Vector plus = assembly.Residual(nv, info);
-    SetDofValue(dof, value - h);
-    const Vector minus = assembly.Residual(nv, info);
-    SetDofValue(dof, value);
-    fd.col(q) = -(plus - minus) / (2.0 * h);
-  }
+  const Matrix fd = FiniteDifferenceJacobian(assembly.dofs, 1e-6, [&] { return assembly.Residual(nv, info); });
   const double scale = fd.cwiseAbs().maxCoeff();
   EXPECT_GT(scale, 0.0);
   const double error = (tangent - fd).cwiseAbs().maxCoeff() / scale;

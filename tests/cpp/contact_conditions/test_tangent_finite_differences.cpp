@@ -102,7 +102,7 @@ struct Fixture {
     EXPECT_EQ((lhs - lhs_only).norm(), 0.0);
     EXPECT_LE((rhs - rhs_only).norm(), 1e-13 * rhs.norm());
 
-    const Matrix fd = FiniteDifferenceLhs(*pair, info, 1e-6);
+    const Matrix fd = FiniteDifferenceTangent(*pair, 1e-6, info);
     const double scale = lhs.cwiseAbs().maxCoeff();
     ASSERT_GT(scale, 0.0);
     for (Eigen::Index r = 0; r < lhs.rows(); ++r)

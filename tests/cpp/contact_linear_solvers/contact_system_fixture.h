@@ -178,4 +178,17 @@ struct ContactSystem {
   }
 };
 
+/// A ContactSystem built from `args` and assembled: A, the residual b and the DoFs in row order.
+template <class System>
+struct AssembledSystem {
+  System system;
+  SparseMatrix A;
+  Vector b;
+  std::vector<Dof*> dofs;
+  template <class... Args>
+  explicit AssembledSystem(Args&&... args) : system(std::forward<Args>(args)...) {
+    system.Assemble(A, b, dofs);
+  }
+};
+
 }  // namespace mc::test

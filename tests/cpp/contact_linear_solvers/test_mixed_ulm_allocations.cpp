@@ -47,11 +47,8 @@ long AllocationsOfOneSolve(MixedULMLinearSolver& solver, const SparseMatrix& A, 
 }
 
 TEST(MixedULMAllocations, RepeatedSolveWithSamePatternAllocatesNothing) {
-  ContactSystem<3, 4, 4> system({true, false, true, true});
-  SparseMatrix A;
-  Vector b;
-  std::vector<Dof*> dofs;
-  system.Assemble(A, b, dofs);
+  AssembledSystem<ContactSystem<3, 4, 4>> assembled(std::vector<bool>{true, false, true, true});
+  auto& [system, A, b, dofs] = assembled;
   b.setConstant(1.0);
   MixedULMLinearSolver solver(std::make_unique<UncountedUmfpack>());
   solver.Initialize(A);

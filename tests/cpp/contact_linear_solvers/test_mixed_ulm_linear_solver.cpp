@@ -84,12 +84,9 @@ TYPED_TEST(CondensationTest, MatchesMonolithicForEveryActivePattern) {
     std::vector<bool> active(kSlave);
     for (int i = 0; i < kSlave; ++i) active[i] = pattern == 1 || (pattern == 0 && i % 2 == 0);
     const int n_active = static_cast<int>(std::count(active.begin(), active.end(), true));
-    typename TypeParam::System system(active);
-    SparseMatrix A;
-    Vector assembled;
-    std::vector<Dof*> dofs;
-    system.Assemble(A, assembled, dofs);
-    const Vector b = RandomRhs(assembled, 11 + pattern);
+    AssembledSystem<typename TypeParam::System> assembled(active);
+    const auto& [system, A, residual, dofs] = assembled;
+    const Vector b = RandomRhs(residual, 11 + pattern);
     const Vector reference = SolveMonolithic(A, b);
     MixedULMLinearSolver solver = MakeMixed();
     const Vector x = SolveMixed(solver, A, dofs, b);
@@ -119,12 +116,9 @@ TYPED_TEST(CondensationTest, MatchesMonolithicForEveryActivePattern) {
 
 TYPED_TEST(CondensationTest, NonDiagonalSlaveMultiplierBlockFallsBackToFullSystem) {
   constexpr int kSlave = TypeParam::kSlave;
-  typename TypeParam::System system(std::vector<bool>(kSlave, true));
-  SparseMatrix A;
-  Vector assembled;
-  std::vector<Dof*> dofs;
-  system.Assemble(A, assembled, dofs);
-  const Vector b = RandomRhs(assembled, 3);
+  AssembledSystem<typename TypeParam::System> assembled(std::vector<bool>(kSlave, true));
+  auto& [system, A, residual, dofs] = assembled;
+  const Vector b = RandomRhs(residual, 3);
 
   // K(slave node 1 DISPLACEMENT_X, VECTOR_LAGRANGE_MULTIPLIER_Y of slave node 2) != 0.
   const Eigen::Index s = RowOf(dofs, *system.slaves[0], DISPLACEMENT_X);
@@ -144,19 +138,17 @@ TYPED_TEST(CondensationTest, NonDiagonalSlaveMultiplierBlockFallsBackToFullSyste
   A.coeffRef(s, l) = 1e-13;
   const Vector x_small = SolveMixed(solver, A, dofs, b);
   EXPECT_TRUE(solver.LastSolveWasCondensed()) << solver.FallbackReason();
-  EXPECT_LE((x_small - SolveMonolithic(A, b)).lpNorm<Eigen::Infinity>() / reference.lpNorm<Eigen::Infinity>(), 1e-10);
+  const Vector difference = x_small - SolveMonolithic(A, b);
+  EXPECT_LE(difference.lpNorm<Eigen::Infinity>() / reference.lpNorm<Eigen::Infinity>(), 1e-10);
 }
 
 TYPED_TEST(CondensationTest, NonDiagonalInactiveMultiplierRowFallsBack) {
   constexpr int kSlave = TypeParam::kSlave;
   std::vector<bool> active(kSlave, true);
   active[1] = false;
-  typename TypeParam::System system(active);
-  SparseMatrix A;
-  Vector assembled;
-  std::vector<Dof*> dofs;
-  system.Assemble(A, assembled, dofs);
-  const Vector b = RandomRhs(assembled, 5);
+  AssembledSystem<typename TypeParam::System> assembled(active);
+  auto& [system, A, residual, dofs] = assembled;
+  const Vector b = RandomRhs(residual, 5);
   const Eigen::Index i = RowOf(dofs, *system.slaves[1], VECTOR_LAGRANGE_MULTIPLIER_X);
   const Eigen::Index j = RowOf(dofs, *system.masters[0], DISPLACEMENT_Y);
   A.coeffRef(i, j) = -0.2;
@@ -200,12 +192,9 @@ TYPED_TEST(CondensationTest, FixedMultiplierAndFixedSlaveDisplacementStayUnconde
 // not exact for its rational shape functions, but each pair's dual basis is biorthogonal in the
 // pair's own quadrature, so D stays diagonal and the system condenses.
 TEST(MixedULMLinearSolver, WarpedSlaveQuadrilateralCondensesAndMatches) {
-  ContactSystem<3, 4, 4> system({true, true, true, false}, true);
-  SparseMatrix A;
-  Vector assembled;
-  std::vector<Dof*> dofs;
-  system.Assemble(A, assembled, dofs);
-  const Vector b = RandomRhs(assembled, 13);
+  const AssembledSystem<ContactSystem<3, 4, 4>> assembled(std::vector<bool>{true, true, true, false}, true);
+  const auto& [system, A, residual, dofs] = assembled;
+  const Vector b = RandomRhs(residual, 13);
   MixedULMLinearSolver solver = MakeMixed();
   const Vector x = SolveMixed(solver, A, dofs, b);
   EXPECT_TRUE(solver.LastSolveWasCondensed()) << solver.FallbackReason();
@@ -217,12 +206,9 @@ TEST(MixedULMLinearSolver, NameDirectnessAndSolveWithoutDofData) {
   EXPECT_EQ(solver.Name(), "mixed_ulm_linear_solver(umfpack)");
   EXPECT_TRUE(solver.IsDirect());
   EXPECT_TRUE(solver.AdditionalPhysicalDataIsNeeded());
-  ContactSystem<2, 2, 2> system({true, false});
-  SparseMatrix A;
-  Vector assembled;
-  std::vector<Dof*> dofs;
-  system.Assemble(A, assembled, dofs);
-  const Vector b = RandomRhs(assembled, 1);
+  const AssembledSystem<ContactSystem<2, 2, 2>> assembled(std::vector<bool>{true, false});
+  const auto& [system, A, residual, dofs] = assembled;
+  const Vector b = RandomRhs(residual, 1);
   solver.Initialize(A);
   Vector x = Vector::Zero(b.size());
   solver.Solve(A, x, b);  // e.g. LinearSolver.Solve from Python: no DoFs, full system

@@ -5,6 +5,7 @@
 #include "core/model/registry.h"
 #include "core/utilities/logger.h"
 #include "core/variables/kernel_variables.h"
+#include "custom_processes/contact_interface_builder.h"
 #include "structural/application/register_structural_mechanics.h"
 
 namespace mc::test {
@@ -51,6 +52,19 @@ ModelPart& ReadCase(Model& model, const std::string& relative_mdpa) {
   MdpaReader(CasesDir() + "/" + relative_mdpa).ReadModelPart(root);
   return root;
 }
+
+ModelPart& BuildInterface(ModelPart& root, std::vector<std::string> parts, std::vector<std::string> slave_parts) {
+  ContactInterfaceSettings settings;
+  settings.parts = std::move(parts);
+  settings.slave_parts = std::move(slave_parts);
+  return ContactInterfaceBuilder(root).Build(settings);
+}
+
+ModelPart& ReadPatch2D(Model& model) {
+  return ReadCase(model, "ALM_frictionless_contact_test_2D/hyper_simple_patch_test.mdpa");
+}
+
+ModelPart& PatchInterface(ModelPart& root) { return BuildInterface(root, {"Contact_Part"}, {"Parts_Parts_Auto2"}); }
 
 WarningCapture::WarningCapture() {
   Logger::SetSink([this](Logger::Level level, const std::string& message) {

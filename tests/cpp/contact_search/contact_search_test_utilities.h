@@ -30,6 +30,16 @@ std::string CasesDir();
 /// A root "Structure" with NORMAL, NODAL_H and DISPLACEMENT, read from a shared case mdpa.
 ModelPart& ReadCase(Model& model, const std::string& relative_mdpa);
 
+/// The contact interface of `parts` under `root`, `slave_parts` their slave side (automatic
+/// roles when empty), the other settings at their defaults.
+ModelPart& BuildInterface(ModelPart& root, std::vector<std::string> parts, std::vector<std::string> slave_parts = {});
+
+/// The shared 2D patch case (hyper_simple_patch_test.mdpa: two unit squares, the upper one
+/// 0.001 above the lower one).
+ModelPart& ReadPatch2D(Model& model);
+/// Its interface: Contact_Part, the lower body's face (Parts_Parts_Auto2) the slave side.
+ModelPart& PatchInterface(ModelPart& root);
+
 /// Captures Logger warnings while alive.
 class WarningCapture {
  public:

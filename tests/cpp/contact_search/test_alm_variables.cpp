@@ -13,13 +13,10 @@ namespace mc {
 namespace {
 
 ModelPart& Patch(Model& model) {
-  ModelPart& root = test::ReadCase(model, "ALM_frictionless_contact_test_2D/hyper_simple_patch_test.mdpa");
+  ModelPart& root = test::ReadPatch2D(model);
   root.GetProperties(1).SetValue(YOUNG_MODULUS, 2.0e5);  // lower body, slave
   root.GetProperties(2).SetValue(YOUNG_MODULUS, 1.0e5);  // upper body, master
-  ContactInterfaceSettings settings;
-  settings.parts = {"Contact_Part"};
-  settings.slave_parts = {"Parts_Parts_Auto2"};
-  return ContactInterfaceBuilder(root).Build(settings);
+  return test::PatchInterface(root);
 }
 
 TEST(ALMVariables, SmallerSideOfEOverH) {

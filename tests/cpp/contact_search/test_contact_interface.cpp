@@ -12,6 +12,7 @@
 #include "core/variables/kernel_variables.h"
 #include "custom_processes/contact_interface_builder.h"
 #include "custom_utilities/normal_calculation_utilities.h"
+#include "tests/cpp/common/error_message.h"
 
 namespace mc {
 namespace {
@@ -27,11 +28,8 @@ double NodalH(const ModelPart& part, IndexType id) { return part.GetNode(id).Fas
 
 TEST(ContactInterface, Patch2DGeneratesOutwardFacesAndFlags) {
   Model model;
-  ModelPart& root = test::ReadCase(model, "ALM_frictionless_contact_test_2D/hyper_simple_patch_test.mdpa");
-  ContactInterfaceSettings settings;
-  settings.parts = {"Contact_Part"};
-  settings.slave_parts = {"Parts_Parts_Auto2"};
-  ModelPart& sub = ContactInterfaceBuilder(root).Build(settings);
+  ModelPart& root = test::ReadPatch2D(model);
+  ModelPart& sub = test::PatchInterface(root);
 
   EXPECT_EQ(sub.FullName(), "Structure.Contact.ContactSub0");
   EXPECT_TRUE(root.HasSubModelPart("ComputingContact.ComputingContactSub0"));
@@ -66,7 +64,7 @@ TEST(ContactInterface, Patch2DGeneratesOutwardFacesAndFlags) {
   EXPECT_TRUE(root.GetProperties(100).Has(FRICTION_COEFFICIENT));
   EXPECT_EQ(root.GetProperties(100).GetValue(FRICTION_COEFFICIENT), 0.0);
   // Rebuilding reuses the existing interface.
-  EXPECT_EQ(&ContactInterfaceBuilder(root).Build(settings), &sub);
+  EXPECT_EQ(&test::PatchInterface(root), &sub);
   EXPECT_EQ(sub.NumberOfConditions(), 2u);
 }
 
@@ -102,10 +100,7 @@ TEST(ContactInterface, TriQuadFacesOfTetrahedraAndHexahedron) {
   Model model;
   ModelPart& root =
       test::ReadCase(model, "ALM_frictionless_contact_test_3D/3D_contact_simplest_patch_matching_triquad_test.mdpa");
-  ContactInterfaceSettings settings;
-  settings.parts = {"DISPLACEMENT_Displacement_Auto3"};
-  settings.slave_parts = {"Parts_Parts_Auto2"};
-  ModelPart& sub = ContactInterfaceBuilder(root).Build(settings);
+  ModelPart& sub = test::BuildInterface(root, {"DISPLACEMENT_Displacement_Auto3"}, {"Parts_Parts_Auto2"});
   std::size_t triangles = 0, quads = 0;
   double slave_area = 0.0, master_area = 0.0;
   for (const Condition* condition : sub.Conditions()) {
@@ -134,33 +129,20 @@ TEST(ContactInterface, TriQuadFacesOfTetrahedraAndHexahedron) {
 
 TEST(ContactInterface, UnknownPartSuggestsNearestName) {
   Model model;
-  ModelPart& root = test::ReadCase(model, "ALM_frictionless_contact_test_2D/hyper_simple_patch_test.mdpa");
-  ContactInterfaceSettings settings;
-  settings.parts = {"Contact_Prt"};
-  try {
-    ContactInterfaceBuilder(root).Build(settings);
-    FAIL() << "expected an InputError";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("Contact_Part"), std::string::npos) << e.what();
-  }
+  ModelPart& root = test::ReadPatch2D(model);
+  const std::string message = test::ErrorMessageOf([&] { test::BuildInterface(root, {"Contact_Prt"}); });
+  EXPECT_NE(message.find("Contact_Part"), std::string::npos) << message;
 }
 
 TEST(ContactInterface, InvertedMdpaConditionIsAnError) {
   Model model;
-  ModelPart& root = test::ReadCase(model, "ALM_frictionless_contact_test_2D/hyper_simple_patch_test.mdpa");
+  ModelPart& root = test::ReadPatch2D(model);
   ModelPart& part = root.CreateSubModelPart("Given");
   part.CreateNewCondition("LineCondition2D2N", 1, {4, 3}, &root.GetOrCreateProperties(0));  // points into element 1
   part.CreateNewCondition("LineCondition2D2N", 2, {5, 6}, &root.GetOrCreateProperties(0));
-  ContactInterfaceSettings settings;
-  settings.parts = {"Given"};
-  settings.slave_parts = {"Parts_Parts_Auto2"};
-  try {
-    ContactInterfaceBuilder(root).Build(settings);
-    FAIL() << "expected an InputError";
-  } catch (const InputError& e) {
-    const std::string message = e.what();
-    EXPECT_NE(message.find("condition 1 (nodes 4 3) points into element 1"), std::string::npos) << message;
-  }
+  const std::string message =
+      test::ErrorMessageOf([&] { test::BuildInterface(root, {"Given"}, {"Parts_Parts_Auto2"}); });
+  EXPECT_NE(message.find("condition 1 (nodes 4 3) points into element 1"), std::string::npos) << message;
 }
 
 TEST(ContactInterface, SidesNormalsPointingTheSameWayIsAnError) {
@@ -176,18 +158,10 @@ TEST(ContactInterface, SidesNormalsPointingTheSameWayIsAnError) {
   ModelPart& upper = root.CreateSubModelPart("Upper");
   lower.CreateNewCondition("LineCondition2D2N", 1, {1, 2}, &root.GetOrCreateProperties(0));
   upper.CreateNewCondition("LineCondition2D2N", 2, {3, 4}, &root.GetOrCreateProperties(0));
-  ContactInterfaceSettings settings;
-  settings.parts = {"Lower", "Upper"};
-  settings.slave_parts = {"Lower"};
-  try {
-    ContactInterfaceBuilder(root).Build(settings);
-    FAIL() << "expected an InputError";
-  } catch (const InputError& e) {
-    const std::string message = e.what();
-    EXPECT_NE(message.find("pointing the same way"), std::string::npos) << message;
-    EXPECT_NE(message.find("slave condition 1 (nodes 1 2)"), std::string::npos) << message;
-    EXPECT_NE(message.find("Lower"), std::string::npos) << message;
-  }
+  const std::string message = test::ErrorMessageOf([&] { test::BuildInterface(root, {"Lower", "Upper"}, {"Lower"}); });
+  EXPECT_NE(message.find("pointing the same way"), std::string::npos) << message;
+  EXPECT_NE(message.find("slave condition 1 (nodes 1 2)"), std::string::npos) << message;
+  EXPECT_NE(message.find("Lower"), std::string::npos) << message;
 }
 
 }  // namespace

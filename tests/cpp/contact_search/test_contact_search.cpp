@@ -24,11 +24,8 @@ Parameters SearchSettings(const std::string& extra = "") {
 }
 
 ModelPart& BuildPatch2D(Model& model) {
-  ModelPart& root = test::ReadCase(model, "ALM_frictionless_contact_test_2D/hyper_simple_patch_test.mdpa");
-  ContactInterfaceSettings settings;
-  settings.parts = {"Contact_Part"};
-  settings.slave_parts = {"Parts_Parts_Auto2"};
-  return ContactInterfaceBuilder(root).Build(settings);
+  ModelPart& root = test::ReadPatch2D(model);
+  return test::PatchInterface(root);
 }
 
 TEST(ContactSearch, MatchingPatch2DPairsAndActiveSet) {
@@ -72,12 +69,9 @@ TEST(ContactSearch, SmallActiveCheckFactorLeavesNodesInactive) {
 TEST(ContactSearch, RadiusTooSmallGivesClearMessage) {
   // Upper body lifted by 1: the gap 1.001 minus the master's half length 0.5 exceeds 0.1 x 1.
   Model model;
-  ModelPart& root = test::ReadCase(model, "ALM_frictionless_contact_test_2D/hyper_simple_patch_test.mdpa");
+  ModelPart& root = test::ReadPatch2D(model);
   for (IndexType id : {5, 6, 7, 8}) root.GetNode(id).Coordinates().y() += 1.0;
-  ContactInterfaceSettings settings;
-  settings.parts = {"Contact_Part"};
-  settings.slave_parts = {"Parts_Parts_Auto2"};
-  ModelPart& sub = ContactInterfaceBuilder(root).Build(settings);
+  ModelPart& sub = test::PatchInterface(root);
   test::WarningCapture warnings;
   ContactSearchProcess search(root, sub, SearchSettings(R"("search_factor": 0.1, "type_search": "in_radius")"));
   const ContactSearchStatistics stats = search.UpdateMortarConditions();
@@ -96,15 +90,12 @@ TEST(ContactSearch, ObbRejectsLaterallyFarCandidateInsideTheRadius) {
   // by twice the face length, inside the search ball, is rejected with OBB and kept without.
   for (const char* type : {"in_radius", "in_radius_with_obb", "in_box", "in_box_with_obb", "InRadiusWithOBB"}) {
     Model model;
-    ModelPart& root = test::ReadCase(model, "ALM_frictionless_contact_test_2D/hyper_simple_patch_test.mdpa");
+    ModelPart& root = test::ReadPatch2D(model);
     for (IndexType id : {5, 6, 7, 8}) {
       root.GetNode(id).Coordinates().x() += 2.0;
       root.GetNode(id).X0().x() += 2.0;
     }
-    ContactInterfaceSettings settings;
-    settings.parts = {"Contact_Part"};
-    settings.slave_parts = {"Parts_Parts_Auto2"};
-    ModelPart& sub = ContactInterfaceBuilder(root).Build(settings);
+    ModelPart& sub = test::PatchInterface(root);
     test::WarningCapture warnings;
     ContactSearchProcess search(
         root, sub, SearchSettings(std::string(R"("check_gap": "no_check", "type_search": ")") + type + "\""));
@@ -130,9 +121,7 @@ TEST(ContactSearch, GapChecksOnAdjacentFaces) {
   Model model;
   ModelPart& root =
       test::ReadCase(model, "ALM_frictionless_contact_test_3D/3D_contact_simplest_patch_matching_test.mdpa");
-  ContactInterfaceSettings settings;
-  settings.parts = {"Contact_Part"};
-  ModelPart& sub = ContactInterfaceBuilder(root).Build(settings);
+  ModelPart& sub = test::BuildInterface(root, {"Contact_Part"});
   ContactSearchSlot automatic;
   automatic.predefined_master_slave = false;
   ContactSearchProcess search(root, sub, SearchSettings(), automatic);
@@ -155,10 +144,7 @@ TEST(ContactSearch, TriangleSlaveOnQuadMaster3D) {
   Model model;
   ModelPart& root =
       test::ReadCase(model, "ALM_frictionless_contact_test_3D/3D_contact_simplest_patch_matching_triquad_test.mdpa");
-  ContactInterfaceSettings settings;
-  settings.parts = {"DISPLACEMENT_Displacement_Auto3"};
-  settings.slave_parts = {"Parts_Parts_Auto2"};
-  ModelPart& sub = ContactInterfaceBuilder(root).Build(settings);
+  ModelPart& sub = test::BuildInterface(root, {"DISPLACEMENT_Displacement_Auto3"}, {"Parts_Parts_Auto2"});
   ContactSearchProcess search(root, sub, SearchSettings());
   const ContactSearchStatistics stats = search.UpdateMortarConditions();
   EXPECT_EQ(stats.pairs, stats.slave_conditions);  // one quad master under every triangle
@@ -193,10 +179,7 @@ ModelPart& BuildStrips2D(Model& model, int n_lower, int n_upper, double gap) {
   for (int i = 0; i <= n_lower; ++i) ids.push_back(lower + n_lower + 1 + i);  // top row of the lower strip
   for (int i = 0; i <= n_upper; ++i) ids.push_back(upper + i);               // bottom row of the upper strip
   contact.AddNodes(ids);
-  ContactInterfaceSettings settings;
-  settings.parts = {"Contact_Part"};
-  settings.slave_parts = {"Lower"};
-  return ContactInterfaceBuilder(root).Build(settings);
+  return test::BuildInterface(root, {"Contact_Part"}, {"Lower"});
 }
 
 TEST(ContactSearch, NonMatchingFlatInterfacePairsOverlappingSegments) {
@@ -219,10 +202,7 @@ TEST(ContactSearch, NonMatchingFlatInterfacePairsOverlappingSegments) {
 
 // The interface of the shared 2D Hertz case: hemisphere (slave) on a plate.
 ModelPart& HertzSphereInterface(ModelPart& root) {
-  ContactInterfaceSettings settings;
-  settings.parts = {"Contact_Part"};
-  settings.slave_parts = {"Parts_parts_hemisphere"};
-  return ContactInterfaceBuilder(root).Build(settings);
+  return test::BuildInterface(root, {"Contact_Part"}, {"Parts_parts_hemisphere"});
 }
 
 TEST(ContactSearch, CurvedHertzInterface) {

@@ -34,16 +34,6 @@ void AnchorSpring::CalculateLocalSystem(Matrix& lhs, Vector& rhs, const ProcessI
   }
 }
 
-void AnchorSpring::CalculateLeftHandSide(Matrix& lhs, const ProcessInfo& info) {
-  Vector rhs;
-  CalculateLocalSystem(lhs, rhs, info);
-}
-
-void AnchorSpring::CalculateRightHandSide(Vector& rhs, const ProcessInfo& info) {
-  Matrix lhs;
-  CalculateLocalSystem(lhs, rhs, info);
-}
-
 std::unique_ptr<Condition> ObstacleContact::Create(IndexType id, Geometry::NodesArray nodes, Properties*) const {
   return std::make_unique<ObstacleContact>(id, Geometry(GetGeometry().Type(), std::move(nodes)), obstacle_);
 }
@@ -76,16 +66,6 @@ void ObstacleContact::CalculateLocalSystem(Matrix& lhs, Vector& rhs, const Proce
   lhs.topLeftCorner<2, 2>() = eps * n * n.transpose() + augmented * hessian;
   lhs.block<2, 1>(0, 2) = k * n;
   lhs.block<1, 2>(2, 0) = -k * n.transpose();
-}
-
-void ObstacleContact::CalculateLeftHandSide(Matrix& lhs, const ProcessInfo& info) {
-  Vector rhs;
-  CalculateLocalSystem(lhs, rhs, info);
-}
-
-void ObstacleContact::CalculateRightHandSide(Vector& rhs, const ProcessInfo& info) {
-  Matrix lhs;
-  CalculateLocalSystem(lhs, rhs, info);
 }
 
 ContactProblem::ContactProblem(double scale_factor, double penalty) : mp(model.CreateModelPart("Structure", 2)) {

@@ -15,20 +15,19 @@
 #include "core/model/element.h"
 #include "core/model/model.h"
 #include "custom_strategies/custom_convergencecriterias/mortar_updater.h"
+#include "tests/cpp/common/local_system_entity.h"
 
 namespace mc::test {
 
-class AnchorSpring : public Element {
+class AnchorSpring : public LocalSystemEntity<Element> {
  public:
   enum class Law { kLinear, kArcTangent };
   AnchorSpring(IndexType id, Geometry geometry, Array3 k, Law law, Array3 force)
-      : Element(id, std::move(geometry), nullptr), k_(k), law_(law), force_(force) {}
+      : LocalSystemEntity(id, std::move(geometry), nullptr), k_(k), law_(law), force_(force) {}
   std::string Info() const override { return "AnchorSpring"; }
   std::unique_ptr<Element> Create(IndexType id, Geometry::NodesArray nodes, Properties* p) const override;
   void GetDofList(DofsVectorType& dofs, const ProcessInfo& info) const override;
   void CalculateLocalSystem(Matrix& lhs, Vector& rhs, const ProcessInfo& info) override;
-  void CalculateLeftHandSide(Matrix& lhs, const ProcessInfo& info) override;
-  void CalculateRightHandSide(Vector& rhs, const ProcessInfo& info) override;
   void SetForce(const Array3& force) { force_ = force; }
 
  private:
@@ -43,16 +42,14 @@ struct Obstacle {
   double Gap(const Array3& x) const { return (x - center).norm() - radius; }
 };
 
-class ObstacleContact : public Condition {
+class ObstacleContact : public LocalSystemEntity<Condition> {
  public:
   ObstacleContact(IndexType id, Geometry geometry, Obstacle obstacle)
-      : Condition(id, std::move(geometry), nullptr), obstacle_(obstacle) {}
+      : LocalSystemEntity(id, std::move(geometry), nullptr), obstacle_(obstacle) {}
   std::string Info() const override { return "ObstacleContact"; }
   std::unique_ptr<Condition> Create(IndexType id, Geometry::NodesArray nodes, Properties* p) const override;
   void GetDofList(DofsVectorType& dofs, const ProcessInfo& info) const override;
   void CalculateLocalSystem(Matrix& lhs, Vector& rhs, const ProcessInfo& info) override;
-  void CalculateLeftHandSide(Matrix& lhs, const ProcessInfo& info) override;
-  void CalculateRightHandSide(Vector& rhs, const ProcessInfo& info) override;
 
  private:
   Obstacle obstacle_;

@@ -8,12 +8,8 @@
 #include "core/model/model.h"
 #include "core/variables/kernel_variables.h"
 #include "custom_strategies/custom_convergencecriterias/alm_frictionless_mortar_criteria.h"
+#include "custom_strategies/custom_convergencecriterias/block_contact_criteria.h"
 #include "custom_strategies/custom_convergencecriterias/condition_number_utility.h"
-#include "custom_strategies/custom_convergencecriterias/displacement_contact_criteria.h"
-#include "custom_strategies/custom_convergencecriterias/displacement_lagrangemultiplier_contact_criteria.h"
-#include "custom_strategies/custom_convergencecriterias/displacement_lagrangemultiplier_mixed_contact_criteria.h"
-#include "custom_strategies/custom_convergencecriterias/displacement_lagrangemultiplier_residual_contact_criteria.h"
-#include "custom_strategies/custom_convergencecriterias/displacement_residual_contact_criteria.h"
 #include "custom_strategies/custom_convergencecriterias/mortar_and_criteria.h"
 #include "custom_strategies/custom_convergencecriterias/penalty_frictionless_mortar_criteria.h"
 #include "custom_utilities/contact_variables.h"
@@ -66,6 +62,34 @@ void ExpectValues(const std::vector<CriterionValue>& values, const std::vector<s
     EXPECT_EQ(values[i].name, expected[i].first);
     EXPECT_NEAR(values[i].value, expected[i].second, 1e-15 + 1e-12 * std::abs(expected[i].second)) << values[i].name;
   }
+}
+
+TEST(ContactCriteria, TableRowsHaveKratosNamesKeysAndDefaults) {
+  const auto expect = [](const Parameters& defaults, const std::string& name, std::vector<std::string> prefixes) {
+    EXPECT_EQ(defaults["name"].GetString(), name);
+    EXPECT_FALSE(defaults["ensure_contact"].GetBool());
+    EXPECT_FALSE(defaults["print_convergence_criterion"].GetBool());
+    EXPECT_EQ(defaults.size(), 3 + 2 * prefixes.size()) << name;
+    for (const std::string& prefix : prefixes) {
+      EXPECT_EQ(defaults[prefix + "_relative_tolerance"].GetDouble(), 1e-4) << name;
+      EXPECT_EQ(defaults[prefix + "_absolute_tolerance"].GetDouble(), 1e-9) << name;
+    }
+  };
+  expect(DisplacementContactCriteria::GetDefaultParameters(), "displacement_contact_criteria",
+         {"displacement", "rotation"});
+  expect(DisplacementResidualContactCriteria::GetDefaultParameters(), "displacement_residual_contact_criteria",
+         {"residual", "rotation_residual"});
+  expect(DisplacementLagrangeMultiplierContactCriteria::GetDefaultParameters(),
+         "displacement_lagrangemultiplier_contact_criteria", {"displacement", "rotation", "contact_displacement"});
+  expect(DisplacementLagrangeMultiplierResidualContactCriteria::GetDefaultParameters(),
+         "displacement_lagrangemultiplier_residual_contact_criteria",
+         {"residual", "rotation_residual", "contact_residual"});
+  expect(DisplacementLagrangeMultiplierMixedContactCriteria::GetDefaultParameters(),
+         "displacement_lagrange_multiplier_mixed_contact_criteria",
+         {"residual", "rotation_residual", "contact_displacement"});
+  EXPECT_EQ(DisplacementContactCriteria().Name(), "displacement_contact_criteria");
+  EXPECT_FALSE(DisplacementContactCriteria().GetActualizeRHSFlag());
+  EXPECT_TRUE(DisplacementLagrangeMultiplierMixedContactCriteria().GetActualizeRHSFlag());
 }
 
 TEST(ContactCriteria, IncrementBlocksAgainstHandValues) {

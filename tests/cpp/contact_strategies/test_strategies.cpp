@@ -16,11 +16,12 @@
 #include "core/solving/residual_based_incremental_update_static_scheme.h"
 #include "core/variables/kernel_variables.h"
 #include "custom_strategies/custom_convergencecriterias/alm_frictionless_mortar_criteria.h"
-#include "custom_strategies/custom_convergencecriterias/displacement_lagrangemultiplier_contact_criteria.h"
+#include "custom_strategies/custom_convergencecriterias/block_contact_criteria.h"
 #include "custom_strategies/custom_convergencecriterias/mortar_and_criteria.h"
 #include "custom_strategies/custom_strategies/line_search_contact_strategy.h"
 #include "custom_strategies/custom_strategies/residualbased_newton_raphson_contact_strategy.h"
 #include "custom_utilities/contact_variables.h"
+#include "tests/cpp/common/error_message.h"
 
 namespace mc {
 namespace {
@@ -86,31 +87,45 @@ struct Hit {
   void Add(ContactProblem& p, IndexType id = 1) const {
     p.AddContactNode(id, Array3::Zero(), K, AnchorSpring::Law::kLinear, F, Obstacle{c, R});
   }
+  // The exact position and pressure at node `id` of `p`, to 1e-12.
+  void ExpectSolution(const ContactProblem& p, IndexType id = 1) const {
+    const Array3 x = ExactPosition();
+    EXPECT_NEAR(p.U(id)[0], x[0], 1e-12);
+    EXPECT_NEAR(p.U(id)[1], x[1], 1e-12);
+    EXPECT_NEAR(p.Lm(id), ExactPressure(), 1e-12);
+  }
+};
+
+// The Hit problem at node 1 solved with the full (`interaction`) or the simplified semi-smooth
+// Newton: either way the exact solution, the node activated once, after the first (separated)
+// iteration, and never again, in one inner loop.
+struct SolvedHit {
+  Hit hit;
+  ContactProblem p{hit.k, hit.eps};
+  std::unique_ptr<ResidualBasedNewtonRaphsonContactStrategy> strategy;
+  explicit SolvedHit(bool interaction) {
+    hit.Add(p);
+    p.mp.Set(INTERACTION, interaction);
+    strategy = MakeStrategy(p, Defaults(), 30, Criteria(p));
+    EXPECT_TRUE(strategy->Solve()) << strategy->FailureReport();
+    hit.ExpectSolution(p);
+    EXPECT_EQ(strategy->ActiveSetFlipCounts().at(1), 1);
+    EXPECT_EQ(strategy->InnerLoopIterations(), 1);
+  }
 };
 
 TEST(ContactNewton, FullSemiSmoothNewtonFindsTheExactContactAndConvergesQuadratically) {
-  Hit hit;
-  ContactProblem p(hit.k, hit.eps);
-  hit.Add(p);
-  p.mp.Set(INTERACTION, true);
-  auto strategy = MakeStrategy(p, Defaults(), 30, Criteria(p));
-  ASSERT_TRUE(strategy->Solve()) << strategy->FailureReport();
-  const Array3 x = hit.ExactPosition();
-  EXPECT_NEAR(p.U(1)[0], x[0], 1e-12);
-  EXPECT_NEAR(p.U(1)[1], x[1], 1e-12);
-  EXPECT_NEAR(p.Lm(1), hit.ExactPressure(), 1e-12);
+  SolvedHit s(true);
+  const Array3 x = s.hit.ExactPosition();
   // The pressure is compressive and the energy search found a point on the circle.
-  EXPECT_LT(p.Lm(1), -0.1);
-  EXPECT_NEAR((x - hit.c).norm(), hit.R, 1e-14);
-  EXPECT_TRUE(p.mp.GetNode(1).Is(ACTIVE));
-  EXPECT_TRUE(p.mp.GetProcessInfo().GetValue(ACTIVE_SET_CONVERGED));
-  // Activated once, after the first (separated) iteration, then never again.
-  EXPECT_EQ(strategy->ActiveSetFlipCounts().at(1), 1);
-  EXPECT_EQ(strategy->InnerLoopIterations(), 1);
+  EXPECT_LT(s.p.Lm(1), -0.1);
+  EXPECT_NEAR((x - s.hit.c).norm(), s.hit.R, 1e-14);
+  EXPECT_TRUE(s.p.mp.GetNode(1).Is(ACTIVE));
+  EXPECT_TRUE(s.p.mp.GetProcessInfo().GetValue(ACTIVE_SET_CONVERGED));
 
   // Quadratic rate with the set fixed (iterations >= 2): |dx_{k+1}| / |dx_k|^2 stays of order 1
   // while |dx| drops from 0.3 to 1e-10.
-  const auto& h = strategy->IterationHistory();
+  const auto& h = s.strategy->IterationHistory();
   ASSERT_GE(h.size(), 4u);
   int checked = 0;
   for (std::size_t i = 1; i + 1 < h.size(); ++i) {
@@ -127,18 +142,8 @@ TEST(ContactNewton, FullSemiSmoothNewtonFindsTheExactContactAndConvergesQuadrati
 }
 
 TEST(ContactNewton, SimplifiedSemiSmoothNewtonConvergesWithAFrozenSet) {
-  Hit hit;
-  ContactProblem p(hit.k, hit.eps);
-  hit.Add(p);
-  p.mp.Set(INTERACTION, false);
-  auto strategy = MakeStrategy(p, Defaults(), 30, Criteria(p));
-  ASSERT_TRUE(strategy->Solve()) << strategy->FailureReport();
-  EXPECT_NEAR(p.U(1)[0], hit.ExactPosition()[0], 1e-12);
-  EXPECT_NEAR(p.U(1)[1], hit.ExactPosition()[1], 1e-12);
-  EXPECT_NEAR(p.Lm(1), hit.ExactPressure(), 1e-12);
-  EXPECT_EQ(strategy->InnerLoopIterations(), 1);
-  EXPECT_EQ(p.mp.GetProcessInfo().GetValue(INNER_LOOP_ITERATION), 1);
-  EXPECT_EQ(strategy->ActiveSetFlipCounts().at(1), 1);
+  SolvedHit s(false);
+  EXPECT_EQ(s.p.mp.GetProcessInfo().GetValue(INNER_LOOP_ITERATION), 1);
 }
 
 TEST(ContactNewton, SeparatedNodeStaysInactiveWithZeroPressure) {
@@ -249,25 +254,31 @@ struct Ramp {
     const double t = p.mp.GetProcessInfo().GetValue(TIME);
     p.springs[1]->SetForce(Array3(std::atan(5.0) * std::min(1.0, 2.0 - t), 0.0, 0.0));
   }
-  ResidualBasedNewtonRaphsonContactStrategy::SubStepCallbacks Callbacks() {
-    return {[this] { ++initialize_calls; ApplyLoad(); }, [this] { ++finalize_calls; }};
+  // The adaptive strategy with the splitting keys `splitting` of contact_settings, the load ramp
+  // as its sub-step callbacks.
+  std::unique_ptr<ResidualBasedNewtonRaphsonContactStrategy> AdaptiveStrategy(const std::string& splitting) {
+    const ContactStrategySettings settings = ResidualBasedNewtonRaphsonContactStrategy::ReadSettings(
+        Parameters(R"({"adaptative_strategy": true, )" + splitting + "}"));
+    auto strategy = MakeStrategy(p, settings, 12, Criteria(p, 1e-10));
+    strategy->SetSubStepCallbacks({[this] { ++initialize_calls; ApplyLoad(); }, [this] { ++finalize_calls; }});
+    return strategy;
+  }
+  // Starts the step at time t.
+  void Advance(double t) {
+    p.mp.CloneTimeStep(t);
+    ApplyLoad();
   }
 };
 
 TEST(ContactAdaptive, SplitsAStepThatDoesNotConverge) {
   Ramp r;
-  const ContactStrategySettings settings = ResidualBasedNewtonRaphsonContactStrategy::ReadSettings(
-      Parameters(R"({"adaptative_strategy": true, "max_number_splits": 2})"));
-  auto strategy = MakeStrategy(r.p, settings, 12, Criteria(r.p, 1e-10));
-  strategy->SetSubStepCallbacks(r.Callbacks());
-  r.p.mp.CloneTimeStep(1.0);
-  r.ApplyLoad();
+  auto strategy = r.AdaptiveStrategy(R"("max_number_splits": 2)");
+  r.Advance(1.0);
   ASSERT_TRUE(strategy->Solve());
   EXPECT_NEAR(r.p.U(1)[0], 5.0, 1e-8);
   EXPECT_EQ(strategy->SplitLevelUsed(), 0);
 
-  r.p.mp.CloneTimeStep(2.0);
-  r.ApplyLoad();
+  r.Advance(2.0);
   ASSERT_TRUE(strategy->Solve()) << strategy->FailureReport();
   EXPECT_EQ(strategy->SplitLevelUsed(), 1);
   EXPECT_NEAR(r.p.U(1)[0], 0.0, 1e-8);
@@ -283,23 +294,13 @@ TEST(ContactAdaptive, SplitsAStepThatDoesNotConverge) {
 
 TEST(ContactAdaptive, FailsClearlyWhenSplittingDoesNotHelp) {
   Ramp r;
-  const ContactStrategySettings settings = ResidualBasedNewtonRaphsonContactStrategy::ReadSettings(
-      Parameters(R"({"adaptative_strategy": true, "split_factor": 2.0, "max_number_splits": 1})"));
-  auto strategy = MakeStrategy(r.p, settings, 12, Criteria(r.p, 1e-10));
-  strategy->SetSubStepCallbacks(r.Callbacks());
-  r.p.mp.CloneTimeStep(1.0);
-  r.ApplyLoad();
+  auto strategy = r.AdaptiveStrategy(R"("split_factor": 2.0, "max_number_splits": 1)");
+  r.Advance(1.0);
   ASSERT_TRUE(strategy->Solve());
-  r.p.mp.CloneTimeStep(2.0);
-  r.ApplyLoad();
-  try {
-    strategy->Solve();
-    FAIL() << "expected a SolutionError";
-  } catch (const SolutionError& e) {
-    const std::string message = e.what();
-    EXPECT_NE(message.find("split the step 1 times (smallest sub-step 0.5)"), std::string::npos) << message;
-    EXPECT_NE(message.find("newton_raphson_contact_strategy: step"), std::string::npos) << message;
-  }
+  r.Advance(2.0);
+  const std::string message = test::ErrorMessageOf<SolutionError>([&] { strategy->Solve(); });
+  EXPECT_NE(message.find("split the step 1 times (smallest sub-step 0.5)"), std::string::npos) << message;
+  EXPECT_NE(message.find("newton_raphson_contact_strategy: step"), std::string::npos) << message;
 }
 
 TEST(ContactStrategySettingsTest, DefaultsAndValidation) {

@@ -14,6 +14,7 @@
 #include "core/linear_solvers/size_selecting_solver.h"
 #include "core/parameters/parameters.h"
 #include "test_matrices.h"
+#include "tests/cpp/common/error_message.h"
 
 namespace mc {
 namespace {
@@ -26,13 +27,9 @@ std::string CreateName(const std::string& solver_type) {
 
 template <class ErrorType>
 std::string ErrorMessage(const std::string& json) {
-  try {
-    Create(json);
-  } catch (const ErrorType& error) {
-    return error.what();
-  }
-  ADD_FAILURE() << "no error for " << json;
-  return {};
+  const std::string message = test::ErrorMessageOf<ErrorType>([&] { Create(json); });
+  if (message.empty()) ADD_FAILURE() << "no error for " << json;
+  return message;
 }
 
 TEST(LinearSolverFactory, NormalisesEveryKratosSpelling) {

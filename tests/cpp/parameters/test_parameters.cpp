@@ -10,20 +10,10 @@
 
 #include "core/parameters/parameters.h"
 #include "core/utilities/error.h"
+#include "tests/cpp/common/error_message.h"
 
 namespace mc {
 namespace {
-
-/// The message of the InputError thrown by f, or "" if none was thrown.
-template <class F>
-std::string InputErrorOf(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 const char* kSettings = R"({
   "problem_data": {"problem_name": "hertz", "echo_level": 1, "start_time": 0.0, "end_time": 1},
@@ -135,50 +125,50 @@ TEST(Parameters, SettersRoundTrip) {
 
 TEST(Parameters, MissingKeyNamesPathAndNearestKey) {
   Parameters root(kSettings, "ProjectParameters.json");
-  const std::string message = InputErrorOf([&] { root["solver_settings"]["max_iteratio"]; });
+  const std::string message = test::ErrorMessageOf([&] { root["solver_settings"]["max_iteratio"]; });
   EXPECT_NE(message.find("ProjectParameters.json: solver_settings.max_iteratio: missing key"), std::string::npos)
       << message;
   EXPECT_NE(message.find("'max_iteration'"), std::string::npos) << message;
-  const std::string index = InputErrorOf([&] { root["solver_settings"]["names"][2]; });
+  const std::string index = test::ErrorMessageOf([&] { root["solver_settings"]["names"][2]; });
   EXPECT_NE(index.find("solver_settings.names[2]"), std::string::npos) << index;
   EXPECT_NE(index.find("2 items"), std::string::npos) << index;
 }
 
 TEST(Parameters, EveryGetterRejectsTheWrongType) {
   Parameters s = Parameters(kSettings, "ProjectParameters.json")["solver_settings"];
-  EXPECT_EQ(InputErrorOf([&] { s["max_iteration"].GetInt(); }),
+  EXPECT_EQ(test::ErrorMessageOf([&] { s["max_iteration"].GetInt(); }),
             "ProjectParameters.json: solver_settings.max_iteration: expected an integer, found string \"ten\"");
-  EXPECT_EQ(InputErrorOf([&] { s["half"].GetInt(); }),
+  EXPECT_EQ(test::ErrorMessageOf([&] { s["half"].GetInt(); }),
             "ProjectParameters.json: solver_settings.half: expected an integer, found number 2.5");
-  EXPECT_EQ(InputErrorOf([&] { s["max_iteration"].GetDouble(); }),
+  EXPECT_EQ(test::ErrorMessageOf([&] { s["max_iteration"].GetDouble(); }),
             "ProjectParameters.json: solver_settings.max_iteration: expected a number, found string \"ten\"");
-  EXPECT_EQ(InputErrorOf([&] { s["tolerance"].GetBool(); }),
+  EXPECT_EQ(test::ErrorMessageOf([&] { s["tolerance"].GetBool(); }),
             "ProjectParameters.json: solver_settings.tolerance: expected a boolean, found number 1e-06");
-  EXPECT_EQ(InputErrorOf([&] { s["flag"].GetString(); }),
+  EXPECT_EQ(test::ErrorMessageOf([&] { s["flag"].GetString(); }),
             "ProjectParameters.json: solver_settings.flag: expected a string, found boolean true");
-  EXPECT_EQ(InputErrorOf([&] { s["flag"].GetVector(); }),
+  EXPECT_EQ(test::ErrorMessageOf([&] { s["flag"].GetVector(); }),
             "ProjectParameters.json: solver_settings.flag: expected an array of numbers, found boolean true");
-  EXPECT_EQ(InputErrorOf([&] { s["mixed"].GetVector(); }),
+  EXPECT_EQ(test::ErrorMessageOf([&] { s["mixed"].GetVector(); }),
             "ProjectParameters.json: solver_settings.mixed[1]: expected a number, found string \"a\"");
-  EXPECT_EQ(InputErrorOf([&] { s["nothing"].GetMatrix(); }),
+  EXPECT_EQ(test::ErrorMessageOf([&] { s["nothing"].GetMatrix(); }),
             "ProjectParameters.json: solver_settings.nothing: expected an array of equally long arrays of numbers, "
             "found null");
-  EXPECT_EQ(InputErrorOf([&] { s["ragged"].GetMatrix(); }),
+  EXPECT_EQ(test::ErrorMessageOf([&] { s["ragged"].GetMatrix(); }),
             "ProjectParameters.json: solver_settings.ragged[1]: matrix row has 1 entries, the first row has 2");
-  EXPECT_EQ(InputErrorOf([&] { s["direction"].GetStringArray(); }),
+  EXPECT_EQ(test::ErrorMessageOf([&] { s["direction"].GetStringArray(); }),
             "ProjectParameters.json: solver_settings.direction[0]: expected a string, found number 0.0");
-  EXPECT_EQ(InputErrorOf([&] { s["names"]["x"]; }),
+  EXPECT_EQ(test::ErrorMessageOf([&] { s["names"]["x"]; }),
             "ProjectParameters.json: solver_settings.names: expected an object, found array [\"A\",\"B\"]");
-  EXPECT_EQ(InputErrorOf([] { Parameters("{\"big\": 3000000000}")["big"].GetInt(); }),
+  EXPECT_EQ(test::ErrorMessageOf([] { Parameters("{\"big\": 3000000000}")["big"].GetInt(); }),
             "big: expected an integer, found integer 3000000000");
 }
 
 TEST(Parameters, ParseErrorGivesLineAndColumn) {
   const std::string text = "{\n  \"a\": 1,\n  \"b\": [1, 2,,]\n}\n";
-  const std::string message = InputErrorOf([&] { Parameters(text, "case.json"); });
+  const std::string message = test::ErrorMessageOf([&] { Parameters(text, "case.json"); });
   EXPECT_NE(message.find("case.json: line 3, column 14:"), std::string::npos) << message;
   EXPECT_NE(message.find("\"b\": [1, 2,,]"), std::string::npos) << message;
-  const std::string missing_colon = InputErrorOf([] { Parameters("{\r\n\"a\" 1\r\n}", "x.json"); });
+  const std::string missing_colon = test::ErrorMessageOf([] { Parameters("{\r\n\"a\" 1\r\n}", "x.json"); });
   EXPECT_NE(missing_colon.find("x.json: line 2, column 5:"), std::string::npos) << missing_colon;
 }
 
@@ -193,7 +183,7 @@ TEST(Parameters, FromFileWithBomAndCrlf) {
   EXPECT_EQ(p["name"].GetString(), "crlf");
   EXPECT_EQ(p["n"].GetInt(), 3);
   EXPECT_EQ(p.Origin(), path.string());
-  const std::string message = InputErrorOf([] { Parameters::FromFile("/nonexistent/dir/p.json"); });
+  const std::string message = test::ErrorMessageOf([] { Parameters::FromFile("/nonexistent/dir/p.json"); });
   EXPECT_NE(message.find("/nonexistent/dir/p.json"), std::string::npos) << message;
 }
 

@@ -6,19 +6,10 @@
 
 #include "core/parameters/parameters.h"
 #include "core/utilities/error.h"
+#include "tests/cpp/common/error_message.h"
 
 namespace mc {
 namespace {
-
-template <class F>
-std::string InputErrorOf(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 const char* kDefaults = R"({
   "max_iteration": 10,
@@ -33,35 +24,35 @@ const char* kDefaults = R"({
 
 TEST(ParametersValidation, UnknownKeyNamesTheNearestKey) {
   Parameters p(R"({"solver_settings": {"max_iteraton": 3}})", "ProjectParameters.json");
-  const std::string message = InputErrorOf([&] { p["solver_settings"].ValidateAndAssignDefaults(Parameters(kDefaults)); });
+  const std::string message = test::ErrorMessageOf([&] { p["solver_settings"].ValidateAndAssignDefaults(Parameters(kDefaults)); });
   EXPECT_EQ(message,
             "ProjectParameters.json: solver_settings: unknown key 'max_iteraton' (did you mean 'max_iteration'?)");
 }
 
 TEST(ParametersValidation, UnknownKeyWithNothingCloseListsValidKeys) {
   Parameters p(R"({"zzzzzzzzzz": 3})", "a.json");
-  const std::string message = InputErrorOf([&] { p.ValidateAndAssignDefaults(Parameters(R"({"alpha": 1, "beta": 2})")); });
+  const std::string message = test::ErrorMessageOf([&] { p.ValidateAndAssignDefaults(Parameters(R"({"alpha": 1, "beta": 2})")); });
   EXPECT_EQ(message, "a.json: unknown key 'zzzzzzzzzz' (valid keys: 'alpha', 'beta')");
 }
 
 TEST(ParametersValidation, TypeMismatchNamesPathExpectedAndFound) {
   Parameters p(R"({"s": {"solver_type": 3}})", "c.json");
-  EXPECT_EQ(InputErrorOf([&] { p["s"].ValidateAndAssignDefaults(Parameters(kDefaults)); }),
+  EXPECT_EQ(test::ErrorMessageOf([&] { p["s"].ValidateAndAssignDefaults(Parameters(kDefaults)); }),
             "c.json: s.solver_type: expected a string (like the default \"newton\"), found integer 3");
   Parameters q(R"({"echo": "yes"})");
-  EXPECT_NE(InputErrorOf([&] { q.ValidateAndAssignDefaults(Parameters(kDefaults)); }).find("echo: expected a boolean"),
+  EXPECT_NE(test::ErrorMessageOf([&] { q.ValidateAndAssignDefaults(Parameters(kDefaults)); }).find("echo: expected a boolean"),
             std::string::npos);
   Parameters r(R"({"list": {}})");
-  EXPECT_NE(InputErrorOf([&] { r.ValidateAndAssignDefaults(Parameters(kDefaults)); }).find("list: expected an array"),
+  EXPECT_NE(test::ErrorMessageOf([&] { r.ValidateAndAssignDefaults(Parameters(kDefaults)); }).find("list: expected an array"),
             std::string::npos);
   Parameters o(R"({"search": 1})");
-  EXPECT_NE(InputErrorOf([&] { o.ValidateAndAssignDefaults(Parameters(kDefaults)); }).find("search: expected an object"),
+  EXPECT_NE(test::ErrorMessageOf([&] { o.ValidateAndAssignDefaults(Parameters(kDefaults)); }).find("search: expected an object"),
             std::string::npos);
 }
 
 TEST(ParametersValidation, NumbersInterchangeableAndNullAcceptsAnything) {
   Parameters p(R"({"max_iteration": 5.0, "tolerance": 1, "anything": [1, "two"]})");
-  EXPECT_EQ(InputErrorOf([&] { p.ValidateAndAssignDefaults(Parameters(kDefaults)); }), "");
+  EXPECT_EQ(test::ErrorMessageOf([&] { p.ValidateAndAssignDefaults(Parameters(kDefaults)); }), "");
   EXPECT_EQ(p["max_iteration"].GetInt(), 5);
   EXPECT_DOUBLE_EQ(p["tolerance"].GetDouble(), 1.0);
   EXPECT_EQ(p["anything"].size(), 2u);
@@ -96,7 +87,7 @@ TEST(ParametersValidation, RecursiveFillsNestedObjects) {
 
 TEST(ParametersValidation, RecursiveRejectsNestedUnknownKeyWithItsPath) {
   Parameters p(R"({"search": {"inner": {"dept": 3}}})", "p.json");
-  EXPECT_EQ(InputErrorOf([&] { p.RecursivelyValidateAndAssignDefaults(Parameters(kDefaults)); }),
+  EXPECT_EQ(test::ErrorMessageOf([&] { p.RecursivelyValidateAndAssignDefaults(Parameters(kDefaults)); }),
             "p.json: search.inner: unknown key 'dept' (did you mean 'depth'?)");
 }
 
@@ -114,9 +105,9 @@ TEST(ParametersValidation, AddMissingDoesNotReject) {
 
 TEST(ParametersValidation, CheckKeys) {
   Parameters p(R"({"model_part_name": "a", "intervl": [0, 1]})", "k.json");
-  EXPECT_EQ(InputErrorOf([&] { p.CheckKeys({"model_part_name", "interval"}); }),
+  EXPECT_EQ(test::ErrorMessageOf([&] { p.CheckKeys({"model_part_name", "interval"}); }),
             "k.json: unknown key 'intervl' (did you mean 'interval'?)");
-  EXPECT_EQ(InputErrorOf([&] { p.CheckKeys({"model_part_name", "intervl"}); }), "");
+  EXPECT_EQ(test::ErrorMessageOf([&] { p.CheckKeys({"model_part_name", "intervl"}); }), "");
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 #include "core/solving/residual_based_incremental_update_static_scheme.h"
 #include "core/variables/kernel_variables.h"
 #include "test_elements.h"
+#include "tests/cpp/common/error_message.h"
 
 namespace mc {
 namespace {
@@ -55,6 +56,20 @@ Eigen::Vector3d ChainReference() {
   return K.lu().solve(f);
 }
 
+// A bar: node 1 at x = 0, node 2 at x = 1, spring 1 of stiffness k between them.
+void AddBar(ModelPart& mp, double k) {
+  AddNode(mp, 1, 0.0, 0.0);
+  AddNode(mp, 2, 1.0, 0.0);
+  AddSpring(mp, 1, 1, 2, k);
+}
+
+// The message of the `Error` a linear static solve of `mp` throws ("" when it solves).
+template <class Error>
+std::string SolveError(ModelPart& mp, std::shared_ptr<BuilderAndSolver> builder) {
+  LinearStrategy strategy(mp, std::make_shared<ResidualBasedIncrementalUpdateStaticScheme>(), std::move(builder));
+  return test::ErrorMessageOf<Error>([&] { strategy.Solve(); });
+}
+
 class BothBuilders : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(BothBuilders, LinearChainMatchesDenseSolutionAndReactionsBalanceLoads) {
@@ -77,9 +92,7 @@ TEST_P(BothBuilders, LinearChainMatchesDenseSolutionAndReactionsBalanceLoads) {
 TEST_P(BothBuilders, BarUnderPointLoadReactionOpposesLoad) {
   Model model;
   ModelPart& mp = test::MakeModelPart(model);
-  AddNode(mp, 1, 0.0, 0.0);
-  AddNode(mp, 2, 1.0, 0.0);
-  AddSpring(mp, 1, 1, 2, 100.0);
+  AddBar(mp, 100.0);
   AddLoad(mp, 1, 2, 7.0);
   mp.GetNode(1).Fix(DISPLACEMENT_X);
   LinearStrategy strategy(mp, std::make_shared<ResidualBasedIncrementalUpdateStaticScheme>(), MakeBuilder(GetParam()));
@@ -126,9 +139,9 @@ TEST_P(BothBuilders, PatternIsBuiltOncePerDofSet) {
 
 // A support on the DISPLACEMENT_X of one node pulling back with the force c u^3: the nonlinear
 // part of the problem sits in a condition, as contact does, so that the springs stay linear.
-class CubicSupport : public Condition {
+class CubicSupport : public test::LocalSystemEntity<Condition> {
  public:
-  CubicSupport(IndexType id, Geometry geometry, double c) : Condition(id, std::move(geometry), nullptr), c_(c) {}
+  CubicSupport(IndexType id, Geometry geometry, double c) : LocalSystemEntity(id, std::move(geometry), nullptr), c_(c) {}
   std::string Info() const override { return "CubicSupport"; }
   std::unique_ptr<Condition> Create(IndexType id, Geometry::NodesArray nodes, Properties*) const override {
     return std::make_unique<CubicSupport>(id, Geometry(GetGeometry().Type(), std::move(nodes)), c_);
@@ -140,14 +153,6 @@ class CubicSupport : public Condition {
     const double u = GetGeometry()[0].FastGetSolutionStepValue(DISPLACEMENT_X);
     lhs.setConstant(1, 1, 3.0 * c_ * u * u);
     rhs.setConstant(1, -c_ * u * u * u);
-  }
-  void CalculateLeftHandSide(Matrix& lhs, const ProcessInfo& info) override {
-    Vector rhs;
-    CalculateLocalSystem(lhs, rhs, info);
-  }
-  void CalculateRightHandSide(Vector& rhs, const ProcessInfo& info) override {
-    Matrix lhs;
-    CalculateLocalSystem(lhs, rhs, info);
   }
 
  private:
@@ -260,13 +265,8 @@ TEST_P(BothBuilders, SingularSystemNamesTheFreeDofs) {
   AddSpring(mp, 1, 4, 7, 1.0, 0.0, 2);  // along x: no stiffness in y
   AddLoad(mp, 1, 7, 1.0);
   mp.GetNode(4).Fix(DISPLACEMENT_X);
-  LinearStrategy strategy(mp, std::make_shared<ResidualBasedIncrementalUpdateStaticScheme>(), MakeBuilder(GetParam()));
-  try {
-    strategy.Solve();
-    FAIL() << "a singular system was solved";
-  } catch (const SolutionError& e) {
-    EXPECT_STREQ(e.what(), "singular system: no stiffness for DISPLACEMENT_Y of nodes 4, 7 (are they constrained?)");
-  }
+  EXPECT_EQ(SolveError<SolutionError>(mp, MakeBuilder(GetParam())),
+            "singular system: no stiffness for DISPLACEMENT_Y of nodes 4, 7 (are they constrained?)");
 }
 
 TEST_P(BothBuilders, SingularListIsCappedAtTenDofs) {
@@ -275,53 +275,33 @@ TEST_P(BothBuilders, SingularListIsCappedAtTenDofs) {
   for (IndexType i = 1; i <= 16; ++i) AddNode(mp, i, static_cast<double>(i), 0.0, 2);
   for (IndexType i = 1; i <= 15; ++i) AddSpring(mp, i, i, i + 1, 1.0, 0.0, 2);
   mp.GetNode(1).Fix(DISPLACEMENT_X);
-  LinearStrategy strategy(mp, std::make_shared<ResidualBasedIncrementalUpdateStaticScheme>(), MakeBuilder(GetParam()));
-  try {
-    strategy.Solve();
-    FAIL() << "a singular system was solved";
-  } catch (const SolutionError& e) {
-    EXPECT_STREQ(e.what(),
-                 "singular system: no stiffness for DISPLACEMENT_Y of nodes 1, 2, 3, 4, 5, 6, 7, 8, 9, 10 and 6 "
-                 "more DoFs (are they constrained?)");
-  }
+  EXPECT_EQ(SolveError<SolutionError>(mp, MakeBuilder(GetParam())),
+            "singular system: no stiffness for DISPLACEMENT_Y of nodes 1, 2, 3, 4, 5, 6, 7, 8, 9, 10 and 6 "
+            "more DoFs (are they constrained?)");
 }
 
 TEST_P(BothBuilders, FloatingStructureIsReportedBySolverPivot) {
   Model model;
   ModelPart& mp = test::MakeModelPart(model);
-  AddNode(mp, 1, 0.0, 0.0);
-  AddNode(mp, 2, 1.0, 0.0);
-  AddSpring(mp, 1, 1, 2, 1.0);
-  LinearStrategy strategy(mp, std::make_shared<ResidualBasedIncrementalUpdateStaticScheme>(), MakeBuilder(GetParam()));
-  try {
-    strategy.Solve();
-    FAIL() << "a singular system was solved";
-  } catch (const SolutionError& e) {
-    EXPECT_NE(std::string(e.what()).find("singular system"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("DISPLACEMENT_X of node"), std::string::npos) << e.what();
-  }
+  AddBar(mp, 1.0);
+  const std::string message = SolveError<SolutionError>(mp, MakeBuilder(GetParam()));
+  EXPECT_NE(message.find("singular system"), std::string::npos) << message;
+  EXPECT_NE(message.find("DISPLACEMENT_X of node"), std::string::npos) << message;
 }
 
 TEST_P(BothBuilders, FixedSlaveIsAnInputError) {
   Model model;
   ModelPart& mp = test::MakeModelPart(model);
-  AddNode(mp, 1, 0.0, 0.0);
-  AddNode(mp, 2, 1.0, 0.0);
-  AddSpring(mp, 1, 1, 2, 1.0);
+  AddBar(mp, 1.0);
   mp.GetNode(1).Fix(DISPLACEMENT_X);
   mp.GetNode(2).Fix(DISPLACEMENT_X);
   auto builder = MakeBuilder(GetParam());
   builder->AddConstraint(std::make_shared<MasterSlaveConstraint>(
       9, mp.GetNode(2).GetDof(DISPLACEMENT_X), std::vector<Dof*>{&mp.GetNode(1).GetDof(DISPLACEMENT_X)},
       std::vector<double>{1.0}));
-  LinearStrategy strategy(mp, std::make_shared<ResidualBasedIncrementalUpdateStaticScheme>(), builder);
-  try {
-    strategy.Solve();
-    FAIL();
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("constraint 9"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("DISPLACEMENT_X of node 2 is fixed"), std::string::npos) << e.what();
-  }
+  const std::string message = SolveError<InputError>(mp, builder);
+  EXPECT_NE(message.find("constraint 9"), std::string::npos) << message;
+  EXPECT_NE(message.find("DISPLACEMENT_X of node 2 is fixed"), std::string::npos) << message;
 }
 
 INSTANTIATE_TEST_SUITE_P(Builders, BothBuilders, ::testing::Values("block", "elimination"));

@@ -36,16 +36,6 @@ void TestSpring::CalculateLocalSystem(Matrix& lhs, Vector& rhs, const ProcessInf
   rhs = -force * d;
 }
 
-void TestSpring::CalculateLeftHandSide(Matrix& lhs, const ProcessInfo& info) {
-  Vector rhs;
-  CalculateLocalSystem(lhs, rhs, info);
-}
-
-void TestSpring::CalculateRightHandSide(Vector& rhs, const ProcessInfo& info) {
-  Matrix lhs;
-  CalculateLocalSystem(lhs, rhs, info);
-}
-
 std::unique_ptr<Element> TestMass::Create(IndexType id, Geometry::NodesArray nodes, Properties* p) const {
   return std::make_unique<TestMass>(id, Geometry(GetGeometry().Type(), std::move(nodes)), m_, d_);
 }

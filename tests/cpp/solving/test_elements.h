@@ -8,22 +8,21 @@
 #include "core/model/condition.h"
 #include "core/model/element.h"
 #include "core/model/model.h"
+#include "tests/cpp/common/local_system_entity.h"
 
 namespace mc::test {
 
 /// Axial spring between two nodes, axis from the initial coordinates; axial force
 /// N = k e + c e^3 with the elongation e = (u2 - u1) . n, exact tangent (k + 3 c e^2) n n^T.
 /// DoFs: DISPLACEMENT_X (dimension 1) or DISPLACEMENT_X, _Y (dimension 2) of each node.
-class TestSpring : public Element {
+class TestSpring : public LocalSystemEntity<Element> {
  public:
   TestSpring(IndexType id, Geometry geometry, double k, double c, int dimension)
-      : Element(id, std::move(geometry), nullptr), k_(k), c_(c), dimension_(dimension) {}
+      : LocalSystemEntity(id, std::move(geometry), nullptr), k_(k), c_(c), dimension_(dimension) {}
   std::string Info() const override { return "TestSpring"; }
   std::unique_ptr<Element> Create(IndexType id, Geometry::NodesArray nodes, Properties* p) const override;
   void GetDofList(DofsVectorType& dofs, const ProcessInfo& info) const override;
   void CalculateLocalSystem(Matrix& lhs, Vector& rhs, const ProcessInfo& info) override;
-  void CalculateLeftHandSide(Matrix& lhs, const ProcessInfo& info) override;
-  void CalculateRightHandSide(Vector& rhs, const ProcessInfo& info) override;
   bool HasConstantLeftHandSide() const override { return c_ == 0.0; }
 
  private:

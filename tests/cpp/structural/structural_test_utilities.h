@@ -18,6 +18,7 @@
 #include "core/model/node.h"
 #include "core/model/properties.h"
 #include "core/model/registry.h"
+#include "tests/cpp/common/finite_differences.h"
 #include "core/variables/kernel_variables.h"
 #include "structural/application/register_structural_mechanics.h"
 
@@ -92,27 +93,6 @@ inline void SetDisplacements(const Geometry& geometry, const std::function<Array
     node.FastGetSolutionStepValue(DISPLACEMENT) = value;
     node.Coordinates() = node.X0() + value;
   }
-}
-
-/// Central finite differences of -RHS with respect to the entity's DoF values.
-inline Matrix FiniteDifferenceTangent(Entity& entity, double h) {
-  ProcessInfo info;
-  DofsVectorType dofs;
-  entity.GetDofList(dofs, info);
-  const auto n = static_cast<Eigen::Index>(dofs.size());
-  Matrix K(n, n);
-  Vector plus, minus;
-  for (Eigen::Index j = 0; j < n; ++j) {
-    double& value = dofs[static_cast<std::size_t>(j)]->Value();
-    const double saved = value;
-    value = saved + h;
-    entity.CalculateRightHandSide(plus, info);
-    value = saved - h;
-    entity.CalculateRightHandSide(minus, info);
-    value = saved;
-    K.col(j) = -(plus - minus) / (2.0 * h);
-  }
-  return K;
 }
 
 /// max |a - b| / max |a|.

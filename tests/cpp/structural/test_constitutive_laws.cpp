@@ -7,6 +7,7 @@
 #include <Eigen/LU>
 #include <limits>
 
+#include "structural/constitutive_laws/elastic_law.h"
 #include "structural/constitutive_laws/voigt_utilities.h"
 #include "structural_test_utilities.h"
 
@@ -214,6 +215,16 @@ TEST(ConstitutiveLaws, DimensionsAndStrainSizes) {
   EXPECT_TRUE(registry.Get("HyperElastic3DLaw").IsFiniteStrain());
   EXPECT_FALSE(registry.Get("LinearElastic3DLaw").IsFiniteStrain());
   for (const char* name : kLaws) EXPECT_EQ(registry.Get(name).Name(), name);
+  EXPECT_TRUE(registry.Get("KirchhoffSaintVenantPlaneStress2DLaw").IsFiniteStrain());
+  EXPECT_TRUE(registry.Get("KirchhoffSaintVenant3DLaw").HasConstantTangent());
+  EXPECT_FALSE(registry.Get("HyperElasticAxisym2DLaw").HasConstantTangent());
+  EXPECT_EQ(ElasticLaw::Names().size(), std::size(kLaws));
+  try {
+    ElasticLaw law("LinearElastic3DLow");
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("did you mean 'LinearElastic3DLaw'"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

@@ -31,11 +31,8 @@ PetscSolver::Options FieldSplitOptions() {
 }
 
 TEST(PetscFieldSplit, ContactSystemSplitByDofsSolvesToTheDirectSolution) {
-  ContactSystem<3, 4, 4> system({true, false, true, true});
-  SparseMatrix A;
-  Vector b;
-  std::vector<Dof*> dofs;
-  system.Assemble(A, b, dofs);
+  AssembledSystem<ContactSystem<3, 4, 4>> assembled(std::vector<bool>{true, false, true, true});
+  auto& [system, A, b, dofs] = assembled;
   b.setLinSpaced(b.size(), -1.0, 2.0);
 
   PetscSolver petsc(FieldSplitOptions());
@@ -64,11 +61,8 @@ TEST(PetscFieldSplit, ContactSystemSplitByDofsSolvesToTheDirectSolution) {
 }
 
 TEST(PetscFieldSplit, WithoutMultipliersTheDisplacementPreconditionerTakesTheSystem) {
-  ContactSystem<3, 4, 4> system({false, false, false, false});
-  SparseMatrix full;
-  Vector b_full;
-  std::vector<Dof*> all;
-  system.Assemble(full, b_full, all);
+  AssembledSystem<ContactSystem<3, 4, 4>> assembled(std::vector<bool>{false, false, false, false});
+  auto& [system, full, b_full, all] = assembled;
   std::vector<int> keep;
   std::vector<Dof*> dofs;
   for (std::size_t i = 0; i < all.size(); ++i)

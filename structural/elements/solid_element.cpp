@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "structural/elements/base_solid_element.h"
+#include "structural/elements/solid_element.h"
 
 #include <Eigen/LU>
 #include <algorithm>
@@ -10,6 +10,7 @@
 #include "core/utilities/error.h"
 #include "core/variables/kernel_variables.h"
 #include "structural/constitutive_laws/voigt_utilities.h"
+#include "structural/elements/displacement_dofs.h"
 
 namespace mc {
 
@@ -24,7 +25,6 @@ using BMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, kMax
 using DofVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxDofs, 1>;
 using NodeMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxNodes, kMaxNodes>;
 
-const Variable<double>* const kDisplacement[3] = {&DISPLACEMENT_X, &DISPLACEMENT_Y, &DISPLACEMENT_Z};
 
 /// Tensor index pairs of the rows of a 2D plane B-matrix (xx, yy, xy).
 constexpr int kPlanePairs[3][2] = {{0, 0}, {1, 1}, {0, 1}};
@@ -69,10 +69,19 @@ Eigen::Matrix3d EquivalentF(const voigt::StrainVector& strain) {
   return F + Eigen::Matrix3d::Identity();
 }
 
+// The Green-Lagrange strain of F in the law's Voigt order.
+voigt::StrainVector GreenLagrangeStrain(const Eigen::Matrix3d& F, int strain_size) {
+  const voigt::Vector6 E = voigt::StrainToVoigt(0.5 * (F.transpose() * F - Eigen::Matrix3d::Identity()));
+  const auto comps = voigt::Components(strain_size);
+  voigt::StrainVector strain(strain_size);
+  for (int c = 0; c < strain_size; ++c) strain[c] = E[comps[c]];
+  return strain;
+}
+
 }  // namespace
 
 /// Kinematics of one integration point in the reference configuration.
-struct BaseSolidElement::PointState {
+struct SolidElement::PointState {
   NVector N;
   Gradients DN_DX;
   Eigen::Matrix3d F;
@@ -82,7 +91,7 @@ struct BaseSolidElement::PointState {
   double r = 0.0;    ///< current radius (axisymmetry)
 };
 
-struct BaseSolidElement::PointResults {
+struct SolidElement::PointResults {
   voigt::StrainVector strain;
   voigt::StrainVector pk2;
   Eigen::Matrix3d pk2_tensor;
@@ -119,28 +128,31 @@ void ComputePoint(const Geometry& geometry, int order, int g, const NodalValues&
 
 }  // namespace
 
-int BaseSolidElement::Dimension() const noexcept { return GetGeometry().Reference().WorkingSpaceDimension(); }
+int SolidElement::Dimension() const noexcept { return GetGeometry().Reference().WorkingSpaceDimension(); }
 
-int BaseSolidElement::StrainSize() const noexcept { return Dimension() == 3 ? 6 : (axisymmetric_ ? 4 : 3); }
+int SolidElement::StrainSize() const noexcept { return Dimension() == 3 ? 6 : (axisymmetric_ ? 4 : 3); }
 
-std::string BaseSolidElement::Info() const {
-  return Concat(Stem(), Dimension(), "D", GetGeometry().Reference().NodesNumber(), "N");
+std::unique_ptr<Element> SolidElement::Create(IndexType id, Geometry::NodesArray nodes, Properties* properties) const {
+  return std::make_unique<SolidElement>(id, Geometry(GetGeometry().Type(), std::move(nodes)), properties, kinematics_,
+                                        axisymmetric_);
 }
 
-void BaseSolidElement::GetDofList(DofsVectorType& dofs, const ProcessInfo& info) const {
-  const int dim = Dimension();
-  const Geometry& geometry = GetGeometry();
-  dofs.resize(geometry.PointsNumber() * static_cast<std::size_t>(dim));
-  for (std::size_t a = 0; a < geometry.PointsNumber(); ++a)
-    for (int k = 0; k < dim; ++k) dofs[a * dim + k] = &geometry[a].GetDof(*kDisplacement[k]);
+std::string SolidElement::Info() const {
+  static constexpr const char* kStem[] = {"SmallDisplacementElement", "TotalLagrangianElement",
+                                          "UpdatedLagrangianElement"};
+  return StructuralEntityName(kStem[static_cast<int>(kinematics_)], axisymmetric_, GetGeometry());
 }
 
-bool BaseSolidElement::HasConstantLeftHandSide() const {
+void SolidElement::GetDofList(DofsVectorType& dofs, const ProcessInfo& info) const {
+  GetDisplacementDofList(GetGeometry(), dofs);
+}
+
+bool SolidElement::HasConstantLeftHandSide() const {
   return kinematics_ == Kinematics::SmallDisplacement && !laws_.empty() &&
          std::all_of(laws_.begin(), laws_.end(), [](const auto& law) { return law->HasConstantTangent(); });
 }
 
-void BaseSolidElement::Initialize(const ProcessInfo& info) {
+void SolidElement::Initialize(const ProcessInfo& info) {
   if (!HasProperties() || !GetProperties().HasConstitutiveLaw())
     throw InputError(Concat("element ", Id(), " (", Info(), "): ",
                             HasProperties() ? Concat("properties ", GetProperties().Id(), " have no constitutive law")
@@ -157,11 +169,11 @@ void BaseSolidElement::Initialize(const ProcessInfo& info) {
   }
 }
 
-void BaseSolidElement::EnsureLaws() {
+void SolidElement::EnsureLaws() {
   if (laws_.size() != static_cast<std::size_t>(NumberOfIntegrationPoints())) Initialize(ProcessInfo{});
 }
 
-void BaseSolidElement::FinalizeSolutionStep(const ProcessInfo& info) {
+void SolidElement::FinalizeSolutionStep(const ProcessInfo& info) {
   EnsureLaws();
   for (int g = 0; g < static_cast<int>(laws_.size()); ++g) {
     PointResults results;
@@ -176,17 +188,17 @@ void BaseSolidElement::FinalizeSolutionStep(const ProcessInfo& info) {
   }
 }
 
-void BaseSolidElement::CalculateLocalSystem(Matrix& lhs, Vector& rhs, const ProcessInfo& info) {
+void SolidElement::CalculateLocalSystem(Matrix& lhs, Vector& rhs, const ProcessInfo& info) {
   CalculateAll(&lhs, &rhs, info);
 }
 
-void BaseSolidElement::CalculateLeftHandSide(Matrix& lhs, const ProcessInfo& info) { CalculateAll(&lhs, nullptr, info); }
+void SolidElement::CalculateLeftHandSide(Matrix& lhs, const ProcessInfo& info) { CalculateAll(&lhs, nullptr, info); }
 
-void BaseSolidElement::CalculateRightHandSide(Vector& rhs, const ProcessInfo& info) {
+void SolidElement::CalculateRightHandSide(Vector& rhs, const ProcessInfo& info) {
   CalculateAll(nullptr, &rhs, info);
 }
 
-void BaseSolidElement::CalculateAll(Matrix* lhs, Vector* rhs, const ProcessInfo& info) {
+void SolidElement::CalculateAll(Matrix* lhs, Vector* rhs, const ProcessInfo& info) {
   EnsureLaws();
   const Geometry& geometry = GetGeometry();
   const Properties& properties = GetProperties();
@@ -240,15 +252,11 @@ void BaseSolidElement::CalculateAll(Matrix* lhs, Vector* rhs, const ProcessInfo&
         values.F = EquivalentF(values.strain);
         values.detF = values.F.determinant();
         break;
-      case Kinematics::TotalLagrangian: {
+      case Kinematics::TotalLagrangian:
         FillB(k.F, k.DN_DX, k.N, k.F(2, 2) / k.R, dim, strain_size, B);
-        const voigt::Vector6 E = voigt::StrainToVoigt(0.5 * (k.F.transpose() * k.F - Eigen::Matrix3d::Identity()));
-        const auto comps = voigt::Components(strain_size);
-        values.strain.resize(strain_size);
-        for (int c = 0; c < strain_size; ++c) values.strain[c] = E[comps[c]];
+        values.strain = GreenLagrangeStrain(k.F, strain_size);
         G = k.DN_DX;
         break;
-      }
       case Kinematics::UpdatedLagrangian: {
         G = k.DN_DX * k.F.inverse().topLeftCorner(dim, dim);
         FillB(Eigen::Matrix3d::Identity(), G, k.N, 1.0 / k.r, dim, strain_size, B);
@@ -285,7 +293,7 @@ void BaseSolidElement::CalculateAll(Matrix* lhs, Vector* rhs, const ProcessInfo&
   }
 }
 
-void BaseSolidElement::CalculateMassMatrix(Matrix& mass, const ProcessInfo& info) {
+void SolidElement::CalculateMassMatrix(Matrix& mass, const ProcessInfo& info) {
   const Geometry& geometry = GetGeometry();
   const int dim = Dimension();
   const auto n = static_cast<Eigen::Index>(geometry.PointsNumber());
@@ -319,7 +327,7 @@ void BaseSolidElement::CalculateMassMatrix(Matrix& mass, const ProcessInfo& info
       for (int c = 0; c < dim; ++c) mass(a * dim + c, b * dim + c) = M(a, b);
 }
 
-void BaseSolidElement::CalculateDampingMatrix(Matrix& damping, const ProcessInfo& info) {
+void SolidElement::CalculateDampingMatrix(Matrix& damping, const ProcessInfo& info) {
   const Properties& properties = GetProperties();
   const double alpha = properties.Has(RAYLEIGH_ALPHA) ? properties.GetValue(RAYLEIGH_ALPHA) : info.GetValue(RAYLEIGH_ALPHA);
   const double beta = properties.Has(RAYLEIGH_BETA) ? properties.GetValue(RAYLEIGH_BETA) : info.GetValue(RAYLEIGH_BETA);
@@ -336,7 +344,7 @@ void BaseSolidElement::CalculateDampingMatrix(Matrix& damping, const ProcessInfo
   }
 }
 
-void BaseSolidElement::Check(const ProcessInfo& info) const {
+void SolidElement::Check(const ProcessInfo& info) const {
   const std::string name = Concat("element ", Id(), " (", Info(), ")");
   if (!HasProperties()) throw InputError(Concat(name, ": has no properties"));
   const Properties& properties = GetProperties();
@@ -351,14 +359,7 @@ void BaseSolidElement::Check(const ProcessInfo& info) const {
                             axisymmetric_ ? " (an axisymmetric law, e.g. LinearElasticAxisym2DLaw)" : ""));
   law.Check(properties);
   const Geometry& geometry = GetGeometry();
-  for (std::size_t a = 0; a < geometry.PointsNumber(); ++a) {
-    const Node& node = geometry[a];
-    if (!node.HasSolutionStepValue(DISPLACEMENT))
-      throw InputError(Concat(name, ": node ", node.Id(), " has no solution-step variable DISPLACEMENT"));
-    for (int c = 0; c < dim; ++c)
-      if (!node.HasDofFor(*kDisplacement[c]))
-        throw InputError(Concat(name, ": node ", node.Id(), " has no DoF ", kDisplacement[c]->Name()));
-  }
+  CheckDisplacementDofs(geometry, name);
   NodalValues X, U;
   Gather(geometry, X, U);
   U.setZero();
@@ -377,7 +378,7 @@ void BaseSolidElement::Check(const ProcessInfo& info) const {
   }
 }
 
-void BaseSolidElement::EvaluateResults(int g, PointResults& results, const ProcessInfo& info) {
+void SolidElement::EvaluateResults(int g, PointResults& results, const ProcessInfo& info) {
   EnsureLaws();
   const Geometry& geometry = GetGeometry();
   const Properties& properties = GetProperties();
@@ -396,7 +397,6 @@ void BaseSolidElement::EvaluateResults(int g, PointResults& results, const Proce
   values.detF = k.F.determinant();
   values.compute_tangent = false;
   values.small_strain = kinematics_ == Kinematics::SmallDisplacement;
-  results.strain.resize(strain_size);
   if (kinematics_ == Kinematics::SmallDisplacement) {
     DofVector u(n * dim);
     for (Eigen::Index a = 0; a < n; ++a) u.segment(a * dim, dim) = U.row(a).head(dim).transpose();
@@ -406,9 +406,7 @@ void BaseSolidElement::EvaluateResults(int g, PointResults& results, const Proce
     values.F = EquivalentF(results.strain);
     values.detF = values.F.determinant();
   } else {
-    const voigt::Vector6 E = voigt::StrainToVoigt(0.5 * (k.F.transpose() * k.F - Eigen::Matrix3d::Identity()));
-    const auto comps = voigt::Components(strain_size);
-    for (int c = 0; c < strain_size; ++c) results.strain[c] = E[comps[c]];
+    results.strain = GreenLagrangeStrain(k.F, strain_size);
   }
   values.strain = results.strain;
   ConstitutiveLaw& law = *laws_[static_cast<std::size_t>(g)];
@@ -421,62 +419,57 @@ void BaseSolidElement::EvaluateResults(int g, PointResults& results, const Proce
   results.energy = law.StrainEnergy(values);
 }
 
-void BaseSolidElement::CalculateOnIntegrationPoints(const Variable<double>& var, std::vector<double>& out,
-                                                    const ProcessInfo& info) {
+template <class T, class Extract>
+void SolidElement::CollectResults(std::vector<T>& out, const ProcessInfo& info, Extract extract) {
+  const int npoints = NumberOfIntegrationPoints();
+  out.resize(static_cast<std::size_t>(npoints));
+  PointResults results;
+  for (int g = 0; g < npoints; ++g) {
+    EvaluateResults(g, results, info);
+    out[static_cast<std::size_t>(g)] = extract(results);
+  }
+}
+
+void SolidElement::CalculateOnIntegrationPoints(const Variable<double>& var, std::vector<double>& out,
+                                                const ProcessInfo& info) {
   if (var != VON_MISES_STRESS && var != STRAIN_ENERGY) {
     Element::CalculateOnIntegrationPoints(var, out, info);
     return;
   }
-  const int npoints = NumberOfIntegrationPoints();
-  out.resize(static_cast<std::size_t>(npoints));
-  PointResults results;
-  for (int g = 0; g < npoints; ++g) {
-    EvaluateResults(g, results, info);
-    out[static_cast<std::size_t>(g)] = var == VON_MISES_STRESS ? voigt::VonMises(results.cauchy_tensor) : results.energy;
-  }
+  CollectResults(out, info, [&](const PointResults& results) {
+    return var == VON_MISES_STRESS ? voigt::VonMises(results.cauchy_tensor) : results.energy;
+  });
 }
 
-void BaseSolidElement::CalculateOnIntegrationPoints(const Variable<Vector>& var, std::vector<Vector>& out,
-                                                    const ProcessInfo& info) {
+void SolidElement::CalculateOnIntegrationPoints(const Variable<Vector>& var, std::vector<Vector>& out,
+                                                const ProcessInfo& info) {
   if (var != CAUCHY_STRESS_VECTOR && var != PK2_STRESS_VECTOR && var != GREEN_LAGRANGE_STRAIN_VECTOR) {
     Element::CalculateOnIntegrationPoints(var, out, info);
     return;
   }
-  const int npoints = NumberOfIntegrationPoints();
   const int strain_size = StrainSize();
   const auto comps = voigt::Components(strain_size);
-  out.resize(static_cast<std::size_t>(npoints));
-  PointResults results;
-  for (int g = 0; g < npoints; ++g) {
-    EvaluateResults(g, results, info);
-    Vector& v = out[static_cast<std::size_t>(g)];
-    if (var == GREEN_LAGRANGE_STRAIN_VECTOR) {
-      v = results.strain;
-    } else if (var == PK2_STRESS_VECTOR) {
-      v = results.pk2;
-    } else {
-      v.resize(strain_size);
-      for (int c = 0; c < strain_size; ++c)
-        v[c] = results.cauchy_tensor(voigt::kPairs[comps[c]][0], voigt::kPairs[comps[c]][1]);
-    }
-  }
+  CollectResults(out, info, [&](const PointResults& results) -> Vector {
+    if (var == GREEN_LAGRANGE_STRAIN_VECTOR) return results.strain;
+    if (var == PK2_STRESS_VECTOR) return results.pk2;
+    Vector v(strain_size);
+    for (int c = 0; c < strain_size; ++c)
+      v[c] = results.cauchy_tensor(voigt::kPairs[comps[c]][0], voigt::kPairs[comps[c]][1]);
+    return v;
+  });
 }
 
-void BaseSolidElement::CalculateOnIntegrationPoints(const Variable<Matrix>& var, std::vector<Matrix>& out,
-                                                    const ProcessInfo& info) {
+void SolidElement::CalculateOnIntegrationPoints(const Variable<Matrix>& var, std::vector<Matrix>& out,
+                                                const ProcessInfo& info) {
   if (var != CAUCHY_STRESS_TENSOR && var != PK2_STRESS_TENSOR) {
     Element::CalculateOnIntegrationPoints(var, out, info);
     return;
   }
-  const int npoints = NumberOfIntegrationPoints();
   const int size = axisymmetric_ ? 3 : Dimension();
-  out.resize(static_cast<std::size_t>(npoints));
-  PointResults results;
-  for (int g = 0; g < npoints; ++g) {
-    EvaluateResults(g, results, info);
+  CollectResults(out, info, [&](const PointResults& results) {
     const Eigen::Matrix3d& t = var == CAUCHY_STRESS_TENSOR ? results.cauchy_tensor : results.pk2_tensor;
-    out[static_cast<std::size_t>(g)] = t.topLeftCorner(size, size);
-  }
+    return Matrix(t.topLeftCorner(size, size));
+  });
 }
 
 }  // namespace mc

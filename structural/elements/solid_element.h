@@ -27,11 +27,19 @@ namespace mc {
 /// F_thth N/R (total), N/r (updated).
 ///
 /// Sign conventions: RHS = f_ext - f_int, LHS = d(f_int - f_ext)/du (tangent stiffness).
-class BaseSolidElement : public Element {
+///
+/// Registered names (Kratos'): SmallDisplacementElement, TotalLagrangianElement and
+/// UpdatedLagrangianElement + "<dim>D<nodes>N", with the prefix "Axisym" in axisymmetry.
+class SolidElement final : public Element {
  public:
   enum class Kinematics { SmallDisplacement, TotalLagrangian, UpdatedLagrangian };
 
-  /// Stem + "<dim>D<nodes>N", e.g. "TotalLagrangianElement2D4N".
+  SolidElement(IndexType id, Geometry geometry, Properties* properties, Kinematics kinematics, bool axisymmetric)
+      : Element(id, std::move(geometry), properties), kinematics_(kinematics), axisymmetric_(axisymmetric) {}
+  /// The same variant on other nodes.
+  std::unique_ptr<Element> Create(IndexType id, Geometry::NodesArray nodes, Properties* properties) const override;
+
+  /// E.g. "TotalLagrangianElement2D4N", "AxisymSmallDisplacementElement2D3N".
   std::string Info() const override;
   Kinematics GetKinematics() const noexcept { return kinematics_; }
   bool IsAxisymmetric() const noexcept { return axisymmetric_; }
@@ -69,13 +77,6 @@ class BaseSolidElement : public Element {
   void CalculateOnIntegrationPoints(const Variable<Matrix>& var, std::vector<Matrix>& out,
                                     const ProcessInfo& info) override;
 
- protected:
-  BaseSolidElement(IndexType id, Geometry geometry, Properties* properties, Kinematics kinematics,
-                   bool axisymmetric)
-      : Element(id, std::move(geometry), properties), kinematics_(kinematics), axisymmetric_(axisymmetric) {}
-
-  virtual const char* Stem() const = 0;
-
  private:
   struct PointState;
   struct PointResults;
@@ -86,6 +87,9 @@ class BaseSolidElement : public Element {
   void CalculateAll(Matrix* lhs, Vector* rhs, const ProcessInfo& info);
   /// Stress state of one point for outputs: PK2 (and strain) from the law, Cauchy pushed forward.
   void EvaluateResults(int g, PointResults& results, const ProcessInfo& info);
+  /// out[g] = extract(results of integration point g), for every point.
+  template <class T, class Extract>
+  void CollectResults(std::vector<T>& out, const ProcessInfo& info, Extract extract);
 
   Kinematics kinematics_;
   bool axisymmetric_;

@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <string>
+
+#include "core/linear_solvers/linear_solver.h"
+#include "core/linear_solvers/sparse_pattern.h"
+
+namespace mc {
+
+/// What the direct solvers (UMFPACK, KLU, CHOLMOD, Eigen SparseLU) share: the symbolic analysis
+/// is run by `Initialize` and reused by every `Solve` on the same pattern; a `Solve` on another
+/// pattern (or before any analysis) analyses again instead of factorizing with a stale analysis.
+/// The library calls are the derived class's: Analyze, Factorize, Substitute, Release.
+class DirectSolver : public LinearSolver {
+ public:
+  DirectSolver(const DirectSolver&) = delete;
+  DirectSolver& operator=(const DirectSolver&) = delete;
+
+  bool IsDirect() const final { return true; }
+  /// Frees any earlier analysis; throws SolutionError for a non-square matrix.
+  void Initialize(const SparseMatrix& A) final;
+  void Solve(const SparseMatrix& A, Vector& x, const Vector& b) final;
+  void Clear() final;
+
+  /// Symbolic analyses run so far (tests check the reuse across value changes).
+  int SymbolicAnalysesNumber() const noexcept { return symbolic_count_; }
+
+ protected:
+  /// `library` names the solver in error messages ("UMFPACK").
+  explicit DirectSolver(std::string library) : library_(std::move(library)) {}
+  /// Derived destructors call Release themselves (it is virtual).
+  ~DirectSolver() override = default;
+
+  /// Symbolic phase: orderings and analysis of the pattern of `A` (compressed and square).
+  virtual void Analyze(const SparseMatrix& A) = 0;
+  /// Numeric phase for the values of `A`, analysed before. Throws SingularMatrixError naming the
+  /// equation at fault, SolutionError for any other failure.
+  virtual void Factorize(const SparseMatrix& A) = 0;
+  /// Forward and back substitution with the last factorization.
+  virtual void Substitute(const SparseMatrix& A, Vector& x, const Vector& b) = 0;
+  /// Frees the library's symbolic and numeric objects (no-op when there are none).
+  virtual void Release() = 0;
+
+ private:
+  std::string library_;
+  SparsePattern pattern_;
+  SparseMatrix compressed_;
+  int symbolic_count_ = 0;
+};
+
+}  // namespace mc
