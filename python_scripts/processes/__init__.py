@@ -14,12 +14,7 @@ import sys
 from .. import _core
 from ..process import Process
 from ..utilities import nearest
-from .assign_scalar_variable_process import AssignScalarVariableProcess
-from .assign_scalar_variable_to_conditions_process import AssignScalarVariableToConditionsProcess
-from .assign_vector_by_direction_process import AssignVectorByDirectionProcess
-from .assign_vector_by_direction_to_condition_process import AssignVectorByDirectionToConditionProcess
-from .assign_vector_variable_process import AssignVectorVariableProcess
-from .assign_vector_variable_to_conditions_process import AssignVectorVariableToConditionsProcess
+from .assignment_processes import ASSIGNMENT_PROCESSES
 from .from_json_check_result_process import CheckResultError, FromJsonCheckResultProcess
 from .json_output_process import JsonOutputProcess
 from .model_part_resolution import resolve_model_part
@@ -29,12 +24,7 @@ CONTACT = "ContactStructuralMechanicsApplication"
 
 #: (normalised kratos_module, python_module) -> process class
 PROCESS_REGISTRY: dict[tuple[str, str], type[Process]] = {
-    (KERNEL, "assign_scalar_variable_process"): AssignScalarVariableProcess,
-    (KERNEL, "assign_vector_variable_process"): AssignVectorVariableProcess,
-    (KERNEL, "assign_vector_by_direction_process"): AssignVectorByDirectionProcess,
-    (KERNEL, "assign_scalar_variable_to_conditions_process"): AssignScalarVariableToConditionsProcess,
-    (KERNEL, "assign_vector_variable_to_conditions_process"): AssignVectorVariableToConditionsProcess,
-    (KERNEL, "assign_vector_by_direction_to_condition_process"): AssignVectorByDirectionToConditionProcess,
+    **{(KERNEL, name): cls for name, cls in ASSIGNMENT_PROCESSES.items()},
     (KERNEL, "from_json_check_result_process"): FromJsonCheckResultProcess,
     (KERNEL, "json_output_process"): JsonOutputProcess,
 }

@@ -10,9 +10,7 @@ import os
 import numpy as np
 
 from .. import _core
-from ..process import Process
 from ._bulk import is_array3, is_scalar, variable_by_name
-from .model_part_resolution import resolve_model_part
 
 END_OF_TIME = 1e30
 
@@ -173,77 +171,6 @@ def parse_direction(direction, where: str) -> np.ndarray:
 
 def current_time(part) -> float:
     return float(part.ProcessInfo.GetValue(_core.TIME))
-
-
-class NodalAssignmentProcess(Process):
-    """Assigns historical nodal values component by component inside ``interval``, fixing the
-    constrained ones, and frees those DoFs at the end of every step in which it fixed them."""
-
-    NAME = "assignment process"
-    REQUIRED: tuple[str, ...] = ("model_part_name", "variable_name")
-
-    def __init__(self, model, settings):
-        settings = settings if settings is not None else _core.Parameters()
-        require_keys(settings, self.NAME, self.REQUIRED)
-        super().__init__(model, settings)
-        self.where = self.settings.Where()
-        self.model_part = resolve_model_part(model, self.settings["model_part_name"].GetString())
-        self.interval = Interval(to_python(self.settings["interval"]), self.where)
-        # (component variable, ScalarValue, fix)
-        self.assignments: list[tuple[object, ScalarValue, bool]] = []
-        self._fixed_in_step = False
-
-    def _assign(self) -> None:
-        time = current_time(self.model_part)
-        if not self.interval.contains(time):
-            return
-        for variable, value, fix in self.assignments:
-            value.assign_to_nodes(self.model_part, variable, time, fix)
-            self._fixed_in_step = self._fixed_in_step or fix
-
-    def ExecuteBeforeSolutionLoop(self) -> None:
-        self._assign()
-
-    def ExecuteInitializeSolutionStep(self) -> None:
-        self._assign()
-
-    def ExecuteFinalizeSolutionStep(self) -> None:
-        if not self._fixed_in_step:
-            return
-        for variable, _, fix in self.assignments:
-            if fix:
-                _core.VariableUtils.FreeDof(self.model_part, variable)
-        self._fixed_in_step = False
-
-
-class ConditionAssignmentProcess(Process):
-    """Sets non-historical condition values component by component inside ``interval``; the
-    values stay on the conditions after the interval ends."""
-
-    NAME = "assignment process"
-    REQUIRED: tuple[str, ...] = ("model_part_name", "variable_name")
-
-    def __init__(self, model, settings):
-        settings = settings if settings is not None else _core.Parameters()
-        require_keys(settings, self.NAME, self.REQUIRED)
-        super().__init__(model, settings)
-        self.where = self.settings.Where()
-        self.model_part = resolve_model_part(model, self.settings["model_part_name"].GetString())
-        self.interval = Interval(to_python(self.settings["interval"]), self.where)
-        self.assignments: list[tuple[object, ScalarValue]] = []
-
-    def _assign(self) -> None:
-        time = current_time(self.model_part)
-        if not self.interval.contains(time):
-            return
-        for variable, value in self.assignments:
-            value.assign_to_conditions(self.model_part, variable, time)
-
-    def ExecuteBeforeSolutionLoop(self) -> None:
-        self._assign()
-
-    def ExecuteInitializeSolutionStep(self) -> None:
-        self._assign()
 
 
 def defaults(text: str):

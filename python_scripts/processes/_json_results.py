@@ -12,6 +12,7 @@ import json
 import numpy as np
 
 from .. import _core
+from ..process import Process
 from ..utilities import write_text_atomically
 from ._bulk import UnsetVariableWarning, is_array3, nodal_flags, nodal_values, variable_by_name
 from .model_part_resolution import resolve_model_part
@@ -87,3 +88,30 @@ class TimeCounter:
             self.elapsed = 0.0
             return True
         return False
+
+
+class JsonResultsProcess(Process):
+    """The settings the JSON writer and checker share: their file (FILE_KEY), the nodal and
+    integration-point variables (VARIABLES_KEY, GAUSS_KEY), ``historical_value``,
+    ``check_for_flag``, ``use_node_coordinates`` and ``time_frequency``."""
+
+    NAME = ""
+    FILE_KEY = ""
+    VARIABLES_KEY = ""
+    GAUSS_KEY = ""
+
+    def __init__(self, model, settings):
+        super().__init__(model, settings)
+        s = self.settings
+        for key in (self.FILE_KEY, "model_part_name"):
+            if not s[key].GetString():
+                raise _core.InputError(f"{s.Where()}: {self.NAME} requires '{key}'")
+        self.file_name = s[self.FILE_KEY].GetString()
+        self.variables = s[self.VARIABLES_KEY].GetStringArray()
+        self.gauss_variables = s[self.GAUSS_KEY].GetStringArray()
+        self.historical = s["historical_value"].GetBool()
+        self.flag = s["check_for_flag"].GetString()
+        self.use_coordinates = s["use_node_coordinates"].GetBool()
+        self.counter = TimeCounter(s["time_frequency"].GetDouble())
+        self.model_part = None
+        self.unset = UnsetVariableWarning(self.NAME)

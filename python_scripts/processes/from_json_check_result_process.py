@@ -7,9 +7,7 @@ import os
 import numpy as np
 
 from .. import _core
-from ..process import Process
-from ._bulk import UnsetVariableWarning
-from ._json_results import (TimeCounter, gauss_point_columns, node_keys, node_mask, results_model_part,
+from ._json_results import (JsonResultsProcess, gauss_point_columns, node_keys, node_mask, results_model_part,
                             value_columns)
 
 
@@ -40,7 +38,7 @@ def interpolation_weights(times: np.ndarray, time: float) -> tuple[int, int, flo
     return i, j, 0.0 if span == 0.0 else (time - times[i]) / span
 
 
-class FromJsonCheckResultProcess(Process):
+class FromJsonCheckResultProcess(JsonResultsProcess):
     """At ``ExecuteFinalizeSolutionStep``, on sampled steps (DELTA_TIME accumulates and a step
     is checked once the sum exceeds ``time_frequency`` strictly, then the sum restarts; 0 = every
     step), compares every node's ``check_variables`` (and every element's
@@ -58,6 +56,11 @@ class FromJsonCheckResultProcess(Process):
     variable that no node holds is checked as zeros, with a warning.
     """
 
+    NAME = "from_json_check_result_process"
+    FILE_KEY = "input_file_name"
+    VARIABLES_KEY = "check_variables"
+    GAUSS_KEY = "gauss_points_check_variables"
+
     @classmethod
     def GetDefaultParameters(cls):
         return _core.Parameters("""{
@@ -70,30 +73,17 @@ class FromJsonCheckResultProcess(Process):
 
     def __init__(self, model, settings):
         super().__init__(model, settings)
-        s = self.settings
-        for key in ("input_file_name", "model_part_name"):
-            if not s[key].GetString():
-                raise _core.InputError(f"{s.Where()}: from_json_check_result_process requires '{key}'")
-        self.input_file_name = s["input_file_name"].GetString()
-        self.variables = s["check_variables"].GetStringArray()
-        self.gauss_variables = s["gauss_points_check_variables"].GetStringArray()
-        self.historical = s["historical_value"].GetBool()
-        self.flag = s["check_for_flag"].GetString()
-        self.use_coordinates = s["use_node_coordinates"].GetBool()
-        self.tolerance = s["tolerance"].GetDouble()
-        self.relative_tolerance = s["relative_tolerance"].GetDouble()
-        self.counter = TimeCounter(s["time_frequency"].GetDouble())
-        self.model_part = None
-        self.unset = UnsetVariableWarning("from_json_check_result_process")
+        self.tolerance = self.settings["tolerance"].GetDouble()
+        self.relative_tolerance = self.settings["relative_tolerance"].GetDouble()
         self.checks_done = 0
 
     def ExecuteInitialize(self) -> None:
-        if not os.path.isfile(self.input_file_name):
-            raise _core.InputError(f"{self.settings.Where()}: reference file '{self.input_file_name}' does not exist")
-        with open(self.input_file_name) as stream:
+        if not os.path.isfile(self.file_name):
+            raise _core.InputError(f"{self.settings.Where()}: reference file '{self.file_name}' does not exist")
+        with open(self.file_name) as stream:
             self.reference = json.load(stream)
         if "TIME" not in self.reference:
-            raise _core.InputError(f"{self.input_file_name}: the reference has no 'TIME' list")
+            raise _core.InputError(f"{self.file_name}: the reference has no 'TIME' list")
         self.times = np.asarray(self.reference["TIME"], dtype=float)
         self.model_part = results_model_part(self.model, self.settings)
 
@@ -104,10 +94,10 @@ class FromJsonCheckResultProcess(Process):
                 entry = entry[gp]
         except KeyError:
             what = f"{entity_key} {key}" + (f" point {gauss_point[0]}" if gauss_point else "")
-            raise _core.InputError(f"{self.input_file_name}: no reference values for {what}") from None
+            raise _core.InputError(f"{self.file_name}: no reference values for {what}") from None
         series = np.asarray(entry, dtype=float)
         if series.shape != self.times.shape:
-            raise _core.InputError(f"{self.input_file_name}: {entity_key} {key} has {series.size} values for "
+            raise _core.InputError(f"{self.file_name}: {entity_key} {key} has {series.size} values for "
                                    f"{self.times.size} times")
         return series
 
@@ -126,7 +116,7 @@ class FromJsonCheckResultProcess(Process):
         if failures:
             shown = "\n  ".join(failures[:10])
             more = f"\n  ... and {len(failures) - 10} more" if len(failures) > 10 else ""
-            raise CheckResultError(f"{self.input_file_name}: {len(failures)} value(s) differ from the reference "
+            raise CheckResultError(f"{self.file_name}: {len(failures)} value(s) differ from the reference "
                                    f"at time {time:.10g} (tolerance {self.tolerance:g}, relative_tolerance "
                                    f"{self.relative_tolerance:g}):\n  {shown}{more}")
 

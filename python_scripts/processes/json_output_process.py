@@ -5,13 +5,11 @@ from __future__ import annotations
 import numpy as np
 
 from .. import _core
-from ..process import Process
-from ._bulk import UnsetVariableWarning
-from ._json_results import (TimeCounter, gauss_point_columns, node_keys, node_mask, results_model_part,
+from ._json_results import (JsonResultsProcess, gauss_point_columns, node_keys, node_mask, results_model_part,
                             value_columns, write_json_atomically)
 
 
-class JsonOutputProcess(Process):
+class JsonOutputProcess(JsonResultsProcess):
     """Samples ``output_variables`` at ``ExecuteFinalizeSolutionStep`` (see ``TimeCounter`` for
     ``time_frequency``) and writes ``output_file_name`` at ``ExecuteFinalize`` in one atomic
     replace, so a failed run never leaves a half-written reference.
@@ -24,6 +22,11 @@ class JsonOutputProcess(Process):
     variable that no node holds is recorded as zeros with a warning.
     """
 
+    NAME = "json_output_process"
+    FILE_KEY = "output_file_name"
+    VARIABLES_KEY = "output_variables"
+    GAUSS_KEY = "gauss_points_output_variables"
+
     @classmethod
     def GetDefaultParameters(cls):
         return _core.Parameters("""{
@@ -35,21 +38,8 @@ class JsonOutputProcess(Process):
 
     def __init__(self, model, settings):
         super().__init__(model, settings)
-        s = self.settings
-        for key in ("output_file_name", "model_part_name"):
-            if not s[key].GetString():
-                raise _core.InputError(f"{s.Where()}: json_output_process requires '{key}'")
-        self.output_file_name = s["output_file_name"].GetString()
-        self.variables = s["output_variables"].GetStringArray()
-        self.gauss_variables = s["gauss_points_output_variables"].GetStringArray()
-        self.historical = s["historical_value"].GetBool()
-        self.resultant = s["resultant_solution"].GetBool()
-        self.flag = s["check_for_flag"].GetString()
-        self.use_coordinates = s["use_node_coordinates"].GetBool()
-        self.counter = TimeCounter(s["time_frequency"].GetDouble())
+        self.resultant = self.settings["resultant_solution"].GetBool()
         self.data: dict = {"TIME": []}
-        self.model_part = None
-        self.unset = UnsetVariableWarning("json_output_process")
 
     def ExecuteInitialize(self) -> None:
         self.model_part = results_model_part(self.model, self.settings)
@@ -100,7 +90,7 @@ class JsonOutputProcess(Process):
 
     def write(self) -> None:
         """Writes what was recorded so far (atomically)."""
-        write_json_atomically(self.output_file_name, self.data)
+        write_json_atomically(self.file_name, self.data)
 
     def ExecuteFinalize(self) -> None:
         self.write()
