@@ -5,6 +5,8 @@
 #include <tuple>
 #include <vector>
 
+#include "core/linear_solvers/linear_solver.h"
+#include "core/utilities/string_utilities.h"
 #include "custom_formulations/contact_formulation.h"
 #include "custom_strategies/custom_convergencecriterias/alm_frictionless_components_mortar_criteria.h"
 #include "custom_strategies/custom_convergencecriterias/alm_frictionless_mortar_criteria.h"
@@ -91,6 +93,14 @@ void RegisterAll() {
                                    .active_set_criterion =
                                        [](Parameters) { return std::make_shared<MeshTyingMortarConvergenceCriteria>(); },
                                    .not_implemented = "mortar mesh tying"});
+
+  // As in Kratos, the condensing solver wraps the solver of linear_solver_settings and is chosen
+  // by contact_settings.mixed_ulm_solver_parameters; as a linear solver of its own it has nothing
+  // to wrap.
+  RegisterLinearSolver("mixed_ulm_linear_solver", [](const Parameters& settings) -> std::unique_ptr<LinearSolver> {
+    throw InputError(Concat(settings.Where(), ".solver_type: 'mixed_ulm_linear_solver' is only valid in "
+                                              "contact_settings.mixed_ulm_solver_parameters"));
+  });
 }
 
 }  // namespace

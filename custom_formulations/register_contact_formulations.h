@@ -4,7 +4,8 @@
 namespace mc {
 
 /// Registers the contact formulations of the application (ContactFormulation), the implemented
-/// ones and those still to come under their Kratos names. Idempotent.
+/// ones and those still to come under their Kratos names, and the name of the condensing linear
+/// solver (RegisterLinearSolver). Idempotent.
 void RegisterContactFormulations();
 
 }  // namespace mc

@@ -5,7 +5,7 @@
 #include "core/solving/builder_and_solver.h"
 #include "core/solving/scheme.h"
 #include "custom_python/python_module.h"
-#include "custom_strategies/custom_convergencecriterias/contact_mortar_updater.h"
+#include "custom_strategies/custom_strategies/contact_mortar_updater.h"
 #include "custom_strategies/custom_convergencecriterias/alm_frictionless_components_mortar_criteria.h"
 #include "custom_strategies/custom_convergencecriterias/alm_frictionless_mortar_criteria.h"
 #include "custom_strategies/custom_convergencecriterias/block_contact_criteria.h"

@@ -15,7 +15,7 @@ import time as wallclock
 from contextlib import contextmanager
 
 from . import _core
-from .processes import create_process_lists
+from .process_factory import create_process_lists
 from .project_parameters import read_project_parameters
 from .solvers import create_solver
 from .utilities import warn

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -58,5 +59,11 @@ std::unique_ptr<LinearSolver> CreateLinearSolver(const Parameters& settings);
 
 /// The normalised solver name for a Kratos spelling (spec 7.1), without validation.
 std::string NormalizeLinearSolverName(const std::string& name);
+
+/// How the applications above the core add their solvers to CreateLinearSolver (contact adds
+/// `mixed_ulm_linear_solver`): `create` receives the user's settings, unvalidated (the creator
+/// owns its keys). Registering a name again replaces its creator.
+using LinearSolverCreator = std::function<std::unique_ptr<LinearSolver>(const Parameters& settings)>;
+void RegisterLinearSolver(const std::string& name, LinearSolverCreator create);
 
 }  // namespace mc

@@ -59,7 +59,7 @@ const std::map<std::string, std::string>& DeprecatedSolverNames() {
   return names;
 }
 
-enum class Backend { kUmfpack, kKlu, kCholmod, kEigenSparseLU, kCg, kBicgstab, kGmres, kAmgcl, kScaling, kSparseQr, kMixedUlm, kPetsc };
+enum class Backend { kUmfpack, kKlu, kCholmod, kEigenSparseLU, kCg, kBicgstab, kGmres, kAmgcl, kScaling, kSparseQr, kPetsc };
 
 /// Every accepted normalised name and what runs for it (spec 7.2).
 const std::map<std::string, Backend>& SolverBackends() {
@@ -86,7 +86,6 @@ const std::map<std::string, Backend>& SolverBackends() {
       {"amgcl_ns", Backend::kAmgcl},
       {"scaling", Backend::kScaling},
       {"sparse_qr", Backend::kSparseQr},
-      {"mixed_ulm_linear_solver", Backend::kMixedUlm},
       {"petsc", Backend::kPetsc},
   };
   return backends;
@@ -143,9 +142,16 @@ Parameters DefaultSettings() {
   })");
 }
 
+/// The creators registered by the applications, by name.
+std::map<std::string, LinearSolverCreator>& RegisteredSolvers() {
+  static std::map<std::string, LinearSolverCreator> creators;
+  return creators;
+}
+
 std::vector<std::string> ValidSolverNames() {
   std::vector<std::string> names;
   for (const auto& [name, backend] : SolverBackends()) names.push_back(name);
+  for (const auto& [name, create] : RegisteredSolvers()) names.push_back(name);
   for (const auto& [name, normalised] : DeprecatedSolverNames()) names.push_back(name);
   return names;
 }
@@ -225,7 +231,15 @@ std::string NormalizeLinearSolverName(const std::string& name) {
   return found == DeprecatedSolverNames().end() ? stripped : found->second;
 }
 
+void RegisterLinearSolver(const std::string& name, LinearSolverCreator create) {
+  RegisteredSolvers()[name] = std::move(create);
+}
+
 std::unique_ptr<LinearSolver> CreateLinearSolver(const Parameters& user_settings) {
+  if (user_settings.Has("solver_type") && user_settings["solver_type"].IsString()) {
+    const auto registered = RegisteredSolvers().find(NormalizeLinearSolverName(user_settings["solver_type"].GetString()));
+    if (registered != RegisteredSolvers().end()) return registered->second(user_settings);
+  }
   Parameters settings = user_settings.Clone();
   settings.ValidateAndAssignDefaults(DefaultSettings());
   // "max_iteration_number" is the spelling of mixed_ulm_solver_parameters (spec 2.7.1).
@@ -289,9 +303,6 @@ std::unique_ptr<LinearSolver> CreateLinearSolver(const Parameters& user_settings
     case Backend::kPetsc:
       solver = CreatePetscSolver(settings);
       break;
-    case Backend::kMixedUlm:
-      throw InputError(Concat(settings.Where(), ".solver_type: '", given,
-                              "' is only valid in contact_settings.mixed_ulm_solver_parameters"));
   }
   if (settings["scaling"].GetBool()) solver = std::make_unique<ScalingSolver>(std::move(solver));
   return solver;

@@ -6,7 +6,7 @@
 
 #include "core/parameters/parameters.h"
 #include "core/solving/convergence_criteria.h"
-#include "custom_strategies/custom_convergencecriterias/mortar_updater.h"
+#include "custom_utilities/mortar_updater.h"
 #include "custom_utilities/active_set_utilities.h"
 
 namespace mc {

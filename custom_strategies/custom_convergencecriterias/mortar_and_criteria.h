@@ -8,7 +8,7 @@
 
 #include "core/solving/and_criteria.h"
 #include "custom_strategies/custom_convergencecriterias/condition_number_utility.h"
-#include "custom_strategies/custom_convergencecriterias/mortar_updater.h"
+#include "custom_utilities/mortar_updater.h"
 
 namespace mc {
 

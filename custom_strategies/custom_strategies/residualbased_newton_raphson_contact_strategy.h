@@ -9,7 +9,7 @@
 
 #include "core/parameters/parameters.h"
 #include "core/solving/newton_raphson_strategy.h"
-#include "custom_strategies/custom_convergencecriterias/mortar_updater.h"
+#include "custom_utilities/mortar_updater.h"
 
 namespace mc {
 

@@ -3,4 +3,10 @@ from __future__ import annotations
 
 from .vtk_output_process import VTK_CELL_TYPES, GidOutputProcess, VtkOutputProcess
 
-__all__ = ["VTK_CELL_TYPES", "GidOutputProcess", "VtkOutputProcess"]
+#: python_module -> class, registered under KratosMultiphysics by the process factory
+OUTPUT_PROCESSES = {
+    "vtk_output_process": VtkOutputProcess,
+    "gid_output_process": GidOutputProcess,
+}
+
+__all__ = ["OUTPUT_PROCESSES", "VTK_CELL_TYPES", "GidOutputProcess", "VtkOutputProcess"]

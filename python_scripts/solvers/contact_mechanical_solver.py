@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from .. import _core
 from ..utilities import warn
-from ..contact_solvers import create_contact_convergence_criteria, create_contact_strategy
+from ..contact_strategies import create_contact_convergence_criteria, create_contact_strategy
 from .mechanical_solver import MechanicalSolver
 
 #: The solver's own keys of contact_settings (Kratos' names and defaults). The keys of the classes

@@ -14,7 +14,7 @@
 #include "core/model/condition.h"
 #include "core/model/element.h"
 #include "core/model/model.h"
-#include "custom_strategies/custom_convergencecriterias/mortar_updater.h"
+#include "custom_utilities/mortar_updater.h"
 #include "tests/cpp/common/local_system_entity.h"
 
 namespace mc::test {

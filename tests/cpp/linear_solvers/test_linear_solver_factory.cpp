@@ -12,6 +12,7 @@
 #include "core/linear_solvers/linear_solver.h"
 #include "core/linear_solvers/scaling_solver.h"
 #include "core/linear_solvers/size_selecting_solver.h"
+#include "core/linear_solvers/umfpack_solver.h"
 #include "core/parameters/parameters.h"
 #include "test_matrices.h"
 #include "tests/cpp/common/error_message.h"
@@ -172,6 +173,20 @@ TEST(LinearSolverFactory, UnknownKeySuggestsTheNearest) {
 TEST(LinearSolverFactory, SparseQrIsNotImplemented) {
   const std::string message = ErrorMessage<NotImplementedError>(R"({"solver_type": "SparseQRSolver"})");
   EXPECT_NE(message.find("SparseQRSolver"), std::string::npos) << message;
+}
+
+TEST(LinearSolverFactory, RegisteredSolversAreCreatedWithTheUsersSettings) {
+  std::string seen;
+  RegisterLinearSolver("test_registered_solver", [&seen](const Parameters& settings) -> std::unique_ptr<LinearSolver> {
+    seen = settings["own_key"].GetString();
+    return std::make_unique<UmfpackSolver>();
+  });
+  // The creator owns its keys: the core's validation does not see them.
+  const auto solver = CreateLinearSolver(Parameters(R"({"solver_type": "test_registered_solver", "own_key": "x"})"));
+  EXPECT_EQ(solver->Name(), "umfpack");
+  EXPECT_EQ(seen, "x");
+  const std::string message = ErrorMessage<InputError>(R"({"solver_type": "test_registered_solvr"})");
+  EXPECT_NE(message.find("did you mean 'test_registered_solver'"), std::string::npos) << message;
 }
 
 }  // namespace

@@ -2,7 +2,7 @@
 // Issue 3 (part 1): automatic ALM penalty and scale factor (thesis eq. 4.11, spec 4.4/4.5).
 #include <gtest/gtest.h>
 
-#include "contact_search_test_utilities.h"
+#include "contact_processes_test_utilities.h"
 #include "core/model/model.h"
 #include "core/variables/kernel_variables.h"
 #include "custom_processes/alm_variables_calculation_process.h"

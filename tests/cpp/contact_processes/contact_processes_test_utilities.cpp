@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "contact_search_test_utilities.h"
+#include "contact_processes_test_utilities.h"
 
 #include "core/io/mdpa_reader.h"
 #include "core/model/registry.h"

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "custom_strategies/custom_convergencecriterias/contact_mortar_updater.h"
+#include "custom_strategies/custom_strategies/contact_mortar_updater.h"
 
 #include <chrono>
 

@@ -3,7 +3,7 @@
 
 #include <cstddef>
 
-#include "custom_strategies/custom_convergencecriterias/mortar_updater.h"
+#include "custom_utilities/mortar_updater.h"
 
 namespace mc {
 

@@ -16,12 +16,12 @@ SOURCE = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", "py
 
 
 def _load_from_source():
-    """The contact_solvers subpackage from the source tree, without importing the extension."""
+    """The contact_strategies subpackage from the source tree, without importing the extension."""
     if "_mc_src" not in sys.modules:
         package = types.ModuleType("_mc_src")
         package.__path__ = [SOURCE]
         sys.modules["_mc_src"] = package
-    return importlib.import_module("_mc_src.contact_solvers")
+    return importlib.import_module("_mc_src.contact_strategies")
 
 
 cs = _load_from_source()
@@ -138,7 +138,7 @@ FLAGS = {"ensure_contact": False, "print_convergence_criterion": False}
 
 
 #: what the tests need of the registered formulations (ContactFormulation): multiplier blocks and
-#: active-set criterion (the registry itself is tested in test_contact_search.py).
+#: active-set criterion (the registry itself is tested in test_contact_formulations.py).
 FORMULATIONS = {
     "ALMContactFrictionless": (1, "ALMFrictionlessMortarConvergenceCriteria"),
     "ALMContactFrictionlessComponents": (1, "ALMFrictionlessComponentsMortarConvergenceCriteria"),

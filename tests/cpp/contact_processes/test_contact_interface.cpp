@@ -6,7 +6,7 @@
 
 #include <set>
 
-#include "contact_search_test_utilities.h"
+#include "contact_processes_test_utilities.h"
 #include "core/model/model.h"
 #include "core/utilities/error.h"
 #include "core/variables/kernel_variables.h"

@@ -12,8 +12,8 @@ import pytest
 
 import mortarcontact as mc
 from mortarcontact import _core
-from mortarcontact.contact import ALMContactProcess, MeshTyingProcess, PenaltyContactProcess
-from mortarcontact.processes import PROCESS_REGISTRY, create_process
+from mortarcontact.contact_processes import ALMContactProcess, MeshTyingProcess, PenaltyContactProcess
+from mortarcontact.process_factory import PROCESS_REGISTRY, create_process
 
 IMPLEMENTED = {("alm_contact_process", "Frictionless"), ("penalty_contact_process", "Frictionless")}
 
@@ -118,23 +118,6 @@ def test_mortar_type_pairing():
         with pytest.raises(mc.InputError, match=f'needs solver_settings.contact_settings.mortar_type '
                                                  f'"ALMContactFrictionless"; found {found}'):
             process.check_solver_variables()
-
-
-def test_formulations_are_registered_once():
-    names = _core.ContactFormulation.Names()
-    assert {"ALMContactFrictionless", "ALMContactFrictionlessComponents", "PenaltyContactFrictionless",
-            "ALMContactFrictional", "ScalarMeshTying"} <= set(names)
-    components = _core.ContactFormulation.Get("ALMContactFrictionlessComponents")
-    assert components.condensable and components.multiplier == "VECTOR_LAGRANGE_MULTIPLIER"
-    assert components.ConditionStem(True, False) == "ALMNVFrictionlessComponentsMortarContactCondition"
-    # Kratos dispatches on substrings: a suffix keeps the formulation.
-    assert _core.ContactFormulation.Get("ALMContactFrictionlessWithNormalUpdate").mortar_type == "ALMContactFrictionless"
-    with pytest.raises(mc.InputError, match="did you mean 'ALMContactFrictionless'"):
-        _core.ContactFormulation.Get("ALMContatFrictionless")
-    with pytest.raises(mc.NotImplementedFeatureError, match="ComponentsMeshTying.*mesh tying"):
-        _core.ContactFormulation.Get("ComponentsMeshTying")
-    assert _core.ContactFormulation.ContactTypes("penalty_contact_process") == [
-        "Frictional", "FrictionalPureSlip", "Frictionless"]
 
 
 needs_bindings = pytest.mark.skipif(

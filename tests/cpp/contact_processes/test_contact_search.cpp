@@ -8,7 +8,7 @@
 #include <cmath>
 #include <set>
 
-#include "contact_search_test_utilities.h"
+#include "contact_processes_test_utilities.h"
 #include "core/model/model.h"
 #include "core/model/registry.h"
 #include "core/variables/kernel_variables.h"

@@ -8,7 +8,7 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
-#include "mortar_test_helpers.h"
+#include "contact_utilities_test_helpers.h"
 
 namespace mc {
 namespace {

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from .. import _core
 from ..process import Process
+from ..processes.model_part_resolution import resolve_model_part
 from . import _settings
 
 
@@ -68,9 +69,6 @@ class SearchBaseProcess(Process):
 
     # Hooks ---------------------------------------------------------------------------------------
     def ExecuteInitialize(self) -> None:
-        # Imported here: the processes package registers this one on import.
-        from ..processes.model_part_resolution import resolve_model_part
-
         self.root = resolve_model_part(self.model, self.settings["model_part_name"].GetString())
         self.check_solver_variables()
         info = self.root.GetProcessInfo()

@@ -1,8 +1,7 @@
 """Contact processes of the ContactStructuralMechanicsApplication (spec section 4), registered
-in the process registry by ``register_contact_processes()``."""
+under their module by the process factory."""
 from __future__ import annotations
 
-from .. import _core
 from .alm_contact_process import ALMContactProcess
 from .not_implemented_processes import ExplicitPenaltyContactProcess, MeshTyingProcess, MPCContactProcess
 from .penalty_contact_process import PenaltyContactProcess
@@ -18,11 +17,5 @@ CONTACT_PROCESSES = {
 }
 
 
-def register_contact_processes(registry: dict) -> None:
-    """Adds the contact processes to ``registry`` ((module, python_module) -> class)."""
-    for name, cls in CONTACT_PROCESSES.items():
-        registry[(CONTACT_MODULE, name)] = cls
-
-
-__all__ = ["ALMContactProcess", "CONTACT_PROCESSES", "ExplicitPenaltyContactProcess", "MPCContactProcess",
-           "MeshTyingProcess", "PenaltyContactProcess", "register_contact_processes"]
+__all__ = ["ALMContactProcess", "CONTACT_MODULE", "CONTACT_PROCESSES", "ExplicitPenaltyContactProcess",
+           "MPCContactProcess", "MeshTyingProcess", "PenaltyContactProcess"]

@@ -12,7 +12,7 @@
 #include "core/geometries/geometry_type.h"
 #include "core/geometries/reference_element.h"
 #include "custom_utilities/dual_lagrange_multiplier.h"
-#include "mortar_test_helpers.h"
+#include "contact_utilities_test_helpers.h"
 
 namespace mc {
 namespace {

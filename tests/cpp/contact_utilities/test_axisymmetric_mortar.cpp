@@ -10,7 +10,7 @@
 #include <numbers>
 
 #include "core/utilities/error.h"
-#include "mortar_test_helpers.h"
+#include "contact_utilities_test_helpers.h"
 
 namespace mc {
 namespace {

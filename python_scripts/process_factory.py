@@ -1,0 +1,109 @@
+"""The process factory: builds the processes named in ``processes`` / ``output_processes`` of a
+ProjectParameters.json (spec 1.4).
+
+``create_process(item, model)`` builds one process from an item
+``{"python_module", "kratos_module", "process_name", "help", "check", "Parameters"}`` or the
+registry form ``{"name", "parameters"}``. Dispatch is by (``kratos_module`` without the
+``KratosMultiphysics.`` prefix, ``python_module``) in ``PROCESS_REGISTRY``; ``process_name``,
+``help`` and ``check`` are informational only. The registry is filled from the packages below
+this module: ``processes`` (kernel processes), ``contact_processes`` and ``output``.
+"""
+from __future__ import annotations
+
+import re
+
+from . import _core
+from .contact_processes import CONTACT_MODULE, CONTACT_PROCESSES
+from .output import OUTPUT_PROCESSES
+from .process import Process
+from .processes import KERNEL_PROCESSES
+from .utilities import nearest
+
+KERNEL = "KratosMultiphysics"
+
+#: (normalised kratos_module, python_module) -> process class
+PROCESS_REGISTRY: dict[tuple[str, str], type[Process]] = {
+    **{(KERNEL, name): cls for name, cls in KERNEL_PROCESSES.items()},
+    **{(KERNEL, name): cls for name, cls in OUTPUT_PROCESSES.items()},
+    **{(CONTACT_MODULE, name): cls for name, cls in CONTACT_PROCESSES.items()},
+}
+
+_ITEM_KEYS = ["python_module", "kratos_module", "process_name", "help", "check", "Parameters"]
+_REGISTRY_FORM_KEYS = ["name", "parameters"]
+_NAMESPACE_WORDS = {"processes", "operations", "output_processes"}
+
+
+def normalise_kratos_module(kratos_module: str) -> str:
+    """``KratosMultiphysics.ContactStructuralMechanicsApplication`` -> the application name;
+    ``KratosMultiphysics`` stays as it is; a short application name is already normal."""
+    prefix = KERNEL + "."
+    return kratos_module[len(prefix):] if kratos_module.startswith(prefix) else kratos_module
+
+
+def _snake_case(name: str) -> str:
+    return re.sub(r"(?<=[a-z0-9])([A-Z])", r"_\1", name).lower() if any(c.isupper() for c in name) else name
+
+
+def _split_registry_name(name: str) -> tuple[str | None, str]:
+    """``"Processes.KratosMultiphysics.AssignVectorVariableProcess"`` or
+    ``"KratosMultiphysics.assign_vector_variable_process"`` -> (module, python_module)."""
+    parts = [p for p in name.split(".") if p]
+    if not parts:
+        raise _core.InputError("process item: empty 'name'")
+    module_parts = [p for p in parts[:-1] if p.lower() not in _NAMESPACE_WORDS]
+    return (".".join(module_parts) or None), _snake_case(parts[-1])
+
+
+def find_process_class(kratos_module: str | None, python_module: str) -> type[Process]:
+    """The registered class, also accepting a python_module registered under exactly one other
+    module (user modules name no kratos_module)."""
+    module = normalise_kratos_module(kratos_module) if kratos_module else None
+    if module is not None and (module, python_module) in PROCESS_REGISTRY:
+        return PROCESS_REGISTRY[(module, python_module)]
+    same_name = [cls for (m, name), cls in PROCESS_REGISTRY.items() if name == python_module]
+    if len(set(same_name)) == 1:
+        return same_name[0]
+    known = sorted({name for _, name in PROCESS_REGISTRY})
+    where = f" of module '{kratos_module}'" if kratos_module else ""
+    raise _core.InputError(f"unknown process python_module '{python_module}'{where}"
+                           f"{nearest(python_module, known, cutoff=0.4)} "
+                           f"(known: {', '.join(known)})")
+
+
+def create_process(item: "_core.Parameters", model: "_core.Model") -> Process:
+    """Builds the process described by one item of a process list."""
+    keys = item.Keys()
+    if any(k in keys for k in _REGISTRY_FORM_KEYS):
+        item.CheckKeys(_REGISTRY_FORM_KEYS)
+        if not item.Has("name"):
+            raise _core.InputError(f"{item.Where()}: a process item of the registry form needs 'name'")
+        module, python_module = _split_registry_name(item["name"].GetString())
+        settings = item["parameters"] if item.Has("parameters") else _core.Parameters()
+    else:
+        item.CheckKeys(_ITEM_KEYS)
+        if not item.Has("python_module"):
+            raise _core.InputError(f"{item.Where()}: a process item needs 'python_module' (or 'name')")
+        python_module = item["python_module"].GetString()
+        module = item["kratos_module"].GetString() if item.Has("kratos_module") else None
+        settings = item["Parameters"] if item.Has("Parameters") else _core.Parameters()
+    cls = find_process_class(module, python_module)
+    return cls(model, settings)
+
+
+def create_process_lists(block: "_core.Parameters", model: "_core.Model") -> list[Process]:
+    """All processes of a ``processes`` (or ``output_processes``) object: lists in
+    lexicographic order of their names, file order inside a list (spec 1.4); list names
+    starting with ``_`` are commented out and skipped."""
+    processes = []
+    for list_name in sorted(block.Keys()):
+        if list_name.startswith("_"):
+            continue
+        items = block[list_name]
+        if not items.IsArray():
+            raise _core.InputError(f"{items.Where()}: a process list must be an array")
+        processes.extend(create_process(items[i], model) for i in range(items.size()))
+    return processes
+
+
+__all__ = ["PROCESS_REGISTRY", "create_process", "create_process_lists", "find_process_class",
+           "normalise_kratos_module"]
