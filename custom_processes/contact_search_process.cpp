@@ -14,7 +14,7 @@
 
 #include "core/geometries/reference_element.h"
 #include "core/model/registry.h"
-#include "core/solving/parallel_utilities.h"
+#include "core/model/parallel_utilities.h"
 #include "core/utilities/error.h"
 #include "core/utilities/logger.h"
 #include "core/utilities/string_utilities.h"

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Bindings of custom_strategies: the contact convergence criteria, the mortar updater hook and
 // the contact strategies. Python names are the Kratos class names.
+#include <array>
+
 #include "core/model/model_part.h"
 #include "core/solving/builder_and_solver.h"
 #include "core/solving/scheme.h"
@@ -63,6 +65,9 @@ template <class Criteria>
 void BindBlockCriteria(py::module_& m, const char* name, const char* doc) {
   py::class_<Criteria, BlockContactCriteria, std::shared_ptr<Criteria>>(m, name, doc)
       .def(py::init<Parameters>(), py::arg("settings") = Parameters())
+      .def(py::init<const Parameters&, const Parameters&>(), py::arg("solver_settings"), py::arg("contact_settings"),
+           "The criterion of a contact solver: displacement tolerances from solver_settings, the rest from "
+           "contact_settings.")
       .def_static("GetDefaultParameters", &Criteria::GetDefaultParameters);
 }
 
@@ -112,7 +117,23 @@ void AddContactStrategiesToPython(py::module_& m) {
 
   py::class_<BlockContactCriteria, ConvergenceCriteria, std::shared_ptr<BlockContactCriteria>>(
       m, "BlockContactCriteria", "Contact criteria measuring displacements, rotations and multipliers separately.")
-      .def("EnsureContact", &BlockContactCriteria::EnsureContact);
+      .def("EnsureContact", &BlockContactCriteria::EnsureContact)
+      .def(
+          "Tolerances",
+          [](const BlockContactCriteria& c) {
+            static constexpr std::array<const char*, kDofFamilies> kNames = {"displacement", "rotation", "multiplier"};
+            py::dict tolerances;
+            for (std::size_t f = 0; f < kDofFamilies; ++f)
+              if (const auto& block = c.Configuration(static_cast<DofFamily>(f)))
+                tolerances[kNames[f]] = py::make_tuple(
+                    block->measure == BlockContactCriteria::Measure::kIncrement ? "increment" : "residual",
+                    block->relative_tolerance, block->absolute_tolerance);
+            return tolerances;
+          },
+          "{family: (measure, relative tolerance, absolute tolerance)} of the families the criterion measures.")
+      .def_static("GetContactSettingsDefaults", &BlockContactCriteria::GetContactSettingsDefaults,
+                  "The keys of contact_settings the block criteria read (ensure_contact, rotation and multiplier "
+                  "tolerances) with Kratos' defaults.");
   BindBlockCriteria<DisplacementContactCriteria>(m, "DisplacementContactCriteria",
                                                  "displacement_contact_criteria: displacement (and rotation) increments");
   BindBlockCriteria<DisplacementResidualContactCriteria>(

@@ -18,8 +18,8 @@ class ModelPart;
 ///    current coordinates (the explicit, right-hand-side-only evaluation of the mortar
 ///    conditions: g_j = -n_j . (D x1 - M x2)_j).
 ///  - UpdateNormals(model_part): recomputes the nodal NORMAL (and the paired normals stored in
-///    the conditions) of the "Contact" sub-model-part; called before each build when
-///    ProcessInfo[CONSIDER_NORMAL_VARIATION] is not 0.
+///    the conditions) of the "Contact" sub-model-part; called before each build (the normals
+///    follow the current configuration whatever CONSIDER_NORMAL_VARIATION says).
 ///  - UpdateDynamicFactor(model_part), AdaptPenalty(model_part): the dynamic factor
 ///    (`compute_dynamic_factor`, dynamic problems) and the adapted nodal INITIAL_PENALTY
 ///    (ProcessInfo[ADAPT_PENALTY]), refreshed before each build.

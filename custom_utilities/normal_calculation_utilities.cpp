@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "core/geometries/reference_element.h"
-#include "core/solving/parallel_utilities.h"
+#include "core/model/parallel_utilities.h"
 #include "core/variables/kernel_variables.h"
 #include "custom_utilities/nodal_normal_support.h"
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "core/solving/block_builder_and_solver.h"
-#include "core/solving/parallel_utilities.h"
+#include "core/model/parallel_utilities.h"
 
 #include <cmath>
 

@@ -10,7 +10,7 @@
 
 #include "core/model/master_slave_constraint.h"
 #include "core/model/model_part.h"
-#include "core/solving/parallel_utilities.h"
+#include "core/model/parallel_utilities.h"
 #include "core/solving/scheme.h"
 #include "core/utilities/logger.h"
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "core/solving/explicit_central_differences_scheme.h"
-#include "core/solving/parallel_utilities.h"
+#include "core/model/parallel_utilities.h"
 
 #include "core/model/model_part.h"
 #include "core/solving/time_derivatives.h"

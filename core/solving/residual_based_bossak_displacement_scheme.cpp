@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "core/solving/residual_based_bossak_displacement_scheme.h"
-#include "core/solving/parallel_utilities.h"
+#include "core/model/parallel_utilities.h"
 
 #include "core/model/model_part.h"
 #include "core/solving/time_derivatives.h"

@@ -2,7 +2,7 @@
 #include "core/solving/scheme.h"
 
 #include "core/model/model_part.h"
-#include "core/solving/parallel_utilities.h"
+#include "core/model/parallel_utilities.h"
 
 namespace mc {
 

@@ -2,7 +2,7 @@
 #include "core/solving/solving_strategy.h"
 
 #include "core/model/model_part.h"
-#include "core/solving/parallel_utilities.h"
+#include "core/model/parallel_utilities.h"
 #include "core/variables/kernel_variables.h"
 
 namespace mc {

@@ -14,8 +14,8 @@ namespace mc {
 /// "base_mortar_criteria": keeps the mortar quantities of the "Contact" sub-model-part in step
 /// with the iterate and runs the active-set update of the derived class.
 ///
-///  - PreCriteria (before each build): nodal normals when ProcessInfo[CONSIDER_NORMAL_VARIATION]
-///    is not 0; weighted gap when ProcessInfo[ADAPT_PENALTY] is set or the problem is dynamic
+///  - PreCriteria (before each build): nodal normals at the current coordinates (always; see the
+///    .cpp); weighted gap when ProcessInfo[ADAPT_PENALTY] is set or the problem is dynamic
 ///    (VELOCITY is historical); dynamic factor (`compute_dynamic_factor`, dynamic problems) and
 ///    adapted penalty, all through the MortarUpdater.
 ///  - PostCriteria (after each update): WEIGHTED_GAP is copied to history step 1, zeroed and

@@ -54,22 +54,32 @@ const CriterionRow& RowOf(BlockCriterion criterion) { return kCriteria[static_ca
 std::string RelativeKey(const BlockKeys& keys) { return Concat(keys.prefix, "_relative_tolerance"); }
 std::string AbsoluteKey(const BlockKeys& keys) { return Concat(keys.prefix, "_absolute_tolerance"); }
 
-BlockContactCriteria::Blocks ReadBlocks(BlockCriterion criterion, Parameters& settings) {
-  settings.ValidateAndAssignDefaults(BlockContactCriteria::GetDefaultParameters(criterion));
+/// The tolerances of `criterion`: the displacement family's from `displacement_source`, the
+/// others from `other_source`.
+BlockContactCriteria::Blocks ReadBlocks(BlockCriterion criterion, const Parameters& displacement_source,
+                                        const Parameters& other_source) {
   const CriterionRow& row = RowOf(criterion);
   BlockContactCriteria::Blocks blocks;
   for (std::size_t f = 0; f < kDofFamilies; ++f) {
     if (!row.blocks[f]) continue;
     const BlockKeys& keys = *row.blocks[f];
+    const Parameters& source = f == static_cast<std::size_t>(DofFamily::kDisplacement) ? displacement_source
+                                                                                          : other_source;
     const std::string relative = RelativeKey(keys);
     const std::string absolute = AbsoluteKey(keys);
-    BlockContactCriteria::Block block{keys.measure, settings[relative].GetDouble(), settings[absolute].GetDouble()};
+    BlockContactCriteria::Block block{keys.measure, source[relative].GetDouble(), source[absolute].GetDouble()};
     if (!(block.relative_tolerance >= 0.0) || !(block.absolute_tolerance >= 0.0))
-      throw InputError(Concat(settings.Where(), ": ", relative, " = ", block.relative_tolerance, " and ", absolute,
+      throw InputError(Concat(source.Where(), ": ", relative, " = ", block.relative_tolerance, " and ", absolute,
                               " = ", block.absolute_tolerance, " must not be negative"));
     blocks[f] = block;
   }
   return blocks;
+}
+
+/// `settings`, validated in place against the defaults of `criterion`.
+const Parameters& Validated(BlockCriterion criterion, Parameters& settings) {
+  settings.ValidateAndAssignDefaults(BlockContactCriteria::GetDefaultParameters(criterion));
+  return settings;
 }
 
 constexpr double kTiny = std::numeric_limits<double>::epsilon();
@@ -95,11 +105,31 @@ Parameters BlockContactCriteria::GetDefaultParameters(BlockCriterion criterion) 
   return defaults;
 }
 
+Parameters BlockContactCriteria::GetContactSettingsDefaults() {
+  // The rows' keys but the displacement tolerances (solver_settings keys) and
+  // print_convergence_criterion (declared in contact_settings by the active-set criteria).
+  Parameters defaults;
+  defaults.AddValue("ensure_contact", GetDefaultParameters(BlockCriterion::kDisplacement)["ensure_contact"]);
+  for (const CriterionRow& row : kCriteria)
+    for (std::size_t f = 0; f < kDofFamilies; ++f) {
+      if (!row.blocks[f] || f == static_cast<std::size_t>(DofFamily::kDisplacement)) continue;
+      const BlockKeys& keys = *row.blocks[f];
+      if (defaults.Has(RelativeKey(keys))) continue;
+      defaults.AddDouble(RelativeKey(keys), keys.relative_default);
+      defaults.AddDouble(AbsoluteKey(keys), keys.absolute_default);
+    }
+  return defaults;
+}
+
 BlockContactCriteria::BlockContactCriteria(BlockCriterion criterion, Parameters settings)
+    : BlockContactCriteria(criterion, Validated(criterion, settings), settings) {}
+
+BlockContactCriteria::BlockContactCriteria(BlockCriterion criterion, const Parameters& solver_settings,
+                                           const Parameters& contact_settings)
     : criterion_(criterion),
-      blocks_(ReadBlocks(criterion, settings)),
-      ensure_contact_(settings["ensure_contact"].GetBool()),
-      print_(settings["print_convergence_criterion"].GetBool()) {
+      blocks_(ReadBlocks(criterion, solver_settings, contact_settings)),
+      ensure_contact_(contact_settings["ensure_contact"].GetBool()),
+      print_(contact_settings["print_convergence_criterion"].GetBool()) {
   assert(blocks_[static_cast<std::size_t>(DofFamily::kDisplacement)].has_value());
   for (std::size_t f = 0; f < kDofFamilies; ++f)
     if (blocks_[f] && blocks_[f]->measure == Measure::kResidual) SetActualizeRHSFlag(true);

@@ -72,8 +72,16 @@ class BlockContactCriteria : public ConvergenceCriteria {
   /// Validates `settings` against the defaults of `criterion` (unknown keys rejected with the
   /// nearest valid one) and reads its tolerances.
   BlockContactCriteria(BlockCriterion criterion, Parameters settings);
+  /// The criterion of a contact solver: the displacement tolerances are the mechanical solver's
+  /// keys of `solver_settings`, the other keys are read from `contact_settings` (both already
+  /// validated by their owners; see GetContactSettingsDefaults).
+  BlockContactCriteria(BlockCriterion criterion, const Parameters& solver_settings,
+                       const Parameters& contact_settings);
   /// Kratos' defaults of `criterion`, keys in Kratos' order.
   static Parameters GetDefaultParameters(BlockCriterion criterion);
+  /// The keys of `contact_settings` that the block criteria read, over every row: `ensure_contact`
+  /// and the rotation and multiplier tolerances (their one declaration).
+  static Parameters GetContactSettingsDefaults();
 
   std::string Name() const override;
   void InitializeSolutionStep(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A,
@@ -108,6 +116,8 @@ class NamedBlockContactCriteria final : public BlockContactCriteria {
  public:
   explicit NamedBlockContactCriteria(Parameters settings = Parameters())
       : BlockContactCriteria(kCriterion, std::move(settings)) {}
+  NamedBlockContactCriteria(const Parameters& solver_settings, const Parameters& contact_settings)
+      : BlockContactCriteria(kCriterion, solver_settings, contact_settings) {}
   static Parameters GetDefaultParameters() { return BlockContactCriteria::GetDefaultParameters(kCriterion); }
 };
 

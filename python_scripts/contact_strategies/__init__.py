@@ -12,5 +12,5 @@ composition rules can be unit-tested without the compiled extension.
 """
 from __future__ import annotations
 
-from .convergence_criteria_factory import create_contact_convergence_criteria  # noqa: F401
+from .convergence_criteria_factory import CRITERIA_SETTINGS, create_contact_convergence_criteria  # noqa: F401
 from .strategy_factory import create_contact_strategy  # noqa: F401

@@ -15,21 +15,18 @@ formulation's (``ContactFormulation``).
 from __future__ import annotations
 
 import difflib
-import json
 
 CONTACT_CRITERIA = ("contact_displacement_criterion", "contact_residual_criterion", "contact_mixed_criterion",
                     "contact_and_criterion", "contact_or_criterion")
 STRUCTURAL_CRITERIA = ("displacement_criterion", "residual_criterion", "and_criterion", "or_criterion")
 ALL_CRITERIA = CONTACT_CRITERIA + STRUCTURAL_CRITERIA + ("adaptative_remesh_criteria",)
 
-# Tolerance keys of each block (spec 3.2, "tolerance sources per block"): increment-type, residual-type.
-_DISPLACEMENT = (("displacement_relative_tolerance", "displacement_absolute_tolerance"),
-                 ("residual_relative_tolerance", "residual_absolute_tolerance"))
-_ROTATION = (("rotation_relative_tolerance", "rotation_absolute_tolerance"),
-             ("rotation_residual_relative_tolerance", "rotation_residual_absolute_tolerance"))
-_MULTIPLIER = (("contact_displacement_relative_tolerance", "contact_displacement_absolute_tolerance"),
-               ("contact_residual_relative_tolerance", "contact_residual_absolute_tolerance"))
-_INCREMENT, _RESIDUAL = 0, 1
+#: The keys of contact_settings this factory reads (Kratos' names and defaults); the block criteria
+#: and the active-set criteria declare and read theirs (see contact_settings_defaults()).
+CRITERIA_SETTINGS = """{
+    "condn_convergence_criterion": false,
+    "fancy_convergence_criterion": true
+}"""
 
 
 def _core_module(core):
@@ -51,47 +48,24 @@ def _value(settings, key, kind):
     return getattr(settings[key], "Get" + kind)()
 
 
-def _block_criterion(cls, solver_settings, blocks, core):
-    """``cls`` with the tolerances of ``blocks`` [(block keys, _INCREMENT or _RESIDUAL), ...]:
-    displacement keys from solver_settings, the others from contact_settings."""
-    contact = _contact_settings(solver_settings)
-    settings = {"ensure_contact": _value(contact, "ensure_contact", "Bool"),
-                "print_convergence_criterion": _value(contact, "print_convergence_criterion", "Bool")}
-    for keys, kind in blocks:
-        source = solver_settings if keys is _DISPLACEMENT else contact
-        for key in keys[kind]:
-            settings[key] = _value(source, key, "Double")
-    return cls(core.Parameters(json.dumps(settings)))
+def _block_criterion(cls, solver_settings):
+    """``cls`` reading its displacement tolerances from solver_settings, the rest from contact_settings."""
+    return cls(solver_settings, _contact_settings(solver_settings))
 
 
 def _contact_mechanical_criterion(name, solver_settings, formulation, core):
+    s = solver_settings
     if formulation.multiplier_blocks == 0:
-        # Penalty formulations have no multipliers: displacement (and rotation) blocks only.
-        def displacement():
-            return _block_criterion(core.DisplacementContactCriteria, solver_settings,
-                                    [(_DISPLACEMENT, _INCREMENT), (_ROTATION, _INCREMENT)], core)
-
-        def residual(with_rotation=True):
-            blocks = [(_DISPLACEMENT, _RESIDUAL)] + ([(_ROTATION, _RESIDUAL)] if with_rotation else [])
-            return _block_criterion(core.DisplacementResidualContactCriteria, solver_settings, blocks, core)
-
-        mixed = lambda: residual(with_rotation=False)  # noqa: E731 (Kratos reuses the residual criterion)
+        # Penalty formulations have no multipliers: displacement (and rotation) blocks only; mixed
+        # reuses the residual criterion, as Kratos does (whose factory leaves the rotation
+        # tolerances at their defaults there; the user's are read here).
+        displacement = lambda: _block_criterion(core.DisplacementContactCriteria, s)  # noqa: E731
+        residual = lambda: _block_criterion(core.DisplacementResidualContactCriteria, s)  # noqa: E731
+        mixed = residual
     else:
-        def displacement():
-            return _block_criterion(core.DisplacementLagrangeMultiplierContactCriteria, solver_settings,
-                                    [(_DISPLACEMENT, _INCREMENT), (_ROTATION, _INCREMENT),
-                                     (_MULTIPLIER, _INCREMENT)], core)
-
-        def residual():
-            return _block_criterion(core.DisplacementLagrangeMultiplierResidualContactCriteria, solver_settings,
-                                    [(_DISPLACEMENT, _RESIDUAL), (_ROTATION, _RESIDUAL),
-                                     (_MULTIPLIER, _RESIDUAL)], core)
-
-        def mixed():
-            # The newest factory: multiplier increment with the contact_displacement_* tolerances.
-            return _block_criterion(core.DisplacementLagrangeMultiplierMixedContactCriteria, solver_settings,
-                                    [(_DISPLACEMENT, _RESIDUAL), (_ROTATION, _RESIDUAL),
-                                     (_MULTIPLIER, _INCREMENT)], core)
+        displacement = lambda: _block_criterion(core.DisplacementLagrangeMultiplierContactCriteria, s)  # noqa: E731
+        residual = lambda: _block_criterion(core.DisplacementLagrangeMultiplierResidualContactCriteria, s)  # noqa: E731
+        mixed = lambda: _block_criterion(core.DisplacementLagrangeMultiplierMixedContactCriteria, s)  # noqa: E731
 
     return {"contact_displacement_criterion": displacement,
             "contact_residual_criterion": residual,

@@ -19,7 +19,7 @@ import numpy as np
 
 from .. import _core
 from ..process import OutputProcess
-from ..processes._bulk import (UnsetVariableWarning, entity_connectivity, integration_point_means, nodal_flags,
+from ..processes.bulk_data import (UnsetVariableWarning, entity_connectivity, integration_point_means, nodal_flags,
                                nodal_values, variable_by_name)
 from ..processes.model_part_resolution import resolve_model_part
 from ..utilities import write_text_atomically

@@ -10,7 +10,7 @@ import os
 import numpy as np
 
 from .. import _core
-from ._bulk import is_array3, is_scalar, variable_by_name
+from .bulk_data import is_array3, is_scalar, variable_by_name
 
 END_OF_TIME = 1e30
 

@@ -14,7 +14,7 @@ import numpy as np
 from .. import _core
 from ..process import Process
 from ..utilities import write_text_atomically
-from ._bulk import UnsetVariableWarning, is_array3, nodal_flags, nodal_values, variable_by_name
+from .bulk_data import UnsetVariableWarning, is_array3, nodal_flags, nodal_values, variable_by_name
 from .model_part_resolution import resolve_model_part
 
 

@@ -5,26 +5,15 @@ from __future__ import annotations
 
 from .. import _core
 from ..utilities import warn
-from ..contact_strategies import create_contact_convergence_criteria, create_contact_strategy
+from ..contact_strategies import CRITERIA_SETTINGS, create_contact_convergence_criteria, create_contact_strategy
 from .mechanical_solver import MechanicalSolver
 
 #: The solver's own keys of contact_settings (Kratos' names and defaults). The keys of the classes
 #: that read the block themselves are theirs: see contact_settings_defaults().
 CONTACT_SETTINGS = """{
     "mortar_type": "",
-    "condn_convergence_criterion": false,
-    "fancy_convergence_criterion": true,
-    "ensure_contact": false,
     "frictional_decomposed": true,
     "inner_loop_adaptive": false,
-    "rotation_relative_tolerance": 1.0e-4,
-    "rotation_absolute_tolerance": 1.0e-9,
-    "rotation_residual_relative_tolerance": 1.0e-4,
-    "rotation_residual_absolute_tolerance": 1.0e-9,
-    "contact_displacement_relative_tolerance": 1.0e-4,
-    "contact_displacement_absolute_tolerance": 1.0e-9,
-    "contact_residual_relative_tolerance": 1.0e-4,
-    "contact_residual_absolute_tolerance": 1.0e-9,
     "frictional_stick_contact_displacement_relative_tolerance": 1.0e-4,
     "frictional_stick_contact_displacement_absolute_tolerance": 1.0e-9,
     "frictional_stick_contact_residual_relative_tolerance": 1.0e-4,
@@ -50,11 +39,13 @@ CONTACT_SETTINGS = """{
 
 
 def contact_settings_defaults() -> _core.Parameters:
-    """Every key of contact_settings: the solver's, the contact strategy's and the active-set
-    criteria's (the strategy and the criteria read theirs from the validated block)."""
+    """Every key of contact_settings, each declared once by its reader: the solver's, the criteria
+    factory's, the block criteria's, the contact strategy's and the active-set criteria's."""
     defaults = _core.Parameters(CONTACT_SETTINGS)
-    for owner in (_core.ResidualBasedNewtonRaphsonContactStrategy, _core.BaseMortarConvergenceCriteria):
-        defaults.AddMissingParameters(owner.GetDefaultParameters())
+    for owned in (_core.Parameters(CRITERIA_SETTINGS), _core.BlockContactCriteria.GetContactSettingsDefaults(),
+                  _core.ResidualBasedNewtonRaphsonContactStrategy.GetDefaultParameters(),
+                  _core.BaseMortarConvergenceCriteria.GetDefaultParameters()):
+        defaults.AddMissingParameters(owned)
     return defaults
 
 

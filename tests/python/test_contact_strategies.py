@@ -1,7 +1,8 @@
 """Issue 3 (contact criteria factory, spec 3.2 and 2.9): every row of the composition table,
 the tolerance source of each block, case-insensitive names, unsupported names and formulations,
 and the contact strategy assembly. The composition rules run against a recording stand-in of
-the extension (always); one test builds the real objects when the extension is installed."""
+the extension; the tolerances each recorded criterion would read, and one whole composition, are
+checked on the real objects."""
 from __future__ import annotations
 
 import importlib
@@ -11,6 +12,8 @@ import sys
 import types
 
 import pytest
+
+import mortarcontact as mc
 
 SOURCE = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", "python_scripts"))
 
@@ -128,13 +131,13 @@ def settings(criterion="contact_mixed_criterion", mortar_type="ALMContactFrictio
         "analysis_type": "non_linear", "compute_reactions": True, "move_mesh_flag": True, "max_iteration": 15})
 
 
-DISP_INC = {"displacement_relative_tolerance": 1e-4, "displacement_absolute_tolerance": 1e-9}
-DISP_RES = {"residual_relative_tolerance": 2e-4, "residual_absolute_tolerance": 2e-9}
-ROT_INC = {"rotation_relative_tolerance": 3e-4, "rotation_absolute_tolerance": 3e-9}
-ROT_RES = {"rotation_residual_relative_tolerance": 4e-4, "rotation_residual_absolute_tolerance": 4e-9}
-LM_INC = {"contact_displacement_relative_tolerance": 5e-4, "contact_displacement_absolute_tolerance": 5e-9}
-LM_RES = {"contact_residual_relative_tolerance": 6e-4, "contact_residual_absolute_tolerance": 6e-9}
-FLAGS = {"ensure_contact": False, "print_convergence_criterion": False}
+# {family: (measure, relative, absolute)} as BlockContactCriteria.Tolerances() gives them
+DISP_INC = {"displacement": ("increment", 1e-4, 1e-9)}
+DISP_RES = {"displacement": ("residual", 2e-4, 2e-9)}
+ROT_INC = {"rotation": ("increment", 3e-4, 3e-9)}
+ROT_RES = {"rotation": ("residual", 4e-4, 4e-9)}
+LM_INC = {"multiplier": ("increment", 5e-4, 5e-9)}
+LM_RES = {"multiplier": ("residual", 6e-4, 6e-9)}
 
 
 #: what the tests need of the registered formulations (ContactFormulation): multiplier blocks and
@@ -163,8 +166,14 @@ def build(*args, **kwargs):
 
 
 def expect(criterion, cls, tolerances):
+    """``criterion`` is a ``cls`` given solver_settings and its contact_settings, and the real
+    ``cls`` reads ``tolerances`` from them (each block from its source)."""
     assert type(criterion).__name__ == cls
-    assert criterion.settings() == {**FLAGS, **tolerances}
+    solver_settings, contact_settings = criterion.args
+    assert contact_settings.data is solver_settings.data["contact_settings"]
+    real_settings = mc.Parameters(json.dumps(solver_settings.data))
+    real = getattr(mc._core, cls)(real_settings, real_settings["contact_settings"])
+    assert real.Tolerances() == tolerances
 
 
 # -- table rows: "otherwise" column (ALM scalar / components, mesh tying) -----------------------
@@ -200,7 +209,7 @@ def test_mortar_settings_come_from_contact_settings():
     assert c.args[1].settings()["print_convergence_criterion"] is True
     assert c.args[1].settings()["compute_dynamic_factor"] is True
     assert c.kwargs == {"print_convergence_criterion": True, "condition_number": True, "print_table": False}
-    assert c.args[0].settings()["print_convergence_criterion"] is True
+    assert c.args[0].args[1].data["print_convergence_criterion"] is True
 
 
 # -- "Penalty" column ------------------------------------------------------------------------------
@@ -211,8 +220,9 @@ def test_penalty_rows():
     expect(c.args[0], "DisplacementContactCriteria", {**DISP_INC, **ROT_INC})
     expect(build("contact_residual_criterion", p).args[0], "DisplacementResidualContactCriteria",
            {**DISP_RES, **ROT_RES})
-    # Mixed reuses the residual criterion, without rotation tolerances.
-    expect(build("contact_mixed_criterion", p).args[0], "DisplacementResidualContactCriteria", DISP_RES)
+    # Mixed reuses the residual criterion.
+    expect(build("contact_mixed_criterion", p).args[0], "DisplacementResidualContactCriteria",
+           {**DISP_RES, **ROT_RES})
     for name, combiner in (("contact_and_criterion", "AndCriteria"), ("contact_or_criterion", "OrCriteria")):
         combined = build(name, p).args[0]
         assert type(combined).__name__ == combiner
@@ -319,10 +329,7 @@ def test_strategy_line_search_simplified_and_linear():
 
 
 # -- with the real extension -------------------------------------------------------------------------
-def test_real_objects_when_the_extension_is_installed():
-    mc = pytest.importorskip("mortarcontact")
-    if not hasattr(mc._core, "MortarAndConvergenceCriteria"):
-        pytest.skip("the installed extension has no contact strategies yet")
+def test_real_objects():
     s = mc.Parameters(json.dumps({**settings().data, "convergence_criterion": "contact_mixed_criterion"}))
     c = cs.create_contact_convergence_criteria(s, mc._core.ContactFormulation.Get("ALMContactFrictionless"),
                                                core=mc._core)

@@ -1,0 +1,53 @@
+"""Issue 11: each setting is declared once, by the class that reads it. The keys of
+contact_settings come from five owners without overlap, and no Python module re-declares a key
+whose owner is a C++ class (the defaults of search_parameters, the block and active-set criteria
+and the contact strategy)."""
+from __future__ import annotations
+
+import pathlib
+import re
+
+from mortarcontact import _core
+from mortarcontact.contact_strategies import CRITERIA_SETTINGS
+from mortarcontact.solvers.contact_mechanical_solver import CONTACT_SETTINGS, contact_settings_defaults
+
+REPO = pathlib.Path(__file__).resolve().parents[2]
+
+#: Same key name, other setting: (file, key) -> where it belongs
+OTHER_SETTINGS = {
+    ("python_scripts/solvers/solver_settings.py", "inner_loop_iterations"): "mpc_contact_settings (MPC strategy)",
+}
+
+
+def _owners():
+    return {
+        "contact solver": _core.Parameters(CONTACT_SETTINGS),
+        "criteria factory": _core.Parameters(CRITERIA_SETTINGS),
+        "block criteria": _core.BlockContactCriteria.GetContactSettingsDefaults(),
+        "contact strategy": _core.ResidualBasedNewtonRaphsonContactStrategy.GetDefaultParameters(),
+        "active-set criteria": _core.BaseMortarConvergenceCriteria.GetDefaultParameters(),
+    }
+
+
+def test_each_contact_settings_key_has_one_owner():
+    owner_of = {}
+    for owner, defaults in _owners().items():
+        for key in defaults.Keys():
+            assert key not in owner_of, f"contact_settings.{key} is declared by {owner_of[key]} and by {owner}"
+            owner_of[key] = owner
+    assert set(owner_of) == set(contact_settings_defaults().Keys())
+
+
+def test_python_does_not_redeclare_keys_of_cpp_owners():
+    cpp_owned = {key for owner, defaults in _owners().items() if owner not in ("contact solver", "criteria factory")
+                 for key in defaults.Keys()}
+    cpp_owned |= set(_core.ContactSearchProcess.GetDefaultParameters().Keys())
+    sources = sorted((REPO / "python_scripts").rglob("*.py"))
+    assert sources
+    for path in sources:
+        text = path.read_text()
+        for key in sorted(cpp_owned):
+            if (str(path.relative_to(REPO)), key) in OTHER_SETTINGS:
+                continue
+            declaration = re.search(rf'"{key}"\s*:', text)
+            assert declaration is None, f"{path.relative_to(REPO)} declares \"{key}\", which C++ owns"
