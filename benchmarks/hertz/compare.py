@@ -32,6 +32,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 import harness  # noqa: E402
+from mortarcontact.cases.hertz import all_case_names, load_reference  # noqa: E402
 
 CODES = ("mortarcontact", "kratos")
 
@@ -145,7 +146,7 @@ def main(argv=None) -> int:
     parser.add_argument("--codes", default=",".join(CODES), help="which codes run (comma-separated)")
     parser.add_argument("--linear-solver", help="mortarcontact's linear_solver_settings (JSON) instead of the case's")
     args = parser.parse_args(argv)
-    names = harness.generate_cases.all_case_names() if args.cases == "all" else args.cases.split(",")
+    names = all_case_names() if args.cases == "all" else args.cases.split(",")
     codes = args.codes.split(",")
     if not codes or any(c not in CODES for c in codes):
         parser.error(f"--codes: choose among {', '.join(CODES)}")
@@ -155,7 +156,7 @@ def main(argv=None) -> int:
     rows = []
     for name in names:
         folder = harness.ensure_case(name, args.cases_dir)
-        hertz = harness.load_hertz(folder)
+        hertz = load_reference(folder)
         records = {c: [] for c in codes}
         for i in range(args.repeat):
             for code in codes:

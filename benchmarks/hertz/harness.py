@@ -5,20 +5,12 @@
   creates its own venv (``$MORTARCONTACT_KRATOS_VENV``, default ``benchmarks/hertz/.venv``) and
   installs the five Kratos 10.4 wheels there with pip; Kratos then runs in a subprocess with that
   venv's Python (case_runner.py).
-- Case generation on demand (generate_cases.py) and one subprocess per run, with a fixed
+- Case generation on demand (mortarcontact.cases.hertz) and one subprocess per run, with a fixed
   OpenMP thread count for both codes (OpenMP spinning on a shared, loaded machine otherwise
   distorts timings by an order of magnitude).
-- Evaluation against Hertz theory.
+- Medians over repeated runs, with the Hertz evaluation of mortarcontact.cases.hertz.
 
-Contact pressure. Kratos' ALM unknown LAGRANGE_MULTIPLIER_CONTACT_PRESSURE is the multiplier
-divided by the scale factor k (ProcessInfo SCALE_FACTOR, automatic k = E/h): the nodal normal
-contact pressure is p = -k * lambda (compression positive). With dual (biorthogonal) multiplier
-shape functions the nodal multiplier is already a pressure, not a nodal force, so no division by
-a tributary area is needed; AUGMENTED_NORMAL_CONTACT_PRESSURE = k * lambda + epsilon * weighted gap
-equals -p at converged active nodes (zero weighted gap) and is used when SCALE_FACTOR cannot be
-read. The harness checks this reading: the
-pressure integrated over the slave surface (piecewise linear, times the symmetry factor) must equal
-the reaction force.
+How the contact pressure is read from each code's record: mortarcontact.cases.hertz.evaluate.
 """
 from __future__ import annotations
 
@@ -30,10 +22,9 @@ import subprocess
 import sys
 import time
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
+from mortarcontact.cases.hertz import SIZES, all_case_names, evaluate, write_case
 
-import generate_cases  # noqa: E402
+HERE = os.path.dirname(os.path.abspath(__file__))
 
 KRATOS_VERSION = "10.4.4"
 #: ConstitutiveLawsApplication holds HyperElastic3DLaw and KirchhoffSaintVenant3DLaw since Kratos 9
@@ -73,16 +64,11 @@ def ensure_case(name: str, cases_dir: str) -> str:
     folder = os.path.join(cases_dir, name)
     if not os.path.exists(os.path.join(folder, "hertz.json")):
         family, _, label = name.partition("_")
-        if family not in generate_cases.SIZES or label not in generate_cases.SIZES[family]:
-            raise SystemExit(f"unknown case {name!r}; known: {', '.join(generate_cases.all_case_names())}")
+        if family not in SIZES or label not in SIZES[family]:
+            raise SystemExit(f"unknown case {name!r}; known: {', '.join(all_case_names())}")
         print(f"Generating {name} ...", flush=True)
-        generate_cases.write_case(family, label, cases_dir)
+        write_case(family, label, cases_dir)
     return folder
-
-
-def load_hertz(folder: str) -> dict:
-    with open(os.path.join(folder, "hertz.json")) as f:
-        return json.load(f)
 
 
 def run_once(code: str, folder: str, output: str, threads: int, python: str | None = None,
@@ -118,79 +104,6 @@ def run_once(code: str, folder: str, output: str, threads: int, python: str | No
     record["wall_seconds"] = wall
     record["log"] = log
     return record
-
-
-# -- Hertz evaluation -------------------------------------------------------------------------
-def _least_squares_line(xs, ys):
-    n = len(xs)
-    mx, my = sum(xs) / n, sum(ys) / n
-    sxx = sum((x - mx) ** 2 for x in xs)
-    slope = sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sxx
-    return my - slope * mx, slope
-
-
-def _integrate_2d(points):
-    points = sorted(points)
-    return sum(0.5 * (p0 + p1) * (x1 - x0) for (x0, p0), (x1, p1) in zip(points, points[1:]))
-
-
-def _integrate_3d(xs, ys, ps):
-    import numpy as np
-    from scipy.spatial import Delaunay
-
-    xy = np.column_stack([xs, ys])
-    tri = Delaunay(xy)
-    p = np.asarray(ps)
-    total = 0.0
-    for simplex in tri.simplices:
-        a, b, c = xy[simplex]
-        area = 0.5 * abs((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]))
-        total += area * p[simplex].mean()
-    return total
-
-
-def evaluate(record: dict, hertz: dict) -> dict:
-    """Peak pressure, half-width and force of a finished run against Hertz for its own force."""
-    if record.get("status") != "ok":
-        return {}
-    dim, symmetry, radius = hertz["dimension"], hertz["symmetry_factor"], hertz["radius"]
-    e_star = hertz["effective_modulus"]
-    force = abs(record["reactions"]["DISPLACEMENT_bottom"]) * symmetry
-    theory = (generate_cases.hertz_2d if dim == 2 else generate_cases.hertz_3d)(force, radius, e_star)
-    scale = (record.get("process_info") or {}).get("SCALE_FACTOR")
-    nodes = []
-    for n in record["slave"]:
-        if n["lm"] is not None and scale is not None:
-            p = -scale * n["lm"]
-        else:
-            p = -(n["augmented"] or 0.0) if n["active"] else 0.0
-        r = abs(n["x"]) if dim == 2 else math.hypot(n["x"], n["y"])
-        nodes.append((r, max(p, 0.0), n))
-    peak = max(p for _, p, _ in nodes)
-    active_r = [r for r, p, _ in nodes if p > 0.0]
-    inactive_r = [r for r, p, _ in nodes if p <= 0.0 and r > max(active_r)]
-    edge = 0.5 * (max(active_r) + min(inactive_r)) if inactive_r else max(active_r)
-    fit_nodes = [(r * r, p * p) for r, p, _ in nodes if p >= 0.3 * peak]
-    intercept, slope = _least_squares_line([x for x, _ in fit_nodes], [y for _, y in fit_nodes]) \
-        if len(fit_nodes) >= 3 else (float("nan"), float("nan"))
-    p0_fit = math.sqrt(intercept) if intercept > 0 else float("nan")
-    a_fit = math.sqrt(-intercept / slope) if intercept > 0 and slope < 0 else float("nan")
-    if dim == 2:
-        integrated = symmetry * _integrate_2d([(n["x"], p) for _, p, n in nodes])
-    else:
-        integrated = symmetry * _integrate_3d([n["x"] for _, _, n in nodes], [n["y"] for _, _, n in nodes],
-                                              [p for _, p, _ in nodes])
-    return {
-        "force": force, "force_from_pressure": integrated, "active_nodes": len(active_r),
-        "hertz_half_width": theory["half_width"], "hertz_peak_pressure": theory["peak_pressure"],
-        "peak_pressure": peak, "peak_pressure_error": peak / theory["peak_pressure"] - 1.0,
-        "p0_fit": p0_fit, "p0_fit_error": p0_fit / theory["peak_pressure"] - 1.0,
-        "half_width_fit": a_fit, "half_width_fit_error": a_fit / theory["half_width"] - 1.0,
-        "half_width_edge": edge, "half_width_edge_error": edge / theory["half_width"] - 1.0,
-        "a_over_r": a_fit / radius,
-        "hertz_force_for_applied_displacement": (4.0 / 3.0 * e_star * math.sqrt(radius)
-                                                 * hertz["applied_displacement"] ** 1.5 if dim == 3 else None),
-    }
 
 
 def summarize(records: list[dict], hertz: dict) -> dict:

@@ -21,6 +21,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 import harness  # noqa: E402
+from mortarcontact.cases.hertz import all_case_names, load_reference  # noqa: E402
 
 
 def table(rows: list[tuple[str, dict, dict]]) -> str:
@@ -50,12 +51,12 @@ def main(argv=None) -> int:
     parser.add_argument("--cases-dir", default=os.path.join(harness.HERE, "cases"))
     parser.add_argument("--output", default=os.path.join(harness.HERE, "results_kratos.md"))
     args = parser.parse_args(argv)
-    names = harness.generate_cases.all_case_names() if args.cases == "all" else args.cases.split(",")
+    names = all_case_names() if args.cases == "all" else args.cases.split(",")
     python = harness.kratos_python()
     rows = []
     for name in names:
         folder = harness.ensure_case(name, args.cases_dir)
-        hertz = harness.load_hertz(folder)
+        hertz = load_reference(folder)
         records = []
         for i in range(args.repeat):
             out = os.path.join(harness.RESULTS_DIR, f"{name}_kratos_{i}.json")

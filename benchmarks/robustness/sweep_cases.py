@@ -50,10 +50,9 @@ import sys
 
 import numpy as np
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "hertz"))
+from mortarcontact.cases import hertz  # gmsh meshing, Kuhn tetrahedra, mdpa writer
 
-import generate_cases as hertz  # noqa: E402  (gmsh meshing, Kuhn tetrahedra, mdpa writer)
+HERE = os.path.dirname(os.path.abspath(__file__))
 
 DEFAULT_OUT = os.path.join(HERE, "cases")
 

@@ -4,7 +4,7 @@ A cylinder of radius R = 1 is pressed by a displacement of its top onto an elast
 steps (E = 1000, nu = 0.3 for both bodies). For a contact half-width a << R, Hertz' theory gives
     a = sqrt(4 P R / (pi E*)),   p(x) = p0 sqrt(1 - x^2 / a^2),   p0 = 2 P / (pi a),
 with E* = E / (2 (1 - nu^2)) for two equal bodies and P the force per unit thickness.
-This script writes the Kratos-format case with gmsh (benchmarks/hertz/generate_cases.py), adds a
+This script writes the Kratos-format case with gmsh (mortarcontact.cases.hertz), adds a
 ParaView output, runs it with mortarcontact and draws hertz_cylinder.png: the computed contact
 pressure against Hertz' ellipse, and the deformed mesh near the contact coloured by pressure.
 Usage: python run_demo.py [2k|8k|30k]   (default 8k, about 7k DoFs)
@@ -22,12 +22,10 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "benchmarks", "hertz"))
-
-import generate_cases  # noqa: E402
-
 import mortarcontact as mc  # noqa: E402
+from mortarcontact.cases import hertz  # noqa: E402
+
+HERE = os.path.dirname(os.path.abspath(__file__))
 
 OUTPUT = {"vtk_output": [{
     "python_module": "vtk_output_process", "kratos_module": "KratosMultiphysics",
@@ -42,7 +40,7 @@ OUTPUT = {"vtk_output": [{
 
 def main() -> None:
     size = sys.argv[1] if len(sys.argv) > 1 else "8k"
-    folder = generate_cases.write_case("hertz2d", size, os.path.join(HERE, "case"))
+    folder = hertz.write_case("hertz2d", size, os.path.join(HERE, "case"))
     parameters_file = os.path.join(folder, "ProjectParameters.json")
     with open(parameters_file) as f:
         parameters = json.load(f)
@@ -50,15 +48,14 @@ def main() -> None:
     parameters["problem_data"]["echo_level"] = 1
     with open(parameters_file, "w") as f:
         json.dump(parameters, f, indent=4)
-    with open(os.path.join(folder, "hertz.json")) as f:
-        hertz = json.load(f)
+    reference = hertz.load_reference(folder)
 
     os.chdir(folder)
     analysis = mc.run("ProjectParameters.json")
     root = analysis.model["Structure"]
     scale = root.ProcessInfo.GetValue(mc.SCALE_FACTOR)
     force = abs(root.GetSubModelPart("DISPLACEMENT_bottom").GetNodalValues(mc.REACTION)[:, 1].sum())
-    theory = generate_cases.hertz_2d(force, hertz["radius"], hertz["effective_modulus"])
+    theory = hertz.hertz_2d(force, reference["radius"], reference["effective_modulus"])
     slave = root.GetSubModelPart("Contact_slave")
     x = slave.NodeCoordinates(initial=True)[:, 0]
     pressure = np.maximum(-scale * slave.GetNodalValues(mc.LAGRANGE_MULTIPLIER_CONTACT_PRESSURE), 0.0)

@@ -7,6 +7,7 @@ import importlib.util
 import json
 import math
 import os
+import subprocess
 import sys
 
 import pytest
@@ -15,17 +16,17 @@ import mortarcontact as mc
 
 pytestmark = pytest.mark.skipif(importlib.util.find_spec("gmsh") is None, reason="gmsh is not installed")
 
-HERTZ_DIR = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", "benchmarks", "hertz"))
-sys.path.insert(0, HERTZ_DIR)
 
-import generate_cases  # noqa: E402
+from mortarcontact.cases import hertz  # noqa: E402
+
+#: The benchmarks' runner, run as a script (as a user would)
+RUNNER = os.path.join(os.path.dirname(__file__), "..", "..", "benchmarks", "hertz", "case_runner.py")
 
 
 @pytest.fixture(scope="module")
 def case_2d(tmp_path_factory):
-    folder = generate_cases.write_case("hertz2d", "2k", str(tmp_path_factory.mktemp("hertz")))
-    with open(os.path.join(folder, "hertz.json")) as f:
-        return folder, json.load(f)
+    folder = hertz.write_case("hertz2d", "2k", str(tmp_path_factory.mktemp("hertz")))
+    return folder, hertz.load_reference(folder)
 
 
 def _read(folder: str, dim: int):
@@ -38,8 +39,8 @@ def _read(folder: str, dim: int):
 
 
 def test_mdpa_reads_with_expected_counts(case_2d):
-    folder, hertz = case_2d
-    counts = hertz["counts"]
+    folder, reference = case_2d
+    counts = reference["counts"]
     part = _read(folder, 2)
     assert part.NumberOfNodes() == counts["nodes"]
     assert part.NumberOfElements() == counts["elements"] == counts["curved_elements"] + counts["block_elements"]
@@ -51,16 +52,16 @@ def test_mdpa_reads_with_expected_counts(case_2d):
 
 
 def test_interface_and_boundary_parts(case_2d):
-    folder, hertz = case_2d
+    folder, reference = case_2d
     part = _read(folder, 2)
     slave = part.GetSubModelPart("Contact_slave")
     master = part.GetSubModelPart("Contact_master")
-    assert slave.NumberOfNodes() == hertz["counts"]["slave_nodes"] > 10
-    assert master.NumberOfNodes() == hertz["counts"]["master_nodes"] > 10
-    a = hertz["target"]["half_width"]
+    assert slave.NumberOfNodes() == reference["counts"]["slave_nodes"] > 10
+    assert master.NumberOfNodes() == reference["counts"]["master_nodes"] > 10
+    a = reference["target"]["half_width"]
     cylinder = set(part.GetSubModelPart("Parts_cylinder").NodeIds())
     for node in slave.Nodes:  # on the arc, near the contact, in the slave body
-        assert abs(math.hypot(node.X0, node.Y0 - hertz["radius"]) - hertz["radius"]) < 1e-9
+        assert abs(math.hypot(node.X0, node.Y0 - reference["radius"]) - reference["radius"]) < 1e-9
         assert abs(node.X0) <= 4.0 * a + 1e-12 and node.Id in cylinder
     for node in master.Nodes:  # on the block top
         assert node.Y0 == 0.0 and abs(node.X0) <= 5.0 * a + 1e-12 and node.Id not in cylinder
@@ -69,8 +70,8 @@ def test_interface_and_boundary_parts(case_2d):
     assert sum(1 for n in part.Nodes if n.X0 == 0.0 and n.Y0 == 0.0) <= 2
     top = part.GetSubModelPart("DISPLACEMENT_top")
     bottom = part.GetSubModelPart("DISPLACEMENT_bottom")
-    assert top.NumberOfNodes() > 0 and all(n.Y0 == hertz["radius"] for n in top.Nodes)
-    assert bottom.NumberOfNodes() > 0 and all(n.Y0 == -hertz["block_height"] for n in bottom.Nodes)
+    assert top.NumberOfNodes() > 0 and all(n.Y0 == reference["radius"] for n in top.Nodes)
+    assert bottom.NumberOfNodes() > 0 and all(n.Y0 == -reference["block_height"] for n in bottom.Nodes)
     # the interface is symmetric about x = 0 (full model, mirrored mesh not required: counts only)
     assert sum(1 for n in slave.Nodes if n.X0 < 0.0) > 5 and sum(1 for n in slave.Nodes if n.X0 > 0.0) > 5
 
@@ -94,9 +95,9 @@ def test_parameters_and_materials(case_2d):
 
 
 def test_hertz_values_satisfy_closed_forms(case_2d):
-    _, hertz = case_2d
-    target, r, e_star = hertz["target"], hertz["radius"], hertz["effective_modulus"]
-    e, nu = hertz["young_modulus"], hertz["poisson_ratio"]
+    _, reference = case_2d
+    target, r, e_star = reference["target"], reference["radius"], reference["effective_modulus"]
+    e, nu = reference["young_modulus"], reference["poisson_ratio"]
     assert e_star == pytest.approx(e / (2.0 * (1.0 - nu * nu)), rel=1e-14)
     p, a, p0 = target["force"], target["half_width"], target["peak_pressure"]
     assert a == pytest.approx(math.sqrt(4.0 * p * r / (math.pi * e_star)), rel=1e-12)
@@ -104,16 +105,16 @@ def test_hertz_values_satisfy_closed_forms(case_2d):
     assert a / r == pytest.approx(0.1, rel=1e-12)
     # the elliptical pressure integrates to the force: int p0 sqrt(1 - x^2/a^2) dx = pi a p0 / 2
     assert math.pi * a * p0 / 2.0 == pytest.approx(p, rel=1e-12)
-    assert hertz["applied_displacement"] > 0.0
+    assert reference["applied_displacement"] > 0.0
 
 
 def test_hertz_3d_closed_forms():
-    e_star = generate_cases.effective_modulus(1000.0, 0.3)
-    h = generate_cases.hertz_3d(0.7, 1.0, e_star)
+    e_star = hertz.effective_modulus(1000.0, 0.3)
+    h = hertz.hertz_3d(0.7, 1.0, e_star)
     a, p0 = h["half_width"], h["peak_pressure"]
     assert a ** 3 == pytest.approx(3.0 * 0.7 * 1.0 / (4.0 * e_star), rel=1e-12)
     assert 2.0 * math.pi * a * a * p0 / 3.0 == pytest.approx(0.7, rel=1e-12)  # integral of the hemispherical pressure
-    assert generate_cases.force_for_half_width(3, a, 1.0, e_star) == pytest.approx(0.7, rel=1e-12)
+    assert hertz.force_for_half_width(3, a, 1.0, e_star) == pytest.approx(0.7, rel=1e-12)
     assert h["approach"] == pytest.approx(a * a, rel=1e-12)
 
 
@@ -121,9 +122,9 @@ def test_interior_faces_on_the_interface_are_rejected():
     import numpy as np
 
     cells = np.array([[0, 1, 2], [1, 3, 2]])  # two triangles sharing the edge 1-2
-    assert generate_cases.interface_faces(cells, np.array([0, 1])).tolist() == [[0, 1]]
+    assert hertz.interface_faces(cells, np.array([0, 1])).tolist() == [[0, 1]]
     with pytest.raises(RuntimeError, match="interior"):
-        generate_cases.interface_faces(cells, np.array([1, 2]))
+        hertz.interface_faces(cells, np.array([1, 2]))
 
 
 def test_free_components_are_null_in_the_constraints(case_2d):
@@ -161,8 +162,6 @@ def test_petsc_linear_solver_gives_the_umfpack_contact_solution(case_2d, tmp_pat
     """Issue 4: linear_solver_settings {"solver_type": "petsc"} (MUMPS LU through PETSc, or the
     field split with algebraic multigrid) runs the Hertz contact case to the UMFPACK solution in
     the same Newton iterations."""
-    import case_runner
-
     # Checked here, not at collection: loading the plugin brings MPI into the test process.
     if not _petsc_available():
         pytest.skip("built without PETSc")
@@ -171,9 +170,11 @@ def test_petsc_linear_solver_gives_the_umfpack_contact_solution(case_2d, tmp_pat
     settings, tolerance = PETSC_SOLVERS[variant]
     records = {}
     for name, solver in (("umfpack", {"solver_type": "umfpack"}), ("petsc", settings)):
-        record = {"steps": [], "status": "ok"}
-        case_runner.run_mortarcontact(os.path.join(folder, "ProjectParameters.json"), 2, record, json.dumps(solver))
-        records[name] = record
+        output = tmp_path / f"{name}.json"
+        subprocess.run([sys.executable, RUNNER, "--code", "mortarcontact", "--linear-solver", json.dumps(solver),
+                        folder, str(output)], check=True)
+        records[name] = json.loads(output.read_text())
+        assert records[name]["status"] == "ok", records[name].get("error")
     umfpack, petsc = records["umfpack"], records["petsc"]
     assert [s["iterations"] for s in petsc["steps"]] == [s["iterations"] for s in umfpack["steps"]]
     assert all(s["converged"] for s in petsc["steps"])
@@ -187,8 +188,6 @@ def test_petsc_linear_solver_gives_the_umfpack_contact_solution(case_2d, tmp_pat
 
 def test_missing_petsc_plugin_is_a_clear_error():
     """Without its plugin library, "petsc" is a not-implemented error that says how to get it."""
-    import subprocess
-
     code = ("import mortarcontact as mc\n"
             "try:\n"
             "    mc._core.CreateLinearSolver(mc.Parameters('{\"solver_type\": \"petsc\"}'))\n"

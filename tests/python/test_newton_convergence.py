@@ -15,10 +15,10 @@ import pytest
 
 import mortarcontact as mc
 from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
+from mortarcontact.cases import hertz
 from mortarcontact.project_parameters import read_project_parameters
 
 pytestmark = pytest.mark.skipif(importlib.util.find_spec("gmsh") is None, reason="gmsh is not installed")
-HERTZ_DIR = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", "benchmarks", "hertz"))
 
 
 class HistoryAnalysis(StructuralMechanicsAnalysis):
@@ -35,10 +35,7 @@ class HistoryAnalysis(StructuralMechanicsAnalysis):
 
 
 def run_hertz(folder: str, normal_variation: str, formulation: str = "ALMContactFrictionless"):
-    sys.path.insert(0, HERTZ_DIR)
-    import generate_cases
-
-    case = generate_cases.write_case("hertz2d", "2k", folder)
+    case = hertz.write_case("hertz2d", "2k", folder)
     params = read_project_parameters(os.path.join(case, "ProjectParameters.json"))
     solver = params["solver_settings"]
     # Converge to round-off so that the tail of every step shows the rate.
