@@ -20,12 +20,15 @@ void AddContactFormulationsToPython(py::module_& m) {
       .def_static("OfProcess", &ContactFormulation::OfProcess, py::arg("process"), py::arg("contact_type"),
                   py::arg("where") = "contact_type", py::return_value_policy::reference,
                   "The formulation of a contact process (python_module) and its contact_type.")
-      .def_static("Names", &ContactFormulation::Names, "Every registered mortar_type, implemented or not.")
+      .def_static("Names", &ContactFormulation::Names, "Every registered mortar_type, implemented or not, sorted.")
       .def_static("ContactTypes", &ContactFormulation::ContactTypes, py::arg("process"),
                   "The contact_type values a contact process accepts.")
-      .def_property_readonly("mortar_type", &ContactFormulation::MortarType)
-      .def_property_readonly("process", [](const ContactFormulation& f) { return f.Describe().process; })
-      .def_property_readonly("contact_type", [](const ContactFormulation& f) { return f.Describe().contact_type; })
+      .def_property_readonly("mortar_type", &ContactFormulation::MortarType,
+                             "Its contact_settings.mortar_type, e.g. 'ALMContactFrictionless'.")
+      .def_property_readonly("process", [](const ContactFormulation& f) { return f.Describe().process; },
+                             "python_module of its contact process, e.g. 'alm_contact_process'.")
+      .def_property_readonly("contact_type", [](const ContactFormulation& f) { return f.Describe().contact_type; },
+                             "That process' contact_type, e.g. 'Frictionless'.")
       .def_property_readonly("variables", [](const ContactFormulation& f) { return f.Describe().variables; },
                              "Nodal solution-step variables the solver adds.")
       .def_property_readonly("dofs", [](const ContactFormulation& f) { return f.Describe().dofs; },

@@ -26,12 +26,18 @@ class SharedLinearSolver : public LinearSolver {
 }  // namespace
 
 void AddContactLinearSolversToPython(py::module_& m) {
-  py::class_<MixedULMLinearSolver, LinearSolver, std::shared_ptr<MixedULMLinearSolver>>(m, "MixedULMLinearSolver")
-      .def_property_readonly("last_solve_was_condensed", &MixedULMLinearSolver::LastSolveWasCondensed)
+  py::class_<MixedULMLinearSolver, LinearSolver, std::shared_ptr<MixedULMLinearSolver>>(
+      m, "MixedULMLinearSolver",
+      "mixed_ulm_linear_solver (Kratos MixedULMLinearSolver): static condensation of the dual multipliers (thesis "
+      "eqs. 4.37-4.40) around an inner solver.")
+      .def_property_readonly("last_solve_was_condensed", &MixedULMLinearSolver::LastSolveWasCondensed,
+                             "Whether the last solve went through the condensed system.")
       .def_property_readonly("fallback_reason", &MixedULMLinearSolver::FallbackReason,
                              "Why the last solve used the full system (empty when condensed).")
-      .def_property_readonly("condensed_size", &MixedULMLinearSolver::CondensedSize)
-      .def_property_readonly("number_of_pairs", &MixedULMLinearSolver::NumberOfPairs);
+      .def_property_readonly("condensed_size", &MixedULMLinearSolver::CondensedSize,
+                             "Size of the last condensed system.")
+      .def_property_readonly("number_of_pairs", &MixedULMLinearSolver::NumberOfPairs,
+                             "Number of (active slave displacement, active multiplier) pairs eliminated.");
   m.def(
       "CreateMixedULMLinearSolver",
       [](std::shared_ptr<LinearSolver> inner_linear_solver) {

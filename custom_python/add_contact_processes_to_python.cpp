@@ -7,14 +7,15 @@
 #include "custom_processes/contact_output_utilities.h"
 #include "custom_processes/contact_search_process.h"
 #include "custom_python/python_module.h"
-#include "custom_utilities/normal_calculation_utilities.h"
 
 namespace mc::python {
 
 void AddContactProcessesToPython(py::module_& m) {
   py::class_<ContactInterfaceBuilder>(m, "ContactInterfaceBuilder",
-                                      "Builds Contact.ContactSub<k> and ComputingContact for one interface slot.")
-      .def(py::init<ModelPart&>(), py::arg("root"), py::keep_alive<1, 2>())
+                                      "Builds Contact.ContactSub<k> and ComputingContact for one interface slot "
+                                      "(spec 4.2): interface conditions, SLAVE / MASTER flags, property, NODAL_H, "
+                                      "normals and their checks.")
+      .def(py::init<ModelPart&>(), py::arg("root"), py::keep_alive<1, 2>(), "A builder under the root model part.")
       .def(
           "Build",
           [](ContactInterfaceBuilder& self, const std::string& slot, std::vector<std::string> parts,
@@ -31,13 +32,21 @@ void AddContactProcessesToPython(py::module_& m) {
           },
           py::arg("slot"), py::arg("parts"), py::arg("slave_parts"), py::arg("property_id") = 0,
           py::arg("friction_coefficient") = 0.0, py::arg("normal_check_proportion") = 0.1,
-          py::return_value_policy::reference, "Returns the interface part Contact.ContactSub<slot>.")
+          py::return_value_policy::reference,
+          "Builds (or reuses unless the root is MODIFIED) the slot's interface from the parts (contact_model_part), "
+          "their slave ones (assume_master_slave; empty: automatic roles), property id (0: 100 + slot), friction "
+          "coefficient and normal_check_proportion; returns Contact.ContactSub<slot>.")
       .def_static("InterfaceProperties", &ContactInterfaceBuilder::InterfaceProperties, py::arg("root"),
-                  py::arg("slot"), py::return_value_policy::reference)
-      .def_static("ComputeNodalH", &ContactInterfaceBuilder::ComputeNodalH, py::arg("root"), py::arg("part"));
+                  py::arg("slot"), py::return_value_policy::reference,
+                  "The properties of a slot's interface (after Build).")
+      .def_static("ComputeNodalH", &ContactInterfaceBuilder::ComputeNodalH, py::arg("root"), py::arg("part"),
+                  "NODAL_H of every node of part: the smallest distance to another node of an element holding it "
+                  "(Kratos' nodal length).");
 
   py::class_<ContactSearchProcess>(m, "ContactSearchProcess",
-                                   "Contact search of one interface slot: creates the pair conditions.")
+                                   "Contact search of one interface slot (spec 4.3; Kratos "
+                                   "BaseContactSearchProcess): creates the pair conditions and predicts the active "
+                                   "set.")
       .def(py::init([](ModelPart& root, ModelPart& interface, Parameters search_parameters, std::string slot,
                        std::string condition_name, bool predefined_master_slave, int property_id,
                        std::string final_string) {
@@ -69,15 +78,20 @@ void AddContactProcessesToPython(py::module_& m) {
             stats["seconds"] = s.seconds;
             return stats;
           },
-          "Clears the pairs, searches again and predicts the active set; returns statistics.")
-      .def("ClearMortarConditions", &ContactSearchProcess::ClearMortarConditions)
-      .def("SetInterfaceActive", &ContactSearchProcess::SetInterfaceActive, py::arg("active"))
-      .def("InterfacePart", &ContactSearchProcess::InterfacePart, py::return_value_policy::reference)
-      .def("ComputingPart", &ContactSearchProcess::ComputingPart, py::return_value_policy::reference)
-      .def("SearchType", &ContactSearchProcess::SearchType)
-      .def("CheckGap", &ContactSearchProcess::CheckGap)
+          "Clears the pairs, searches again and predicts the active set; returns statistics (counts of slave and "
+          "master conditions, pairs, active and isolated nodes, search radii, seconds).")
+      .def("ClearMortarConditions", &ContactSearchProcess::ClearMortarConditions,
+           "Removes this slot's pair conditions.")
+      .def("SetInterfaceActive", &ContactSearchProcess::SetInterfaceActive, py::arg("active"),
+           "Sets ACTIVE on the interface nodes, conditions and pairs (all inactive outside the process interval).")
+      .def("InterfacePart", &ContactSearchProcess::InterfacePart, py::return_value_policy::reference,
+           "The interface part Contact.ContactSub<slot>.")
+      .def("ComputingPart", &ContactSearchProcess::ComputingPart, py::return_value_policy::reference,
+           "The pairs' part ComputingContact.ComputingContactSub<slot>.")
+      .def("SearchType", &ContactSearchProcess::SearchType, "Canonical search type, e.g. 'in_radius_with_obb'.")
+      .def("CheckGap", &ContactSearchProcess::CheckGap, "Canonical gap check, e.g. 'mapping_check'.")
       .def("TotalSeconds", &ContactSearchProcess::TotalSeconds, "Wall-clock seconds of all searches so far.")
-      .def("NumberOfSearches", &ContactSearchProcess::NumberOfSearches);
+      .def("NumberOfSearches", &ContactSearchProcess::NumberOfSearches, "Number of searches so far.");
 
   py::class_<ALMVariablesCalculationProcess>(m, "ALMVariablesCalculationProcess",
                                              "Automatic ALM penalty and scale factor (thesis eq. 4.11).")
@@ -86,14 +100,13 @@ void AddContactProcessesToPython(py::module_& m) {
            py::keep_alive<1, 2>(), py::keep_alive<1, 3>(),
            "settings: the contact process' advance_ALM_parameters; penalty_multiplier / penalty_floor: 1 / 1 "
            "for ALM, 1e4 / 1e16 for penalty.")
-      .def_static("GetDefaultParameters", &ALMVariablesCalculationProcess::GetDefaultParameters)
-      .def("Execute", &ALMVariablesCalculationProcess::Execute)
-      .def("Penalty", &ALMVariablesCalculationProcess::Penalty)
-      .def("ScaleFactor", &ALMVariablesCalculationProcess::ScaleFactor);
-
-  py::class_<NormalCalculationUtilities>(m, "NormalCalculationUtilities")
-      .def_static("ComputeNodalNormals", &NormalCalculationUtilities::ComputeNodalNormals, py::arg("part"))
-      .def_static("ComputeConditionsNormals", &NormalCalculationUtilities::ComputeConditionsNormals, py::arg("part"));
+      .def_static("GetDefaultParameters", &ALMVariablesCalculationProcess::GetDefaultParameters,
+                  "stiffness_factor, penalty_scale_factor, use_scale_factor (Kratos' advance_ALM_parameters).")
+      .def("Execute", &ALMVariablesCalculationProcess::Execute,
+           "Computes both from E / h of the less stiff side; writes ProcessInfo INITIAL_PENALTY and SCALE_FACTOR "
+           "and the nodal INITIAL_PENALTY.")
+      .def("Penalty", &ALMVariablesCalculationProcess::Penalty, "The penalty of the last Execute (force / length^3).")
+      .def("ScaleFactor", &ALMVariablesCalculationProcess::ScaleFactor, "The scale factor of the last Execute.");
 
   m.def("ComputeContactOutputs", &ComputeContactOutputs, py::arg("part"), py::arg("clear_inactive"),
         "The contact tractions, forces and gaps of the slave nodes at the end of a converged step; with "

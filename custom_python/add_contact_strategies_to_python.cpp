@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Bindings of custom_strategies: the contact convergence criteria, the mortar updater hook and
-// the contact strategies. Python names are the Kratos class names.
+// Bindings of custom_strategies: the contact convergence criteria, the contact mortar updater
+// and the contact strategies. Python names are the Kratos class names.
 #include <array>
 
 #include "core/model/model_part.h"
@@ -21,87 +21,32 @@ namespace mc::python {
 
 namespace {
 
-/// A std::function that calls a Python callable (or nothing for None) holding the GIL.
-std::function<void(ModelPart&)> ModelPartCallback(py::object callable) {
-  if (callable.is_none()) return {};
-  auto shared = std::make_shared<py::object>(std::move(callable));
-  return [shared](ModelPart& part) {
-    py::gil_scoped_acquire gil;
-    (*shared)(py::cast(&part, py::return_value_policy::reference));
-  };
-}
-
-std::function<void()> VoidCallback(py::object callable) {
-  if (callable.is_none()) return {};
-  auto shared = std::make_shared<py::object>(std::move(callable));
-  return [shared] {
-    py::gil_scoped_acquire gil;
-    (*shared)();
-  };
-}
-
-/// Python subclasses of MortarUpdater override ComputeWeightedGap / UpdateNormals / ...
-class PyMortarUpdater : public MortarUpdater {
- public:
-  void ComputeWeightedGap(ModelPart& model_part) override {
-    py::gil_scoped_acquire gil;
-    PYBIND11_OVERRIDE_PURE(void, MortarUpdater, ComputeWeightedGap, model_part);
-  }
-  void UpdateNormals(ModelPart& model_part) override {
-    py::gil_scoped_acquire gil;
-    PYBIND11_OVERRIDE(void, MortarUpdater, UpdateNormals, model_part);
-  }
-  void UpdateDynamicFactor(ModelPart& model_part) override {
-    py::gil_scoped_acquire gil;
-    PYBIND11_OVERRIDE(void, MortarUpdater, UpdateDynamicFactor, model_part);
-  }
-  void AdaptPenalty(ModelPart& model_part) override {
-    py::gil_scoped_acquire gil;
-    PYBIND11_OVERRIDE(void, MortarUpdater, AdaptPenalty, model_part);
-  }
-};
-
 template <class Criteria>
 void BindBlockCriteria(py::module_& m, const char* name, const char* doc) {
   py::class_<Criteria, BlockContactCriteria, std::shared_ptr<Criteria>>(m, name, doc)
-      .def(py::init<Parameters>(), py::arg("settings") = Parameters())
+      .def(py::init<Parameters>(), py::arg("settings") = Parameters(),
+           "Validates settings against its defaults (unknown keys rejected with the nearest valid one).")
       .def(py::init<const Parameters&, const Parameters&>(), py::arg("solver_settings"), py::arg("contact_settings"),
            "The criterion of a contact solver: displacement tolerances from solver_settings, the rest from "
            "contact_settings.")
-      .def_static("GetDefaultParameters", &Criteria::GetDefaultParameters);
+      .def_static("GetDefaultParameters", &Criteria::GetDefaultParameters, "Kratos' keys and defaults.");
 }
 
 template <class Criteria>
 void BindMortarCriteria(py::module_& m, const char* name, const char* doc) {
   py::class_<Criteria, BaseMortarConvergenceCriteria, std::shared_ptr<Criteria>>(m, name, doc)
-      .def(py::init<Parameters>(), py::arg("settings") = Parameters());
+      .def(py::init<Parameters>(), py::arg("settings") = Parameters(),
+           "Reads its keys of contact_settings (missing ones get their defaults).");
 }
 
 }  // namespace
 
 void AddContactStrategiesToPython(py::module_& m) {
-  py::class_<MortarUpdater, PyMortarUpdater, std::shared_ptr<MortarUpdater>>(
-      m, "MortarUpdater",
-      "Hook through which the mortar criteria and contact strategies refresh WEIGHTED_GAP "
-      "(ComputeWeightedGap, after the caller zeroed it on the Contact nodes), NORMAL (UpdateNormals), "
-      "DYNAMIC_FACTOR (UpdateDynamicFactor) and the adapted INITIAL_PENALTY (AdaptPenalty).")
-      .def(py::init<>())
-      .def("ComputeWeightedGap", &MortarUpdater::ComputeWeightedGap, py::arg("model_part"))
-      .def("UpdateNormals", &MortarUpdater::UpdateNormals, py::arg("model_part"))
-      .def("UpdateDynamicFactor", &MortarUpdater::UpdateDynamicFactor, py::arg("model_part"))
-      .def("AdaptPenalty", &MortarUpdater::AdaptPenalty, py::arg("model_part"));
-  py::class_<CallbackMortarUpdater, MortarUpdater, std::shared_ptr<CallbackMortarUpdater>>(
-      m, "CallbackMortarUpdater", "A MortarUpdater from two callables taking the model part (either may be None).")
-      .def(py::init([](py::object compute_weighted_gap, py::object update_normals) {
-             return std::make_shared<CallbackMortarUpdater>(ModelPartCallback(std::move(compute_weighted_gap)),
-                                                            ModelPartCallback(std::move(update_normals)));
-           }),
-           py::arg("compute_weighted_gap"), py::arg("update_normals") = py::none());
-
   py::class_<ContactMortarUpdater, MortarUpdater, std::shared_ptr<ContactMortarUpdater>>(
       m, "ContactMortarUpdater",
-      "Normals of the Contact interface and weighted gap of the ComputingContact pair conditions.")
-      .def(py::init<>())
+      "The MortarUpdater of the ALM and penalty contact processes: normals of the Contact interface and weighted gap "
+      "(and NODAL_AREA) of the ComputingContact pair conditions.")
+      .def(py::init<>(), "An updater with zeroed timings.")
       .def(
           "GetTimings",
           [](const ContactMortarUpdater& self) {
@@ -117,7 +62,8 @@ void AddContactStrategiesToPython(py::module_& m) {
 
   py::class_<BlockContactCriteria, ConvergenceCriteria, std::shared_ptr<BlockContactCriteria>>(
       m, "BlockContactCriteria", "Contact criteria measuring displacements, rotations and multipliers separately.")
-      .def("EnsureContact", &BlockContactCriteria::EnsureContact)
+      .def("EnsureContact", &BlockContactCriteria::EnsureContact,
+           "ensure_contact: whether all-zero multipliers (no contact) are an error rather than converged.")
       .def(
           "Tolerances",
           [](const BlockContactCriteria& c) {
@@ -150,21 +96,27 @@ void AddContactStrategiesToPython(py::module_& m) {
 
   py::class_<BaseMortarConvergenceCriteria, ConvergenceCriteria, std::shared_ptr<BaseMortarConvergenceCriteria>>(
       m, "BaseMortarConvergenceCriteria", "base_mortar_criteria: mortar quantities refresh, no active set.")
-      .def(py::init<Parameters>(), py::arg("settings") = Parameters())
-      .def("SetMortarUpdater", &BaseMortarConvergenceCriteria::SetMortarUpdater, py::arg("updater"))
-      .def("LastChangedNodes", &BaseMortarConvergenceCriteria::LastChangedNodes)
+      .def(py::init<Parameters>(), py::arg("settings") = Parameters(),
+           "Reads its keys of contact_settings (missing ones get their defaults).")
+      .def("SetMortarUpdater", &BaseMortarConvergenceCriteria::SetMortarUpdater, py::arg("updater"),
+           "The MortarUpdater refreshing normals, weighted gap, dynamic factor and penalty.")
+      .def("LastChangedNodes", &BaseMortarConvergenceCriteria::LastChangedNodes,
+           "Ids of the slave nodes that changed state at the last evaluation of the active set.")
       .def_static("GetDefaultParameters", &BaseMortarConvergenceCriteria::GetDefaultParameters,
                   "Its keys of contact_settings with their defaults.");
-  BindMortarCriteria<ALMFrictionlessMortarConvergenceCriteria>(m, "ALMFrictionlessMortarConvergenceCriteria",
-                                                               "alm_frictionless_mortar_criteria");
+  BindMortarCriteria<ALMFrictionlessMortarConvergenceCriteria>(
+      m, "ALMFrictionlessMortarConvergenceCriteria",
+      "alm_frictionless_mortar_criteria: a node is active when k lambda_n + eps g < 0 (thesis eqs. 4.41-4.44).");
   BindMortarCriteria<ALMFrictionlessComponentsMortarConvergenceCriteria>(
-      m, "ALMFrictionlessComponentsMortarConvergenceCriteria", "alm_frictionless_components_mortar_criteria");
-  BindMortarCriteria<PenaltyFrictionlessMortarConvergenceCriteria>(m, "PenaltyFrictionlessMortarConvergenceCriteria",
-                                                                   "penalty_frictionless_mortar_criteria");
+      m, "ALMFrictionlessComponentsMortarConvergenceCriteria",
+      "alm_frictionless_components_mortar_criteria: a node is active when k n . lambda + eps g < 0.");
+  BindMortarCriteria<PenaltyFrictionlessMortarConvergenceCriteria>(
+      m, "PenaltyFrictionlessMortarConvergenceCriteria",
+      "penalty_frictionless_mortar_criteria: a node is active when its weighted gap is negative.");
   py::class_<MeshTyingMortarConvergenceCriteria, ConvergenceCriteria,
              std::shared_ptr<MeshTyingMortarConvergenceCriteria>>(m, "MeshTyingMortarConvergenceCriteria",
                                                                    "mesh_tying_mortar_criteria: always converged")
-      .def(py::init<>());
+      .def(py::init<>(), "Mesh tying has no active set.");
 
   py::class_<MortarAndConvergenceCriteria, AndCriteria, std::shared_ptr<MortarAndConvergenceCriteria>>(
       m, "MortarAndConvergenceCriteria",
@@ -177,18 +129,24 @@ void AddContactStrategiesToPython(py::module_& m) {
                  print_table);
            }),
            py::arg("mechanical"), py::arg("mortar"), py::arg("print_convergence_criterion") = false,
-           py::arg("condition_number") = false, py::arg("print_table") = true)
-      .def("SetMortarUpdater", &MortarAndConvergenceCriteria::SetMortarUpdater, py::arg("updater"))
-      .def("Mechanical", &MortarAndConvergenceCriteria::Mechanical, py::return_value_policy::reference_internal)
-      .def("Mortar", &MortarAndConvergenceCriteria::Mortar, py::return_value_policy::reference_internal)
-      .def("TableHeader", &MortarAndConvergenceCriteria::TableHeader)
-      .def("LastTableRow", &MortarAndConvergenceCriteria::LastTableRow);
+           py::arg("condition_number") = false, py::arg("print_table") = true,
+           "print_convergence_criterion: list the slave nodes that changed; condition_number: "
+           "condn_convergence_criterion (slow); print_table: fancy_convergence_criterion.")
+      .def("SetMortarUpdater", &MortarAndConvergenceCriteria::SetMortarUpdater, py::arg("updater"),
+           "Forwards the MortarUpdater to the mortar criterion.")
+      .def("Mechanical", &MortarAndConvergenceCriteria::Mechanical, py::return_value_policy::reference_internal,
+           "The mechanical criterion.")
+      .def("Mortar", &MortarAndConvergenceCriteria::Mortar, py::return_value_policy::reference_internal,
+           "The mortar (active-set) criterion.")
+      .def("TableHeader", &MortarAndConvergenceCriteria::TableHeader,
+           "Column titles of the convergence table for the current DoF set.")
+      .def("LastTableRow", &MortarAndConvergenceCriteria::LastTableRow, "Cells of the last row of the table.");
 
   using ContactNewton = ResidualBasedNewtonRaphsonContactStrategy;
   py::class_<ContactNewton, NewtonRaphsonStrategy, std::shared_ptr<ContactNewton>>(
       m, "ResidualBasedNewtonRaphsonContactStrategy",
-      "newton_raphson_contact_strategy: semi-smooth Newton for mortar contact (full when the model part "
-      "Is(INTERACTION), simplified otherwise), contact predictor, adaptive step splitting.")
+      "newton_raphson_contact_strategy: semi-smooth Newton for mortar contact (thesis Algorithm 2; full when the "
+      "model part Is(INTERACTION), simplified otherwise), contact predictor, adaptive step splitting.")
       .def(py::init([](ModelPart& part, std::shared_ptr<Scheme> scheme, std::shared_ptr<ConvergenceCriteria> criteria,
                        std::shared_ptr<BuilderAndSolver> builder, Parameters settings, int max_iteration,
                        bool compute_reactions, bool reform_dofs_at_each_step, bool move_mesh, int echo_level) {
@@ -201,30 +159,37 @@ void AddContactStrategiesToPython(py::module_& m) {
            py::arg("model_part"), py::arg("scheme"), py::arg("criteria"), py::arg("builder_and_solver"),
            py::arg("settings") = Parameters(), py::arg("max_iteration") = 10, py::arg("compute_reactions") = true,
            py::arg("reform_dofs_at_each_step") = false, py::arg("move_mesh") = true, py::arg("echo_level") = 0,
-           py::keep_alive<1, 2>())
+           py::keep_alive<1, 2>(),
+           "settings: contact_settings (adaptative_strategy, split_factor, max_number_splits, inner_loop_iterations); "
+           "the others as NewtonRaphsonStrategy.")
       .def_static("GetDefaultParameters", &ContactNewton::GetDefaultParameters,
                   "Its keys of contact_settings with their defaults.")
-      .def("SetMortarUpdater", &ContactNewton::SetMortarUpdater, py::arg("updater"))
+      .def("SetMortarUpdater", &ContactNewton::SetMortarUpdater, py::arg("updater"),
+           "The MortarUpdater of the contact predictor (weighted gap at the last converged coordinates).")
       .def(
           "SetSubStepCallbacks",
           [](ContactNewton& s, py::object initialize_solution_step, py::object finalize_solution_step) {
-            s.SetSubStepCallbacks(
-                {VoidCallback(std::move(initialize_solution_step)), VoidCallback(std::move(finalize_solution_step))});
+            s.SetSubStepCallbacks({PythonCallback<>(std::move(initialize_solution_step)),
+                                   PythonCallback<>(std::move(finalize_solution_step))});
           },
           py::arg("initialize_solution_step"), py::arg("finalize_solution_step") = py::none(),
           "Callables run around the sub-steps of the adaptive splitting (processes, output).")
-      .def("SetMaxIterationNumber", &ContactNewton::SetMaxIterationNumber)
-      .def("GetMaxIterationNumber", &ContactNewton::GetMaxIterationNumber)
-      .def("ActiveSetFlipCounts", &ContactNewton::ActiveSetFlipCounts)
-      .def("FailureReport", &ContactNewton::FailureReport)
-      .def("InnerLoopIterations", &ContactNewton::InnerLoopIterations)
-      .def("SplitLevelUsed", &ContactNewton::SplitLevelUsed);
+      .def("SetMaxIterationNumber", &ContactNewton::SetMaxIterationNumber, py::arg("max_iteration"),
+           "Newton iterations allowed per step (per pass in simplified semi-smooth Newton).")
+      .def("GetMaxIterationNumber", &ContactNewton::GetMaxIterationNumber, "Newton iterations allowed per step.")
+      .def("ActiveSetFlipCounts", &ContactNewton::ActiveSetFlipCounts,
+           "{slave node id: times it changed state} during the last step.")
+      .def("FailureReport", &ContactNewton::FailureReport, "Why the last step failed ('' if it converged).")
+      .def("InnerLoopIterations", &ContactNewton::InnerLoopIterations,
+           "Active-set passes of the last step (1 in full semi-smooth Newton).")
+      .def("SplitLevelUsed", &ContactNewton::SplitLevelUsed,
+           "Split level that made the last step converge (0: no split needed).");
 
   using LineSearchSplitStep = LineSearchContactStrategy::SplitStep;
-  py::class_<LineSearchSplitStep>(m, "LineSearchSplitStep")
-      .def_readonly("iteration", &LineSearchSplitStep::iteration)
-      .def_readonly("displacement", &LineSearchSplitStep::displacement)
-      .def_readonly("multiplier", &LineSearchSplitStep::multiplier);
+  py::class_<LineSearchSplitStep>(m, "LineSearchSplitStep", "The two step lengths of one line-search iteration.")
+      .def_readonly("iteration", &LineSearchSplitStep::iteration, "Newton iteration, from 1.")
+      .def_readonly("displacement", &LineSearchSplitStep::displacement, "Step length of the displacement block.")
+      .def_readonly("multiplier", &LineSearchSplitStep::multiplier, "Step length of the multiplier block.");
   py::class_<LineSearchContactStrategy, ContactNewton, std::shared_ptr<LineSearchContactStrategy>>(
       m, "LineSearchContactStrategy",
       "line_search_contact_strategy: contact Newton with separate line-search step lengths for the "
@@ -242,8 +207,10 @@ void AddContactStrategiesToPython(py::module_& m) {
            py::arg("model_part"), py::arg("scheme"), py::arg("criteria"), py::arg("builder_and_solver"),
            py::arg("settings") = Parameters(), py::arg("max_iteration") = 10, py::arg("compute_reactions") = true,
            py::arg("reform_dofs_at_each_step") = false, py::arg("move_mesh") = true, py::arg("min_step") = 0.1,
-           py::arg("echo_level") = 0, py::keep_alive<1, 2>())
-      .def("SplitSteps", &LineSearchContactStrategy::SplitSteps);
+           py::arg("echo_level") = 0, py::keep_alive<1, 2>(),
+           "min_step: the smallest step length of a block; the others as ResidualBasedNewtonRaphsonContactStrategy.")
+      .def("SplitSteps", &LineSearchContactStrategy::SplitSteps,
+           "The LineSearchSplitStep of each iteration of the last step.");
 }
 
 }  // namespace mc::python

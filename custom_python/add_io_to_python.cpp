@@ -16,7 +16,8 @@ struct PendingFixities {
 }  // namespace
 
 void AddIoToPython(py::module_& m) {
-  py::class_<PendingFixities>(m, "PendingFixities")
+  py::class_<PendingFixities>(m, "PendingFixities",
+                              "The fixities of an mdpa's NodalData blocks, to apply once the solver added the DoFs.")
       .def("__len__", [](const PendingFixities& p) { return p.requests.size(); })
       .def("Apply", [](const PendingFixities& p) { return MdpaReader::ApplyFixityRequests(p.requests); },
            "Fixes the requested DoFs that exist now; returns how many found no DoF.");

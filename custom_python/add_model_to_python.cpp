@@ -166,6 +166,37 @@ py::array_t<double> IntegrationPointMeans(const ModelPart& part, const VariableD
   return out;
 }
 
+DataValueContainer& ValuesOf(DataValueContainer& values) { return values; }
+DataValueContainer& ValuesOf(Node& node) { return node.Data(); }
+DataValueContainer& ValuesOf(Entity& entity) { return entity.Data(); }
+
+/// GetValue, SetValue and Has of the non-historical values (a component reads its source).
+template <class Class>
+Class& BindValues(Class& cls) {
+  using Owner = typename Class::type;
+  return cls
+      .def("GetValue", [](Owner& o, const VariableData& v) { return GetGeneric(ValuesOf(o), v); }, py::arg("variable"),
+           "The non-historical value of a variable (its zero when not set).")
+      .def("SetValue", [](Owner& o, const VariableData& v, const py::object& value) {
+        ValuesOf(o).SetGeneric(v, FromPython(v, value));
+      }, py::arg("variable"), py::arg("value"), "Sets the non-historical value of a variable.")
+      .def("Has", [](Owner& o, const VariableData& v) {
+        const auto& items = ValuesOf(o).Items();
+        return std::any_of(items.begin(), items.end(),
+                           [&](const auto& item) { return item.first == (v.IsComponent() ? v.Source() : &v); });
+      }, py::arg("variable"), "Whether a non-historical value of the variable is set.");
+}
+
+/// Is and Set of the flags of a node, entity, model part or process info.
+template <class Class>
+Class& BindFlags(Class& cls) {
+  using Owner = typename Class::type;
+  return cls.def("Is", [](const Owner& o, const Flag& flag) { return o.Is(flag); }, py::arg("flag"),
+                 "Whether the flag is set.")
+      .def("Set", [](Owner& o, const Flag& flag, bool value) { o.Set(flag, value); }, py::arg("flag"),
+           py::arg("value") = true, "Sets the flag to value.");
+}
+
 template <class Container>
 py::list AsList(const Container& items) {
   py::list list;
@@ -176,85 +207,86 @@ py::list AsList(const Container& items) {
 }  // namespace
 
 void AddModelToPython(py::module_& m) {
-  py::class_<Dof>(m, "Dof")
-      .def_property_readonly("variable", [](const Dof& d) { return d.variable; }, py::return_value_policy::reference)
-      .def_property_readonly("reaction", [](const Dof& d) { return d.reaction; }, py::return_value_policy::reference)
-      .def_readwrite("fixed", &Dof::fixed)
-      .def_readonly("equation_id", &Dof::equation_id)
-      .def_property_readonly("node_id", [](const Dof& d) { return d.node->Id(); })
-      .def("Value", [](const Dof& d, int step) { return d.Value(step); }, py::arg("step") = 0);
+  py::class_<Dof>(m, "Dof", "One degree of freedom: a double variable of a node, its reaction, fixity and equation id.")
+      .def_property_readonly("variable", [](const Dof& d) { return d.variable; }, py::return_value_policy::reference,
+                             "The unknown, e.g. DISPLACEMENT_X.")
+      .def_property_readonly("reaction", [](const Dof& d) { return d.reaction; }, py::return_value_policy::reference,
+                             "Its reaction variable, e.g. REACTION_X (None without one).")
+      .def_readwrite("fixed", &Dof::fixed, "Whether the value is prescribed.")
+      .def_readonly("equation_id", &Dof::equation_id, "Row of the global system (-1 before the DoF set-up).")
+      .def_property_readonly("node_id", [](const Dof& d) { return d.node->Id(); }, "Id of its node.")
+      .def("Value", [](const Dof& d, int step) { return d.Value(step); }, py::arg("step") = 0,
+           "Historical value of the variable, step 0 the current one.");
 
-  py::class_<Node>(m, "Node")
-      .def_property_readonly("Id", &Node::Id)
-      .def_property_readonly("X", &Node::X)
-      .def_property_readonly("Y", &Node::Y)
-      .def_property_readonly("Z", &Node::Z)
-      .def_property_readonly("X0", [](const Node& n) { return n.X0()[0]; })
-      .def_property_readonly("Y0", [](const Node& n) { return n.X0()[1]; })
-      .def_property_readonly("Z0", [](const Node& n) { return n.X0()[2]; })
-      .def("Coordinates", [](const Node& n) { return Array3(n.Coordinates()); })
-      .def("InitialCoordinates", [](const Node& n) { return Array3(n.X0()); })
-      .def("GetSolutionStepValue", &GetHistorical, py::arg("variable"), py::arg("step") = 0)
+  py::class_<Node> node(m, "Node",
+                        "A mesh node (Kratos Node): initial and current coordinates, historical values of the last "
+                        "buffer_size steps, non-historical values, flags and DoFs.");
+  node.def_property_readonly("Id", &Node::Id, "The node's id.")
+      .def_property_readonly("X", &Node::X, "Current x coordinate.")
+      .def_property_readonly("Y", &Node::Y, "Current y coordinate.")
+      .def_property_readonly("Z", &Node::Z, "Current z coordinate.")
+      .def_property_readonly("X0", [](const Node& n) { return n.X0()[0]; }, "Initial x coordinate.")
+      .def_property_readonly("Y0", [](const Node& n) { return n.X0()[1]; }, "Initial y coordinate.")
+      .def_property_readonly("Z0", [](const Node& n) { return n.X0()[2]; }, "Initial z coordinate.")
+      .def("Coordinates", [](const Node& n) { return Array3(n.Coordinates()); }, "Current coordinates (x, y, z).")
+      .def("InitialCoordinates", [](const Node& n) { return Array3(n.X0()); }, "Initial coordinates (X0, Y0, Z0).")
+      .def("GetSolutionStepValue", &GetHistorical, py::arg("variable"), py::arg("step") = 0,
+           "Historical value of a double or Array3 variable, step 0 the current one.")
       .def("SetSolutionStepValue", [](Node& n, const VariableData& v, const py::object& value) { SetHistorical(n, v, value, 0); },
-           py::arg("variable"), py::arg("value"))
+           py::arg("variable"), py::arg("value"), "Sets the current historical value of a variable.")
       .def("SetSolutionStepValue", [](Node& n, const VariableData& v, int step, const py::object& value) { SetHistorical(n, v, value, step); },
-           py::arg("variable"), py::arg("step"), py::arg("value"))
-      .def("HasSolutionStepValue", &Node::HasSolutionStepValue)
-      .def("GetValue", [](const Node& n, const VariableData& v) { return GetGeneric(n.Data(), v); })
-      .def("SetValue", [](Node& n, const VariableData& v, const py::object& value) { n.Data().SetGeneric(v, FromPython(v, value)); })
-      .def("Has", [](const Node& n, const VariableData& v) {
-        return std::any_of(n.Data().Items().begin(), n.Data().Items().end(),
-                           [&](const auto& item) { return item.first == (v.IsComponent() ? v.Source() : &v); });
-      })
-      .def("Is", &Node::Is)
-      .def("Set", &Node::Set, py::arg("flag"), py::arg("value") = true)
+           py::arg("variable"), py::arg("step"), py::arg("value"), "Sets the historical value of a variable at a step.")
+      .def("HasSolutionStepValue", &Node::HasSolutionStepValue, py::arg("variable"),
+           "Whether the variable is historical in this node's model part.");
+  BindFlags(BindValues(node))
       .def("AddDof", [](Node& n, const VariableData& v, const VariableData* r) -> Dof& {
              return n.AddDof(AsDouble(v), r ? &AsDouble(*r) : nullptr);
-           }, py::arg("variable"), py::arg("reaction") = nullptr, py::return_value_policy::reference_internal)
-      .def("HasDofFor", [](const Node& n, const VariableData& v) { return n.HasDofFor(AsDouble(v)); })
+           }, py::arg("variable"), py::arg("reaction") = nullptr, py::return_value_policy::reference_internal,
+           "Adds (or returns the existing) DoF of a double variable, with an optional reaction variable.")
+      .def("HasDofFor", [](const Node& n, const VariableData& v) { return n.HasDofFor(AsDouble(v)); },
+           py::arg("variable"), "Whether the node has a DoF of the variable.")
       .def("GetDof", [](const Node& n, const VariableData& v) -> Dof& { return n.GetDof(AsDouble(v)); },
-           py::return_value_policy::reference_internal)
-      .def("Fix", [](Node& n, const VariableData& v) { n.Fix(AsDouble(v)); })
-      .def("Free", [](Node& n, const VariableData& v) { n.Free(AsDouble(v)); })
-      .def("IsFixed", [](const Node& n, const VariableData& v) { return n.IsFixed(AsDouble(v)); })
+           py::arg("variable"), py::return_value_policy::reference_internal,
+           "The DoF of the variable (InputError naming node and variable otherwise).")
+      .def("Fix", [](Node& n, const VariableData& v) { n.Fix(AsDouble(v)); }, py::arg("variable"),
+           "Prescribes the DoF of the variable.")
+      .def("Free", [](Node& n, const VariableData& v) { n.Free(AsDouble(v)); }, py::arg("variable"),
+           "Releases the DoF of the variable.")
+      .def("IsFixed", [](const Node& n, const VariableData& v) { return n.IsFixed(AsDouble(v)); }, py::arg("variable"),
+           "Whether the node has a fixed DoF of the variable.")
       .def("__repr__", [](const Node& n) { return Concat("<Node ", n.Id(), " (", n.X(), ", ", n.Y(), ", ", n.Z(), ")>"); });
 
-  py::class_<Properties>(m, "Properties")
-      .def_property_readonly("Id", &Properties::Id)
-      .def("GetValue", [](const Properties& p, const VariableData& v) { return GetGeneric(p, v); })
-      .def("SetValue", [](Properties& p, const VariableData& v, const py::object& value) { p.SetGeneric(v, FromPython(v, value)); })
-      .def("Has", [](const Properties& p, const VariableData& v) {
-        return std::any_of(p.Items().begin(), p.Items().end(), [&](const auto& item) { return item.first == &v; });
-      })
-      .def("HasConstitutiveLaw", &Properties::HasConstitutiveLaw)
-      .def("ConstitutiveLawName", [](const Properties& p) { return p.HasConstitutiveLaw() ? p.GetConstitutiveLaw()->Name() : std::string(); });
+  py::class_<Properties> properties(m, "Properties",
+                                    "Material and numerical properties shared by elements and conditions (Kratos "
+                                    "Properties): values, the constitutive law and tables.");
+  properties.def_property_readonly("Id", &Properties::Id, "The properties' id.");
+  BindValues(properties)
+      .def("HasConstitutiveLaw", &Properties::HasConstitutiveLaw, "Whether a constitutive law is assigned.")
+      .def("ConstitutiveLawName", [](const Properties& p) { return p.HasConstitutiveLaw() ? p.GetConstitutiveLaw()->Name() : std::string(); },
+           "Registered name of the constitutive law ('' without one).");
 
-  py::class_<ProcessInfo>(m, "ProcessInfo")
-      .def("GetValue", [](const ProcessInfo& p, const VariableData& v) { return GetGeneric(p, v); })
-      .def("SetValue", [](ProcessInfo& p, const VariableData& v, const py::object& value) { p.SetGeneric(v, FromPython(v, value)); })
-      .def("Has", [](const ProcessInfo& p, const VariableData& v) {
-        return std::any_of(p.Items().begin(), p.Items().end(), [&](const auto& item) { return item.first == &v; });
-      })
-      .def("Is", &ProcessInfo::Is)
-      .def("Set", &ProcessInfo::Set, py::arg("flag"), py::arg("value") = true);
+  py::class_<ProcessInfo> process_info(m, "ProcessInfo",
+                                       "Global state shared by all parts of a model (Kratos ProcessInfo): TIME, "
+                                       "DELTA_TIME, STEP, DOMAIN_SIZE, iteration counters, flags.");
+  BindFlags(BindValues(process_info));
 
-  py::class_<Entity>(m, "Entity")
-      .def_property_readonly("Id", &Entity::Id)
-      .def("Info", &Entity::Info)
-      .def("GetGeometry", py::overload_cast<>(&Entity::GetGeometry), py::return_value_policy::reference_internal)
-      .def("GetNodes", [](Entity& e) { return AsList(e.GetGeometry().Nodes()); })
+  py::class_<Entity> entity(m, "Entity",
+                            "What elements and conditions have in common: geometry, properties, flags, values and "
+                            "the finite-element interface.");
+  entity.def_property_readonly("Id", &Entity::Id, "The entity's id.")
+      .def("Info", &Entity::Info, "Registered name of its class, e.g. 'SmallDisplacementElement'.")
+      .def("GetGeometry", py::overload_cast<>(&Entity::GetGeometry), py::return_value_policy::reference_internal,
+           "Its Geometry.")
+      .def("GetNodes", [](Entity& e) { return AsList(e.GetGeometry().Nodes()); }, "Its nodes, in local order.")
       .def("NodeIds", [](const Entity& e) {
         std::vector<IndexType> ids;
         for (const Node* n : e.GetGeometry().Nodes()) ids.push_back(n->Id());
         return ids;
-      })
-      .def("GetProperties", &Entity::GetProperties, py::return_value_policy::reference)
-      .def("Is", &Entity::Is)
-      .def("Set", &Entity::Set, py::arg("flag"), py::arg("value") = true)
-      .def("IsActive", &Entity::IsActive)
-      .def("GetValue", [](const Entity& e, const VariableData& v) { return GetGeneric(e.Data(), v); })
-      .def("SetValue", [](Entity& e, const VariableData& v, const py::object& value) { e.Data().SetGeneric(v, FromPython(v, value)); })
-      .def("NumberOfIntegrationPoints", &Entity::NumberOfIntegrationPoints)
+      }, "Ids of its nodes, in local order.")
+      .def("GetProperties", &Entity::GetProperties, py::return_value_policy::reference, "Its Properties.")
+      .def("IsActive", &Entity::IsActive, "False only when ACTIVE is explicitly reset; builders skip inactive ones.")
+      .def("NumberOfIntegrationPoints", &Entity::NumberOfIntegrationPoints,
+           "Number of integration points CalculateOnIntegrationPoints returns values for.")
       .def("CalculateOnIntegrationPoints", [](Entity& e, const VariableData& v, const ProcessInfo& info) -> py::object {
         switch (v.Type()) {
           case ValueType::Double: { std::vector<double> out; e.CalculateOnIntegrationPoints(static_cast<const Variable<double>&>(v), out, info); return py::cast(out); }
@@ -263,61 +295,89 @@ void AddModelToPython(py::module_& m) {
           case ValueType::Matrix: { std::vector<Matrix> out; e.CalculateOnIntegrationPoints(static_cast<const Variable<Matrix>&>(v), out, info); return py::cast(out); }
           default: throw InputError(Concat(v.Name(), " cannot be computed on integration points"));
         }
-      })
+      }, py::arg("variable"), py::arg("process_info"),
+         "The values of a result variable (stress, strain, ...) at each integration point.")
       .def("CalculateLocalSystem", [](Entity& e, const ProcessInfo& info) {
         Matrix lhs;
         Vector rhs;
         e.CalculateLocalSystem(lhs, rhs, info);
         return py::make_tuple(lhs, rhs);
-      })
+      }, py::arg("process_info"),
+         "(LHS, RHS): LHS = d(residual)/d(unknowns), RHS = external - internal forces, in GetDofList order.")
       .def("__repr__", [](const Entity& e) { return Concat("<", e.Info(), " ", e.Id(), ">"); });
-  py::class_<Element, Entity>(m, "Element");
-  py::class_<Condition, Entity>(m, "Condition");
+  BindFlags(BindValues(entity));
+  py::class_<Element, Entity>(m, "Element", "A finite element of the domain, created by its registered name.");
+  py::class_<Condition, Entity>(m, "Condition",
+                                "A boundary or interface entity (loads, skins, contact pairs), created by its "
+                                "registered name.");
 
-  py::class_<ModelPart>(m, "ModelPart")
-      .def_property_readonly("Name", &ModelPart::Name)
-      .def("FullName", &ModelPart::FullName)
-      .def("IsSubModelPart", &ModelPart::IsSubModelPart)
-      .def("GetRootModelPart", py::overload_cast<>(&ModelPart::GetRootModelPart), py::return_value_policy::reference)
-      .def("GetParentModelPart", &ModelPart::GetParentModelPart, py::return_value_policy::reference)
-      .def("AddNodalSolutionStepVariable", &ModelPart::AddNodalSolutionStepVariable)
-      .def("HasNodalSolutionStepVariable", &ModelPart::HasNodalSolutionStepVariable)
-      .def("GetBufferSize", &ModelPart::GetBufferSize)
-      .def("SetBufferSize", &ModelPart::SetBufferSize)
-      .def_property_readonly("ProcessInfo", py::overload_cast<>(&ModelPart::GetProcessInfo), py::return_value_policy::reference_internal)
-      .def("GetProcessInfo", py::overload_cast<>(&ModelPart::GetProcessInfo), py::return_value_policy::reference_internal)
-      .def("CloneTimeStep", &ModelPart::CloneTimeStep)
-      .def("CreateNewNode", &ModelPart::CreateNewNode, py::return_value_policy::reference)
-      .def("AddNodes", &ModelPart::AddNodes)
-      .def("GetNode", &ModelPart::GetNode, py::return_value_policy::reference)
-      .def("HasNode", &ModelPart::HasNode)
-      .def_property_readonly("Nodes", [](const ModelPart& p) { return AsList(p.Nodes()); })
-      .def("NumberOfNodes", &ModelPart::NumberOfNodes)
+  py::class_<ModelPart> model_part(m, "ModelPart",
+                                   "A named set of nodes, elements, conditions and properties with nested sub-model "
+                                   "parts (Kratos ModelPart); the root owns every entity.");
+  model_part.def_property_readonly("Name", &ModelPart::Name, "Its name, e.g. 'ContactSub0'.")
+      .def("FullName", &ModelPart::FullName, "Dotted path from the root, e.g. 'Structure.Contact.ContactSub0'.")
+      .def("IsSubModelPart", &ModelPart::IsSubModelPart, "Whether it has a parent.")
+      .def("GetRootModelPart", py::overload_cast<>(&ModelPart::GetRootModelPart), py::return_value_policy::reference,
+           "The root of its tree.")
+      .def("GetParentModelPart", &ModelPart::GetParentModelPart, py::return_value_policy::reference,
+           "Its parent (itself for a root).")
+      .def("AddNodalSolutionStepVariable", &ModelPart::AddNodalSolutionStepVariable, py::arg("variable"),
+           "Makes a variable historical on the nodes of the whole tree (before nodes are created).")
+      .def("HasNodalSolutionStepVariable", &ModelPart::HasNodalSolutionStepVariable, py::arg("variable"),
+           "Whether a variable is historical.")
+      .def("GetBufferSize", &ModelPart::GetBufferSize, "Number of steps of nodal history kept.")
+      .def("SetBufferSize", &ModelPart::SetBufferSize, py::arg("buffer_size"),
+           "Resizes the history of every node of the tree.")
+      .def_property_readonly("ProcessInfo", py::overload_cast<>(&ModelPart::GetProcessInfo), py::return_value_policy::reference_internal,
+                             "The ProcessInfo of its tree.")
+      .def("GetProcessInfo", py::overload_cast<>(&ModelPart::GetProcessInfo), py::return_value_policy::reference_internal,
+           "The ProcessInfo of its tree.")
+      .def("CloneTimeStep", &ModelPart::CloneTimeStep, py::arg("time"),
+           "Advances TIME (and STEP) and shifts the history of every node.")
+      .def("CreateNewNode", &ModelPart::CreateNewNode, py::arg("id"), py::arg("x"), py::arg("y"), py::arg("z"),
+           py::return_value_policy::reference,
+           "Creates a node in the root and adds it here and to every ancestor (ids unique in the model).")
+      .def("AddNodes", &ModelPart::AddNodes, py::arg("ids"), "Adds existing nodes of the root by id.")
+      .def("GetNode", &ModelPart::GetNode, py::arg("id"), py::return_value_policy::reference,
+           "The node of this id (InputError otherwise).")
+      .def("HasNode", &ModelPart::HasNode, py::arg("id"), "Whether it holds the node of this id.")
+      .def_property_readonly("Nodes", [](const ModelPart& p) { return AsList(p.Nodes()); }, "Its nodes, in id order.")
+      .def("NumberOfNodes", &ModelPart::NumberOfNodes, "Number of its nodes.")
       .def("CreateNewElement", [](ModelPart& p, const std::string& name, IndexType id, const std::vector<IndexType>& nodes, Properties& props) -> Element& {
         return p.CreateNewElement(name, id, nodes, &props);
-      }, py::return_value_policy::reference)
+      }, py::arg("name"), py::arg("id"), py::arg("node_ids"), py::arg("properties"), py::return_value_policy::reference,
+         "Creates an element of a registered name (e.g. 'SmallDisplacementElement2D4N') on the nodes of these ids.")
       .def("CreateNewCondition", [](ModelPart& p, const std::string& name, IndexType id, const std::vector<IndexType>& nodes, Properties& props) -> Condition& {
         return p.CreateNewCondition(name, id, nodes, &props);
-      }, py::return_value_policy::reference)
-      .def("AddElements", &ModelPart::AddElements)
-      .def("AddConditions", &ModelPart::AddConditions)
-      .def("GetElement", &ModelPart::GetElement, py::return_value_policy::reference)
-      .def("GetCondition", &ModelPart::GetCondition, py::return_value_policy::reference)
-      .def_property_readonly("Elements", [](const ModelPart& p) { return AsList(p.Elements()); })
-      .def_property_readonly("Conditions", [](const ModelPart& p) { return AsList(p.Conditions()); })
-      .def("NumberOfElements", &ModelPart::NumberOfElements)
-      .def("NumberOfConditions", &ModelPart::NumberOfConditions)
-      .def("GetProperties", &ModelPart::GetOrCreateProperties, py::return_value_policy::reference)
-      .def("HasProperties", &ModelPart::HasProperties)
-      .def_property_readonly("Properties", [](const ModelPart& p) { return AsList(p.PropertiesList()); })
-      .def("CreateSubModelPart", &ModelPart::CreateSubModelPart, py::return_value_policy::reference)
-      .def("HasSubModelPart", &ModelPart::HasSubModelPart)
-      .def("GetSubModelPart", &ModelPart::GetSubModelPart, py::return_value_policy::reference)
-      .def("RemoveSubModelPart", &ModelPart::RemoveSubModelPart)
-      .def_property_readonly("SubModelParts", [](const ModelPart& p) { return AsList(p.SubModelParts()); })
-      .def("SubModelPartNames", &ModelPart::SubModelPartNames)
-      .def("Is", &ModelPart::Is)
-      .def("Set", &ModelPart::Set, py::arg("flag"), py::arg("value") = true)
+      }, py::arg("name"), py::arg("id"), py::arg("node_ids"), py::arg("properties"), py::return_value_policy::reference,
+         "Creates a condition of a registered name (e.g. 'LineLoadCondition2D2N') on the nodes of these ids.")
+      .def("AddElements", &ModelPart::AddElements, py::arg("ids"), "Adds existing elements of the root by id.")
+      .def("AddConditions", &ModelPart::AddConditions, py::arg("ids"), "Adds existing conditions of the root by id.")
+      .def("GetElement", &ModelPart::GetElement, py::arg("id"), py::return_value_policy::reference,
+           "The element of this id (InputError otherwise).")
+      .def("GetCondition", &ModelPart::GetCondition, py::arg("id"), py::return_value_policy::reference,
+           "The condition of this id (InputError otherwise).")
+      .def_property_readonly("Elements", [](const ModelPart& p) { return AsList(p.Elements()); },
+                             "Its elements, in id order.")
+      .def_property_readonly("Conditions", [](const ModelPart& p) { return AsList(p.Conditions()); },
+                             "Its conditions, in id order.")
+      .def("NumberOfElements", &ModelPart::NumberOfElements, "Number of its elements.")
+      .def("NumberOfConditions", &ModelPart::NumberOfConditions, "Number of its conditions.")
+      .def("GetProperties", &ModelPart::GetOrCreateProperties, py::arg("id"), py::return_value_policy::reference,
+           "The properties of this id, created in the root when missing, and listed here.")
+      .def("HasProperties", &ModelPart::HasProperties, py::arg("id"), "Whether it lists the properties of this id.")
+      .def_property_readonly("Properties", [](const ModelPart& p) { return AsList(p.PropertiesList()); },
+                             "Its properties.")
+      .def("CreateSubModelPart", &ModelPart::CreateSubModelPart, py::arg("name"), py::return_value_policy::reference,
+           "Creates a sub-model part of this name.")
+      .def("HasSubModelPart", &ModelPart::HasSubModelPart, py::arg("name"),
+           "Whether the sub-model part exists (dotted paths relative to this part accepted).")
+      .def("GetSubModelPart", &ModelPart::GetSubModelPart, py::arg("name"), py::return_value_policy::reference,
+           "The sub-model part of this name or dotted path (InputError with suggestions otherwise).")
+      .def("RemoveSubModelPart", &ModelPart::RemoveSubModelPart, py::arg("name"), "Removes a sub-model part.")
+      .def_property_readonly("SubModelParts", [](const ModelPart& p) { return AsList(p.SubModelParts()); },
+                             "Its direct sub-model parts.")
+      .def("SubModelPartNames", &ModelPart::SubModelPartNames, "Names of its direct sub-model parts.")
       // numpy bulk access (copies, in node-id order)
       .def("NodeIds", [](const ModelPart& p) {
         py::array_t<std::int64_t> ids(py::ssize_t(p.NumberOfNodes()));
@@ -325,7 +385,7 @@ void AddModelToPython(py::module_& m) {
         std::size_t i = 0;
         for (const Node* n : p.Nodes()) d[i++] = static_cast<std::int64_t>(n->Id());
         return ids;
-      })
+      }, "Node ids as an int64 array (n,), in id order.")
       .def("NodeCoordinates", [](const ModelPart& p, bool initial) {
         py::array_t<double> x({py::ssize_t(p.NumberOfNodes()), py::ssize_t(3)});
         auto* d = x.mutable_data();
@@ -336,10 +396,11 @@ void AddModelToPython(py::module_& m) {
           ++i;
         }
         return x;
-      }, py::arg("initial") = false)
+      }, py::arg("initial") = false, "Current (or initial) coordinates of every node, shape (n, 3), in node-id order.")
       .def("GetNodalValues", &NodalValues, py::arg("variable"), py::arg("step") = 0,
            "Historical values of every node, shape (n,) or (n, 3), in node-id order.")
-      .def("SetNodalValues", &SetNodalValues, py::arg("variable"), py::arg("values"), py::arg("step") = 0)
+      .def("SetNodalValues", &SetNodalValues, py::arg("variable"), py::arg("values"), py::arg("step") = 0,
+           "Sets the historical values of every node from an array (n,) or (n, 3) in node-id order.")
       .def("GetNodalNonHistoricalValues", &NodalNonHistoricalValues, py::arg("variable"),
            "Non-historical values of every node, shape (n,) or (n, 3), in node-id order.")
       .def("GetNodalFlags", [](const ModelPart& p, const Flag& flag) {
@@ -348,7 +409,7 @@ void AddModelToPython(py::module_& m) {
         std::size_t i = 0;
         for (const Node* n : p.Nodes()) d[i++] = n->Is(flag);
         return out;
-      }, py::arg("flag"))
+      }, py::arg("flag"), "Whether each node has the flag set, shape (n,), in node-id order.")
       .def("EntityConnectivity", [](const ModelPart& p, bool conditions) {
         return conditions ? Connectivity(p.Conditions()) : Connectivity(p.Elements());
       }, py::arg("conditions") = false,
@@ -368,20 +429,25 @@ void AddModelToPython(py::module_& m) {
         return Concat("<ModelPart ", p.FullName(), ": ", p.NumberOfNodes(), " nodes, ", p.NumberOfElements(),
                       " elements, ", p.NumberOfConditions(), " conditions>");
       });
+  BindFlags(model_part);
 
-  py::class_<Model>(m, "Model")
-      .def(py::init<>())
+  py::class_<Model>(m, "Model", "Owner of the root model parts of a simulation, addressed by dotted names (Kratos Model).")
+      .def(py::init<>(), "An empty model.")
       .def("CreateModelPart", &Model::CreateModelPart, py::arg("name"), py::arg("buffer_size") = 1,
-           py::return_value_policy::reference_internal)
-      .def("GetModelPart", &Model::GetModelPart, py::return_value_policy::reference_internal)
-      .def("__getitem__", &Model::GetModelPart, py::return_value_policy::reference_internal)
-      .def("HasModelPart", &Model::HasModelPart)
-      .def("DeleteModelPart", &Model::DeleteModelPart)
-      .def("ModelPartNames", &Model::ModelPartNames);
+           py::return_value_policy::reference_internal,
+           "Creates a root model part keeping buffer_size steps of nodal history.")
+      .def("GetModelPart", &Model::GetModelPart, py::arg("name"), py::return_value_policy::reference_internal,
+           "A model part by name or dotted path ('Structure.Contact'); InputError with suggestions otherwise.")
+      .def("__getitem__", &Model::GetModelPart, py::arg("name"), py::return_value_policy::reference_internal,
+           "A model part by name or dotted path.")
+      .def("HasModelPart", &Model::HasModelPart, py::arg("name"), "Whether the model part exists.")
+      .def("DeleteModelPart", &Model::DeleteModelPart, py::arg("name"), "Deletes a root model part.")
+      .def("ModelPartNames", &Model::ModelPartNames, "Names of the root model parts.");
 
-  m.def("ElementNames", [] { return Registry<Element>::Instance().Names(); });
-  m.def("ConditionNames", [] { return Registry<Condition>::Instance().Names(); });
-  m.def("ConstitutiveLawNames", [] { return Registry<ConstitutiveLaw>::Instance().Names(); });
+  m.def("ElementNames", [] { return Registry<Element>::Instance().Names(); }, "Names of all registered elements.");
+  m.def("ConditionNames", [] { return Registry<Condition>::Instance().Names(); }, "Names of all registered conditions.");
+  m.def("ConstitutiveLawNames", [] { return Registry<ConstitutiveLaw>::Instance().Names(); },
+        "Names of all registered constitutive laws.");
 }
 
 }  // namespace mc::python

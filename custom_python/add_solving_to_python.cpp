@@ -21,104 +21,140 @@
 namespace mc::python {
 
 void AddSolvingToPython(py::module_& m) {
-  py::class_<Scheme, std::shared_ptr<Scheme>>(m, "Scheme").def("Name", &Scheme::Name);
+  py::class_<Scheme, std::shared_ptr<Scheme>>(
+      m, "Scheme", "Time integration of the unknowns: what is assembled per entity and how DoFs move with an increment.")
+      .def("Name", &Scheme::Name, "The settings name, e.g. 'static', 'bossak', 'newmark'.");
   py::class_<ResidualBasedIncrementalUpdateStaticScheme, Scheme, std::shared_ptr<ResidualBasedIncrementalUpdateStaticScheme>>(
-      m, "StaticScheme", "Incremental update u += du (static problems).")
-      .def(py::init<>());
+      m, "StaticScheme", "Incremental update u += du (static problems; Kratos ResidualBasedIncrementalUpdateStaticScheme).")
+      .def(py::init<>(), "The static scheme.");
   py::class_<ResidualBasedBossakDisplacementScheme, Scheme, std::shared_ptr<ResidualBasedBossakDisplacementScheme>>(
-      m, "BossakScheme", "Bossak (alpha_m) implicit dynamics; Newmark for alpha_m = 0.")
-      .def(py::init<double, std::optional<double>>(), py::arg("alpha_m") = -0.3, py::arg("newmark_beta") = py::none())
-      .def_static("Newmark", &ResidualBasedBossakDisplacementScheme::Newmark)
-      .def("Alpha", &ResidualBasedBossakDisplacementScheme::Alpha)
-      .def("Beta", &ResidualBasedBossakDisplacementScheme::Beta)
-      .def("Gamma", &ResidualBasedBossakDisplacementScheme::Gamma);
+      m, "BossakScheme", "Bossak (alpha_m) implicit dynamics; Newmark for alpha_m = 0 (Kratos "
+      "ResidualBasedBossakDisplacementScheme).")
+      .def(py::init<double, std::optional<double>>(), py::arg("alpha_m") = -0.3, py::arg("newmark_beta") = py::none(),
+           "alpha_m: damp_factor_m; newmark_beta: beta, (1 - alpha_m)^2 / 4 when None; gamma = 1/2 - alpha_m.")
+      .def_static("Newmark", &ResidualBasedBossakDisplacementScheme::Newmark,
+                  "Newmark's average acceleration (alpha_m 0, beta 1/4, gamma 1/2), scheme_type 'newmark'.")
+      .def("Alpha", &ResidualBasedBossakDisplacementScheme::Alpha, "alpha_m.")
+      .def("Beta", &ResidualBasedBossakDisplacementScheme::Beta, "Newmark beta.")
+      .def("Gamma", &ResidualBasedBossakDisplacementScheme::Gamma, "Newmark gamma.");
   py::class_<ExplicitCentralDifferencesScheme, Scheme, std::shared_ptr<ExplicitCentralDifferencesScheme>>(
-      m, "ExplicitCentralDifferencesScheme")
-      .def(py::init<>());
+      m, "ExplicitCentralDifferencesScheme",
+      "Explicit central differences with a lumped mass and half-step velocities; stable for dt < 2 / omega_max.")
+      .def(py::init<>(), "Without Rayleigh damping (the strategy reads RAYLEIGH_ALPHA from the ProcessInfo).");
 
-  py::class_<CriterionValue>(m, "CriterionValue")
-      .def_readonly("name", &CriterionValue::name)
-      .def_readonly("value", &CriterionValue::value)
-      .def_readonly("tolerance", &CriterionValue::tolerance)
+  py::class_<CriterionValue>(m, "CriterionValue", "One measure of a convergence criterion at the last check.")
+      .def_readonly("name", &CriterionValue::name, "What is measured, e.g. '|du|/|u|'.")
+      .def_readonly("value", &CriterionValue::value, "The measured value.")
+      .def_readonly("tolerance", &CriterionValue::tolerance, "Its tolerance.")
       .def("__repr__", [](const CriterionValue& v) { return Concat(v.name, " = ", v.value, " (tol ", v.tolerance, ")"); });
-  py::class_<ConvergenceCriteria, std::shared_ptr<ConvergenceCriteria>>(m, "ConvergenceCriteria")
-      .def("Name", &ConvergenceCriteria::Name)
-      .def("SetEchoLevel", &ConvergenceCriteria::SetEchoLevel)
-      .def("LastValues", &ConvergenceCriteria::LastValues);
-  py::class_<DisplacementCriteria, ConvergenceCriteria, std::shared_ptr<DisplacementCriteria>>(m, "DisplacementCriteria")
-      .def(py::init<double, double>(), py::arg("relative_tolerance") = 1e-4, py::arg("absolute_tolerance") = 1e-9);
-  py::class_<ResidualCriteria, ConvergenceCriteria, std::shared_ptr<ResidualCriteria>>(m, "ResidualCriteria")
-      .def(py::init<double, double>(), py::arg("relative_tolerance") = 1e-4, py::arg("absolute_tolerance") = 1e-9);
-  py::class_<AndCriteria, ConvergenceCriteria, std::shared_ptr<AndCriteria>>(m, "AndCriteria")
-      .def(py::init<std::shared_ptr<ConvergenceCriteria>, std::shared_ptr<ConvergenceCriteria>>());
-  py::class_<OrCriteria, ConvergenceCriteria, std::shared_ptr<OrCriteria>>(m, "OrCriteria")
-      .def(py::init<std::shared_ptr<ConvergenceCriteria>, std::shared_ptr<ConvergenceCriteria>>());
+  py::class_<ConvergenceCriteria, std::shared_ptr<ConvergenceCriteria>>(
+      m, "ConvergenceCriteria", "Decides when a Newton loop has converged (Kratos ConvergenceCriteria).")
+      .def("Name", &ConvergenceCriteria::Name, "The settings name, e.g. 'displacement_criterion'.")
+      .def("SetEchoLevel", &ConvergenceCriteria::SetEchoLevel, py::arg("level"), "Verbosity: 0 silent, higher prints more.")
+      .def("LastValues", &ConvergenceCriteria::LastValues, "The CriterionValue measures of the last check.");
+  py::class_<DisplacementCriteria, ConvergenceCriteria, std::shared_ptr<DisplacementCriteria>>(
+      m, "DisplacementCriteria",
+      "displacement_criterion: converged when |du|/|u| or |du|/sqrt(n) over the free DoFs is below its tolerance.")
+      .def(py::init<double, double>(), py::arg("relative_tolerance") = 1e-4, py::arg("absolute_tolerance") = 1e-9,
+           "Kratos' displacement_relative_tolerance and displacement_absolute_tolerance.");
+  py::class_<ResidualCriteria, ConvergenceCriteria, std::shared_ptr<ResidualCriteria>>(
+      m, "ResidualCriteria",
+      "residual_criterion: converged when |r|/|r0| or |r|/sqrt(n) over the free DoFs is below its tolerance.")
+      .def(py::init<double, double>(), py::arg("relative_tolerance") = 1e-4, py::arg("absolute_tolerance") = 1e-9,
+           "Kratos' residual_relative_tolerance and residual_absolute_tolerance.");
+  py::class_<AndCriteria, ConvergenceCriteria, std::shared_ptr<AndCriteria>>(
+      m, "AndCriteria", "and_criterion: converged when both criteria are.")
+      .def(py::init<std::shared_ptr<ConvergenceCriteria>, std::shared_ptr<ConvergenceCriteria>>(), py::arg("first"),
+           py::arg("second"), "Drives both criteria at every call.");
+  py::class_<OrCriteria, ConvergenceCriteria, std::shared_ptr<OrCriteria>>(
+      m, "OrCriteria", "or_criterion: converged when either criterion is.")
+      .def(py::init<std::shared_ptr<ConvergenceCriteria>, std::shared_ptr<ConvergenceCriteria>>(), py::arg("first"),
+           py::arg("second"), "Drives both criteria at every call.");
 
-  py::class_<BuilderAndSolver::Timings>(m, "BuilderTimings")
-      .def_readonly("dof_setup", &BuilderAndSolver::Timings::dof_setup)
-      .def_readonly("sparsity", &BuilderAndSolver::Timings::sparsity)
-      .def_readonly("build", &BuilderAndSolver::Timings::build)
-      .def_readonly("solve", &BuilderAndSolver::Timings::solve)
-      .def_readonly("elements", &BuilderAndSolver::Timings::elements)
-      .def_readonly("conditions", &BuilderAndSolver::Timings::conditions);
-  py::class_<BuilderAndSolver, std::shared_ptr<BuilderAndSolver>>(m, "BuilderAndSolver")
-      .def("Name", &BuilderAndSolver::Name)
-      .def("NumberOfDofs", &BuilderAndSolver::NumberOfDofs)
-      .def("SystemSize", &BuilderAndSolver::SystemSize)
-      .def("GetTimings", &BuilderAndSolver::GetTimings, py::return_value_policy::copy)
-      .def("SystemMatrixNonZeros", [](const BuilderAndSolver& b) { return b.SystemMatrix().nonZeros(); })
-      .def("AddConstraint", [](BuilderAndSolver& b, std::shared_ptr<MasterSlaveConstraint> c) { b.AddConstraint(std::move(c)); })
-      .def("ClearConstraints", &BuilderAndSolver::ClearConstraints);
+  py::class_<BuilderAndSolver::Timings>(m, "BuilderTimings", "Cumulative wall-clock seconds of a builder-and-solver.")
+      .def_readonly("dof_setup", &BuilderAndSolver::Timings::dof_setup, "DoF set-up and numbering (s).")
+      .def_readonly("sparsity", &BuilderAndSolver::Timings::sparsity, "Sparsity pattern and constraint matrix (s).")
+      .def_readonly("build", &BuilderAndSolver::Timings::build, "Assembly, constraints and Dirichlet conditions (s).")
+      .def_readonly("solve", &BuilderAndSolver::Timings::solve, "Linear solver, symbolic and numeric (s).")
+      .def_readonly("elements", &BuilderAndSolver::Timings::elements, "Element loop, part of build (s).")
+      .def_readonly("conditions", &BuilderAndSolver::Timings::conditions,
+                    "Condition loop (loads, contact pairs), part of build (s).");
+  py::class_<BuilderAndSolver, std::shared_ptr<BuilderAndSolver>>(
+      m, "BuilderAndSolver",
+      "Numbers the DoFs, assembles the global system and solves it; eliminates master-slave constraints.")
+      .def("Name", &BuilderAndSolver::Name, "The settings name, 'block' or 'elimination'.")
+      .def("NumberOfDofs", &BuilderAndSolver::NumberOfDofs, "Number of DoFs of the DoF set (fixed ones included).")
+      .def("SystemSize", &BuilderAndSolver::SystemSize, "Number of unknowns of the linear system solved.")
+      .def("GetTimings", &BuilderAndSolver::GetTimings, py::return_value_policy::copy, "Its BuilderTimings so far.")
+      .def("SystemMatrixNonZeros", [](const BuilderAndSolver& b) { return b.SystemMatrix().nonZeros(); },
+           "Non-zeros of the last system matrix.")
+      .def("AddConstraint", [](BuilderAndSolver& b, std::shared_ptr<MasterSlaveConstraint> c) { b.AddConstraint(std::move(c)); },
+           py::arg("constraint"), "Adds a MasterSlaveConstraint; the DoF set and numbering are redone at the next build.")
+      .def("ClearConstraints", &BuilderAndSolver::ClearConstraints, "Removes every constraint.");
 
   py::class_<MasterSlaveConstraint, std::shared_ptr<MasterSlaveConstraint>>(
       m, "MasterSlaveConstraint", "Linear constraint slave = sum_i weight_i * master_i + constant.")
       .def(py::init([](IndexType id, Dof& slave, std::vector<Dof*> masters, std::vector<double> weights, double constant) {
              return std::make_shared<MasterSlaveConstraint>(id, slave, std::move(masters), std::move(weights), constant);
            }),
-           py::arg("id"), py::arg("slave"), py::arg("masters"), py::arg("weights"), py::arg("constant") = 0.0)
-      .def("Id", &MasterSlaveConstraint::Id);
-  py::class_<BlockBuilderAndSolver, BuilderAndSolver, std::shared_ptr<BlockBuilderAndSolver>>(m, "BlockBuilderAndSolver")
+           py::arg("id"), py::arg("slave"), py::arg("masters"), py::arg("weights"), py::arg("constant") = 0.0,
+           "InputError when masters and weights differ in size or the slave is also a master.")
+      .def("Id", &MasterSlaveConstraint::Id, "The constraint's id.");
+  py::class_<BlockBuilderAndSolver, BuilderAndSolver, std::shared_ptr<BlockBuilderAndSolver>>(
+      m, "BlockBuilderAndSolver",
+      "block: every DoF is an unknown; fixed rows and columns are zeroed with a positive diagonal (Kratos "
+      "ResidualBasedBlockBuilderAndSolver).")
       .def(py::init([](std::shared_ptr<LinearSolver> solver) { return std::make_shared<BlockBuilderAndSolver>(std::move(solver)); }),
-           py::arg("linear_solver"));
+           py::arg("linear_solver"), "Solves with linear_solver.");
   py::class_<EliminationBuilderAndSolver, BuilderAndSolver, std::shared_ptr<EliminationBuilderAndSolver>>(
-      m, "EliminationBuilderAndSolver")
-      .def(py::init<std::shared_ptr<LinearSolver>>(), py::arg("linear_solver"));
+      m, "EliminationBuilderAndSolver",
+      "elimination: only the free DoFs are unknowns (Kratos ResidualBasedEliminationBuilderAndSolver).")
+      .def(py::init<std::shared_ptr<LinearSolver>>(), py::arg("linear_solver"), "Solves with linear_solver.");
 
-  py::class_<IterationRecord>(m, "IterationRecord")
-      .def_readonly("iteration", &IterationRecord::iteration)
-      .def_readonly("residual_norm", &IterationRecord::residual_norm)
-      .def_readonly("increment_norm", &IterationRecord::increment_norm)
-      .def_readonly("step_length", &IterationRecord::step_length)
-      .def_readonly("criteria", &IterationRecord::criteria)
-      .def_readonly("converged", &IterationRecord::converged)
+  py::class_<IterationRecord>(m, "IterationRecord", "One Newton iteration as the strategy saw it.")
+      .def_readonly("iteration", &IterationRecord::iteration, "Iteration number, from 1.")
+      .def_readonly("residual_norm", &IterationRecord::residual_norm,
+                    "|f_ext - f_int| over the free DoFs at the start of the iteration.")
+      .def_readonly("increment_norm", &IterationRecord::increment_norm, "|du| applied in the iteration.")
+      .def_readonly("step_length", &IterationRecord::step_length, "Line-search factor applied to the increment (1: Newton).")
+      .def_readonly("criteria", &IterationRecord::criteria, "The CriterionValue measures of the criteria.")
+      .def_readonly("converged", &IterationRecord::converged, "Whether the criteria were met.")
       .def("__repr__", [](const IterationRecord& r) {
         return Concat("iteration ", r.iteration, ": |r| = ", r.residual_norm, ", |du| = ", r.increment_norm);
       });
 
-  py::class_<SolvingStrategy, std::shared_ptr<SolvingStrategy>>(m, "SolvingStrategy")
-      .def("Name", &SolvingStrategy::Name)
-      .def("Initialize", [](SolvingStrategy& s) { WithoutGil([&] { s.Initialize(); }); })
-      .def("InitializeSolutionStep", [](SolvingStrategy& s) { WithoutGil([&] { s.InitializeSolutionStep(); }); })
-      .def("Predict", [](SolvingStrategy& s) { WithoutGil([&] { s.Predict(); }); })
-      .def("SolveSolutionStep", [](SolvingStrategy& s) { return WithoutGil([&] { return s.SolveSolutionStep(); }); })
-      .def("FinalizeSolutionStep", [](SolvingStrategy& s) { WithoutGil([&] { s.FinalizeSolutionStep(); }); })
-      .def("Solve", [](SolvingStrategy& s) { return WithoutGil([&] { return s.Solve(); }); })
-      .def("Clear", &SolvingStrategy::Clear)
-      .def("Check", &SolvingStrategy::Check)
-      .def("SetEchoLevel", &SolvingStrategy::SetEchoLevel)
+  py::class_<SolvingStrategy, std::shared_ptr<SolvingStrategy>>(
+      m, "SolvingStrategy", "Advances one model part by one time or load step (Kratos SolvingStrategy).")
+      .def("Name", &SolvingStrategy::Name, "The settings name: 'linear', 'newton_raphson', 'line_search', 'explicit'.")
+      .def("Initialize", [](SolvingStrategy& s) { WithoutGil([&] { s.Initialize(); }); }, "Once, before the first step.")
+      .def("InitializeSolutionStep", [](SolvingStrategy& s) { WithoutGil([&] { s.InitializeSolutionStep(); }); },
+           "At the start of a step (DoF set-up on the first one).")
+      .def("Predict", [](SolvingStrategy& s) { WithoutGil([&] { s.Predict(); }); }, "First guess of the step.")
+      .def("SolveSolutionStep", [](SolvingStrategy& s) { return WithoutGil([&] { return s.SolveSolutionStep(); }); },
+           "Solves the step; False when it did not converge (the model keeps the last iterate).")
+      .def("FinalizeSolutionStep", [](SolvingStrategy& s) { WithoutGil([&] { s.FinalizeSolutionStep(); }); },
+           "At the end of a step (reactions, entities' finalization).")
+      .def("Solve", [](SolvingStrategy& s) { return WithoutGil([&] { return s.Solve(); }); },
+           "Initialize (first time), InitializeSolutionStep, Predict, SolveSolutionStep, FinalizeSolutionStep; "
+           "whether the step converged.")
+      .def("Clear", &SolvingStrategy::Clear, "Frees the system and the DoF set; the next step sets them up again.")
+      .def("Check", &SolvingStrategy::Check, "Validates the model (entities, variables) before the first step.")
+      .def("SetEchoLevel", &SolvingStrategy::SetEchoLevel, py::arg("level"), "Verbosity: 0 silent, higher prints more.")
       .def("GetIterationNumber", [](const SolvingStrategy& s) -> int {
         if (const auto* newton = dynamic_cast<const NewtonRaphsonStrategy*>(&s))
           return static_cast<int>(newton->IterationHistory().size());
         return 1;
-      })
+      }, "Iterations of the last step (1 for non-Newton strategies).")
       .def("GetIterationHistory", [](const SolvingStrategy& s) {
         if (const auto* newton = dynamic_cast<const NewtonRaphsonStrategy*>(&s)) return newton->IterationHistory();
         return std::vector<IterationRecord>{};
-      });
-  py::class_<ImplicitSolvingStrategy, SolvingStrategy, std::shared_ptr<ImplicitSolvingStrategy>>(m, "ImplicitSolvingStrategy")
+      }, "The IterationRecord of each iteration of the last step (empty for non-Newton strategies).");
+  py::class_<ImplicitSolvingStrategy, SolvingStrategy, std::shared_ptr<ImplicitSolvingStrategy>>(
+      m, "ImplicitSolvingStrategy", "A strategy with a scheme, a builder-and-solver and a DoF set.")
       .def("GetBuilderAndSolver", [](const ImplicitSolvingStrategy& s) -> BuilderAndSolver& { return s.GetBuilderAndSolver(); },
-           py::return_value_policy::reference_internal);
-  py::class_<LinearStrategy, ImplicitSolvingStrategy, std::shared_ptr<LinearStrategy>>(m, "LinearStrategy")
+           py::return_value_policy::reference_internal, "Its BuilderAndSolver.");
+  py::class_<LinearStrategy, ImplicitSolvingStrategy, std::shared_ptr<LinearStrategy>>(
+      m, "LinearStrategy", "analysis_type linear: one build and solve per step (Kratos ResidualBasedLinearStrategy).")
       .def(py::init([](ModelPart& part, std::shared_ptr<Scheme> scheme, std::shared_ptr<BuilderAndSolver> builder,
                        bool compute_reactions, bool reform_dofs_at_each_step, bool move_mesh, int echo_level) {
              auto s = std::make_shared<LinearStrategy>(part, std::move(scheme), std::move(builder), compute_reactions,
@@ -128,8 +164,10 @@ void AddSolvingToPython(py::module_& m) {
            }),
            py::arg("model_part"), py::arg("scheme"), py::arg("builder_and_solver"), py::arg("compute_reactions") = true,
            py::arg("reform_dofs_at_each_step") = false, py::arg("move_mesh") = false, py::arg("echo_level") = 0,
-           py::keep_alive<1, 2>());
-  py::class_<NewtonRaphsonStrategy, ImplicitSolvingStrategy, std::shared_ptr<NewtonRaphsonStrategy>>(m, "NewtonRaphsonStrategy")
+           py::keep_alive<1, 2>(), "Kratos' solver_settings of the same names (move_mesh: move_mesh_flag).");
+  py::class_<NewtonRaphsonStrategy, ImplicitSolvingStrategy, std::shared_ptr<NewtonRaphsonStrategy>>(
+      m, "NewtonRaphsonStrategy", "analysis_type non_linear: Newton-Raphson on the residual (Kratos "
+      "ResidualBasedNewtonRaphsonStrategy).")
       .def(py::init([](ModelPart& part, std::shared_ptr<Scheme> scheme, std::shared_ptr<ConvergenceCriteria> criteria,
                        std::shared_ptr<BuilderAndSolver> builder, int max_iteration, bool compute_reactions,
                        bool reform_dofs_at_each_step, bool move_mesh, bool use_old_stiffness, int echo_level) {
@@ -142,17 +180,22 @@ void AddSolvingToPython(py::module_& m) {
            py::arg("model_part"), py::arg("scheme"), py::arg("criteria"), py::arg("builder_and_solver"),
            py::arg("max_iteration") = 10, py::arg("compute_reactions") = true,
            py::arg("reform_dofs_at_each_step") = false, py::arg("move_mesh") = true,
-           py::arg("use_old_stiffness_in_first_iteration") = false, py::arg("echo_level") = 0, py::keep_alive<1, 2>());
+           py::arg("use_old_stiffness_in_first_iteration") = false, py::arg("echo_level") = 0, py::keep_alive<1, 2>(),
+           "Kratos' solver_settings of the same names (move_mesh: move_mesh_flag).");
 
-  py::class_<LineSearchSettings>(m, "LineSearchSettings")
-      .def(py::init<>())
-      .def_readwrite("max_line_search_iterations", &LineSearchSettings::max_line_search_iterations)
-      .def_readwrite("first_alpha_value", &LineSearchSettings::first_alpha_value)
-      .def_readwrite("second_alpha_value", &LineSearchSettings::second_alpha_value)
-      .def_readwrite("min_alpha", &LineSearchSettings::min_alpha)
-      .def_readwrite("max_alpha", &LineSearchSettings::max_alpha)
-      .def_readwrite("line_search_tolerance", &LineSearchSettings::line_search_tolerance);
-  py::class_<LineSearchStrategy, NewtonRaphsonStrategy, std::shared_ptr<LineSearchStrategy>>(m, "LineSearchStrategy")
+  py::class_<LineSearchSettings>(m, "LineSearchSettings", "Settings of the line search (Kratos' line_search keys).")
+      .def(py::init<>(), "Kratos' defaults.")
+      .def_readwrite("max_line_search_iterations", &LineSearchSettings::max_line_search_iterations,
+                     "Secant iterations after the two trial steps (5).")
+      .def_readwrite("first_alpha_value", &LineSearchSettings::first_alpha_value, "First trial step length (0.5).")
+      .def_readwrite("second_alpha_value", &LineSearchSettings::second_alpha_value, "Second trial step length (1).")
+      .def_readwrite("min_alpha", &LineSearchSettings::min_alpha, "Smallest step length (0.1).")
+      .def_readwrite("max_alpha", &LineSearchSettings::max_alpha, "Largest step length (2).")
+      .def_readwrite("line_search_tolerance", &LineSearchSettings::line_search_tolerance,
+                     "Stop when |phi(s)| <= tolerance |phi(0)| (0.5).");
+  py::class_<LineSearchStrategy, NewtonRaphsonStrategy, std::shared_ptr<LineSearchStrategy>>(
+      m, "LineSearchStrategy", "analysis_type line_search: Newton with the step length zeroing du . r(u + s du) "
+      "(Kratos LineSearchStrategy).")
       .def(py::init([](ModelPart& part, std::shared_ptr<Scheme> scheme, std::shared_ptr<ConvergenceCriteria> criteria,
                        std::shared_ptr<BuilderAndSolver> builder, LineSearchSettings settings, int max_iteration,
                        bool compute_reactions, bool reform_dofs_at_each_step, bool move_mesh, int echo_level) {
@@ -165,8 +208,9 @@ void AddSolvingToPython(py::module_& m) {
            py::arg("model_part"), py::arg("scheme"), py::arg("criteria"), py::arg("builder_and_solver"),
            py::arg("settings") = LineSearchSettings{}, py::arg("max_iteration") = 10, py::arg("compute_reactions") = true,
            py::arg("reform_dofs_at_each_step") = false, py::arg("move_mesh") = true, py::arg("echo_level") = 0,
-           py::keep_alive<1, 2>());
-  py::class_<ExplicitStrategy, SolvingStrategy, std::shared_ptr<ExplicitStrategy>>(m, "ExplicitStrategy")
+           py::keep_alive<1, 2>(), "Kratos' solver_settings of the same names (move_mesh: move_mesh_flag).");
+  py::class_<ExplicitStrategy, SolvingStrategy, std::shared_ptr<ExplicitStrategy>>(
+      m, "ExplicitStrategy", "Explicit dynamics: one residual assembly and a lumped-mass nodal update per step.")
       .def(py::init([](ModelPart& part, std::shared_ptr<ExplicitCentralDifferencesScheme> scheme, bool compute_reactions,
                        bool reform_dofs_at_each_step, bool move_mesh, int echo_level) {
              auto s = std::make_shared<ExplicitStrategy>(part, std::move(scheme), compute_reactions,
@@ -176,7 +220,7 @@ void AddSolvingToPython(py::module_& m) {
            }),
            py::arg("model_part"), py::arg("scheme"), py::arg("compute_reactions") = true,
            py::arg("reform_dofs_at_each_step") = false, py::arg("move_mesh") = true, py::arg("echo_level") = 0,
-           py::keep_alive<1, 2>());
+           py::keep_alive<1, 2>(), "Kratos' solver_settings of the same names (move_mesh: move_mesh_flag).");
 }
 
 }  // namespace mc::python

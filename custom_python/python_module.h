@@ -6,6 +6,9 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <functional>
+#include <memory>
+
 #include "core/utilities/error.h"
 #include "core/variables/data_value_container.h"
 #include "core/variables/variable.h"
@@ -23,6 +26,7 @@ void AddLinearSolversToPython(py::module_& m);
 void AddSolvingToPython(py::module_& m);
 void AddStructuralToPython(py::module_& m);
 void AddUtilitiesToPython(py::module_& m);
+void AddContactUtilitiesToPython(py::module_& m);
 void AddContactProcessesToPython(py::module_& m);
 void AddContactConditionsToPython(py::module_& m);
 void AddContactStrategiesToPython(py::module_& m);
@@ -36,6 +40,18 @@ template <class F>
 auto WithoutGil(F&& f) {
   py::gil_scoped_release release;
   return f();
+}
+
+/// A std::function calling a Python callable with the GIL held, its arguments passed by reference
+/// (an empty function for None): C++ hooks set from Python.
+template <class... Args>
+std::function<void(Args&...)> PythonCallback(py::object callable) {
+  if (callable.is_none()) return {};
+  auto shared = std::make_shared<py::object>(std::move(callable));
+  return [shared](Args&... args) {
+    py::gil_scoped_acquire gil;
+    (*shared)(py::cast(&args, py::return_value_policy::reference)...);
+  };
 }
 
 /// A Python value for a value of any variable type.

@@ -35,11 +35,19 @@ def get_include_dir() -> str:
     return _os.path.join(_os.path.dirname(__file__), "include")
 
 
-def run(project_parameters: str, **kwargs):
-    """Runs a Kratos-format case from its ProjectParameters.json; returns the finished analysis."""
+def run(project_parameters: str, *, progress: bool = True, stop_on_non_convergence: bool = True):
+    """Runs a Kratos-format case from its ProjectParameters.json; returns the finished
+    ``StructuralMechanicsAnalysis`` (its ``model``, ``solver`` and ``step_log``).
+
+    project_parameters: path of the ProjectParameters.json; input files not found relative to the
+      working directory are looked up next to it.
+    progress: show a progress bar (rich) and route the C++ log through it.
+    stop_on_non_convergence: raise ``ConvergenceFailure`` when a step does not converge (the last
+      converged step is written); False warns and goes on with the next step.
+    """
     from .analysis_stage import run_case
 
-    return run_case(project_parameters, **kwargs)
+    return run_case(project_parameters, progress=progress, stop_on_non_convergence=stop_on_non_convergence)
 
 
 def load_plugin(path: str) -> None:
