@@ -174,7 +174,8 @@ def derive(sym: Symbols, j: int, functional, multipliers: bool) -> Branch:
 
 def _cse_lines(exprs, indent: str, prefix: str = "t"):
     """CSE of exprs; returns (lines of temporaries, reduced expressions)."""
-    replacements, reduced = sympy.cse(exprs, symbols=sympy.numbered_symbols(prefix), optimizations="basic", order="canonical")
+    replacements, reduced = sympy.cse(exprs, symbols=sympy.numbered_symbols(prefix), optimizations="basic",
+                                      order="canonical")
     lines = [f"{indent}const double {cxx(s)} = {cxx(e)};" for s, e in replacements]
     return lines, reduced
 
@@ -227,7 +228,8 @@ def emit_lhs_branch(branch: Branch, j: int, indent: str):
 def used_names(lines) -> set:
     """The input names (C++ locals) that the emitted lines refer to."""
     text = "\n".join(lines)
-    names = {name for name in ("D", "M", "x1", "x2", "n1", "g", "lm", "eps", "df") if re.search(rf"(?<![A-Za-z0-9_]){name}\(", text)}
+    names = {name for name in ("D", "M", "x1", "x2", "n1", "g", "lm", "eps", "df")
+             if re.search(rf"(?<![A-Za-z0-9_]){name}\(", text)}
     if re.search(r"(?<![A-Za-z0-9_])k(?![A-Za-z0-9_(])", text):
         names.add("k")
     return names

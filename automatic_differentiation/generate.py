@@ -143,7 +143,8 @@ def header(modules) -> str:
         for case in codegen.CASES:
             data_type = f"FrictionlessMortarData<{case.dim}, {case.slave}, {case.master}>"
             out.append(f"void {f.FUNCTION}RHS(const {data_type}& data, Vector& rhs);")
-            out.append(f"void {f.FUNCTION}LHS(const {data_type}& data, Matrix& lhs, Matrix* normal_sensitivity = nullptr);")
+            out.append(f"void {f.FUNCTION}LHS(const {data_type}& data, Matrix& lhs, "
+                       "Matrix* normal_sensitivity = nullptr);")
         out.append("")
     out += ["}  // namespace mc::generated", ""]
     return "\n".join(out)

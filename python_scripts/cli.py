@@ -11,7 +11,8 @@ import sys
 
 
 def main(argv=None) -> int:
-    parser = argparse.ArgumentParser(prog="mortarcontact", description="Mortar contact mechanics (Kratos-format cases).")
+    parser = argparse.ArgumentParser(prog="mortarcontact",
+                                     description="Mortar contact mechanics (Kratos-format cases).")
     parser.add_argument("--version", action="store_true", help="print the version and exit")
     commands = parser.add_subparsers(dest="command")
     run = commands.add_parser("run", help="run a case from its ProjectParameters.json")

@@ -14,7 +14,7 @@ from . import _core
 class Process:
     """Does nothing at every hook; subclasses override the hooks they need."""
 
-    def __init__(self, model: "_core.Model", settings: "_core.Parameters | None" = None):
+    def __init__(self, model: _core.Model, settings: _core.Parameters | None = None):
         self.model = model
         self.settings = settings if settings is not None else _core.Parameters()
         defaults = self.GetDefaultParameters()
@@ -22,7 +22,7 @@ class Process:
             self.settings.ValidateAndAssignDefaults(defaults)
 
     @classmethod
-    def GetDefaultParameters(cls) -> "_core.Parameters | None":
+    def GetDefaultParameters(cls) -> _core.Parameters | None:
         return None
 
     def ExecuteInitialize(self) -> None: ...

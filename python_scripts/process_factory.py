@@ -70,7 +70,7 @@ def find_process_class(kratos_module: str | None, python_module: str) -> type[Pr
                            f"(known: {', '.join(known)})")
 
 
-def create_process(item: "_core.Parameters", model: "_core.Model") -> Process:
+def create_process(item: _core.Parameters, model: _core.Model) -> Process:
     """Builds the process described by one item of a process list."""
     keys = item.Keys()
     if any(k in keys for k in _REGISTRY_FORM_KEYS):
@@ -90,7 +90,7 @@ def create_process(item: "_core.Parameters", model: "_core.Model") -> Process:
     return cls(model, settings)
 
 
-def create_process_lists(block: "_core.Parameters", model: "_core.Model") -> list[Process]:
+def create_process_lists(block: _core.Parameters, model: _core.Model) -> list[Process]:
     """All processes of a ``processes`` (or ``output_processes``) object: lists in
     lexicographic order of their names, file order inside a list (spec 1.4); list names
     starting with ``_`` are commented out and skipped."""

@@ -108,9 +108,9 @@ def _extract(model, get_variable, dim: int, flag_active, all_nodes: bool = False
 
 def run_kratos(parameters_text: str, dim: int, record: dict, all_nodes: bool = False):
     import KratosMultiphysics as KM
-    import KratosMultiphysics.ContactStructuralMechanicsApplication  # noqa: F401 (registers the contact solver)
-    import KratosMultiphysics.LinearSolversApplication  # noqa: F401 (sparse_lu)
-    import KratosMultiphysics.ConstitutiveLawsApplication  # noqa: F401 (hyperelastic laws; not always pulled in)
+    import KratosMultiphysics.ContactStructuralMechanicsApplication  # registers the contact solver
+    import KratosMultiphysics.LinearSolversApplication  # registers sparse_lu
+    import KratosMultiphysics.ConstitutiveLawsApplication  # registers the hyperelastic laws (not always pulled in)
     from KratosMultiphysics.StructuralMechanicsApplication.structural_mechanics_analysis import (
         StructuralMechanicsAnalysis)
 
@@ -181,7 +181,7 @@ def run_mortarcontact(parameters_path: str, dim: int, record: dict, linear_solve
     analysis.RunSolutionLoop()
     analysis.Finalize()
     record["analysis_seconds"] = time.perf_counter() - started
-    for step, t, iterations, converged, seconds in analysis.step_log:
+    for _step, t, iterations, converged, seconds in analysis.step_log:
         record["steps"].append({"time": t, "iterations": iterations, "converged": converged, "seconds": seconds})
     record["phases"] = _mortarcontact_phases(analysis, record["analysis_seconds"])
     searches = [s for p in analysis.processes for s in getattr(p, "searches", [])]

@@ -46,9 +46,9 @@ class Code:
         self.name = name
         if name == "kratos":
             import KratosMultiphysics as KM
-            import KratosMultiphysics.ConstitutiveLawsApplication  # noqa: F401 (HyperElastic3DLaw)
-            import KratosMultiphysics.ContactStructuralMechanicsApplication  # noqa: F401
-            import KratosMultiphysics.LinearSolversApplication  # noqa: F401 (sparse_lu)
+            import KratosMultiphysics.ConstitutiveLawsApplication  # registers HyperElastic3DLaw
+            import KratosMultiphysics.ContactStructuralMechanicsApplication  # registers the contact classes
+            import KratosMultiphysics.LinearSolversApplication  # registers sparse_lu
             from KratosMultiphysics.StructuralMechanicsApplication.structural_mechanics_analysis import (
                 StructuralMechanicsAnalysis)
 

@@ -252,10 +252,12 @@ def report(path: str) -> None:
         k, m = s["kratos"], s["mortarcontact"]
         seconds = [f"{c['seconds']:.2f}" if c.get("seconds") is not None else "-" for c in (k, m)]
         symmetry = " / ".join(_difference(c.get("asymmetry")) for c in (k, m)) if "asymmetry" in k else "-"
-        lines.append(f"| {s['case']} | {k.get('nodes') or m.get('nodes') or '-'} | {short.get(k['status'], k['status'])} "
+        lines.append(f"| {s['case']} | {k.get('nodes') or m.get('nodes') or '-'} "
+                     f"| {short.get(k['status'], k['status'])} "
                      f"| {short.get(m['status'], m['status'])} | {_iterations(k['iterations'])} "
                      f"| {_iterations(m['iterations'])} | {_difference(s.get('displacement'))} "
-                     f"| {_difference(s.get('pressure'))} | {_difference(s.get('reaction'))} | {symmetry} | {seconds[0]} "
+                     f"| {_difference(s.get('pressure'))} | {_difference(s.get('reaction'))} | {symmetry} "
+                     f"| {seconds[0]} "
                      f"| {seconds[1]} | {'yes' if v['pass'] else 'no'} |")
     errors = [(s["case"], code, s[code]["error"]) for s in summaries for code in CODES
               if s[code]["status"] == "failed" and s[code]["error"]]

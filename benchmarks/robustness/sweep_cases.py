@@ -136,7 +136,8 @@ class Variant:
         assert self.upper in kinds and self.lower in kinds, self
         assert self.control in (("disp", "line", "point") if self.dim == 2 else ("disp", "surface", "point")), self
         assert self.control == "disp" or (self.gap != "gap" and not self.rotated), self  # rigid-body mode
-        assert self.mesher == "grid" or "quad" not in (self.upper, self.lower) and "hex" not in (self.upper, self.lower)
+        assert self.mesher == "grid" or ("quad" not in (self.upper, self.lower)
+                                         and "hex" not in (self.upper, self.lower))
         direction = self.overhang.partition("-")[2]
         assert (self.overhang == "none") or (direction in ("x", "xy")) == (self.dim == 3), self
 
@@ -165,7 +166,8 @@ def variants() -> list[Variant]:
         out += [r(b2, overhang=overhang), r(b2, shape="curved", overhang=overhang),
                 r(b2, upper="tri", lower="tri", overhang=overhang, ratio=1.0)]
         for direction in ("x", "xy"):
-            out += [r(b3, overhang=f"{overhang}-{direction}"), r(b3, shape="curved", overhang=f"{overhang}-{direction}")]
+            out += [r(b3, overhang=f"{overhang}-{direction}"),
+                    r(b3, shape="curved", overhang=f"{overhang}-{direction}")]
     out.append(r(b2, shape="curved", overhang="slave", upper="tri", lower="tri", ratio=1.0, steps=1))
     # gap, zero gap and penetration under displacement and force control
     for gap in ("gap", "zero", "pen"):

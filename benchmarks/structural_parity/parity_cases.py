@@ -269,7 +269,8 @@ def timoshenko_tip_deflection(case: Case) -> float:
     length, height, q, t = case.extra["length"], case.extra["height"], case.extra["load"], PLANE_THICKNESS
     force = q * height
     shear_modulus = YOUNG / (2.0 * (1.0 + POISSON))
-    return force * length**3 / (3.0 * YOUNG * t * height**3 / 12.0) + force * length / (5.0 / 6.0 * shear_modulus * t * height)
+    return (force * length**3 / (3.0 * YOUNG * t * height**3 / 12.0)
+            + force * length / (5.0 / 6.0 * shear_modulus * t * height))
 
 
 def reference_volume(case: Case) -> float:
@@ -319,7 +320,8 @@ def build(case: Case) -> dict:
     if case.state == "axisym":
         cells, size, origin = (4, 4), (1.0, 1.0), (1.0, 0.0)
     elif dim == 2:
-        cells, size, origin = case.cells or (8, 2), (case.extra.get("length", 4.0), case.extra.get("height", 1.0)), (0.0, 0.0)
+        cells, size = case.cells or (8, 2), (case.extra.get("length", 4.0), case.extra.get("height", 1.0))
+        origin = (0.0, 0.0)
     else:
         cells, size, origin = (3, 2, 2), (3.0, 1.0, 1.0), (0.0, 0.0, 0.0)
     coords, connectivity = block_mesh(geometry, cells, size, origin)
@@ -334,7 +336,7 @@ def build(case: Case) -> dict:
         parts["support"] = {"nodes": bottom}
     else:
         parts["support"] = {"nodes": [k + 1 for k, x in enumerate(coords) if abs(x[0] - origin[0]) < 1e-12]}
-    stem, variable, where = LOADS[case.load]
+    stem, _variable, where = LOADS[case.load]
     if where == "tip_node":
         node = max(range(len(coords)), key=lambda k: tuple(coords[k])) + 1  # the far top corner
         conditions[f"{stem}{dim}D1N"] = [[node]]
@@ -362,7 +364,7 @@ def build(case: Case) -> dict:
     elif where == "tip_edge":
         edge = [k + 1 for k, x in enumerate(coords) if abs(x[0] - far) < 1e-12 and abs(x[2] - size[2]) < 1e-12]
         edge.sort(key=lambda n: coords[n - 1][1])
-        lines = [[a, b] for a, b in zip(edge[:-1], edge[1:])]
+        lines = [[a, b] for a, b in itertools.pairwise(edge)]
         conditions[f"{stem}3D2N"] = lines
         parts["load"] = {"nodes": edge, "conditions": range(1, len(lines) + 1)}
     return {"coords": coords, "elements": {case.element: connectivity}, "conditions": conditions, "parts": parts}

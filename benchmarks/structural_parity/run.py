@@ -203,7 +203,8 @@ def weight_check(rows: list[dict], cases: list[parity_cases.Case]) -> list[str]:
         if case.load != "body" or case.family != "loads":
             continue
         axis = case.dim - 1  # the supported direction
-        weight = -parity_cases.DENSITY * parity_cases.reference_volume(case) * parity_cases.body_acceleration(case)[axis]
+        volume = parity_cases.reference_volume(case)
+        weight = -parity_cases.DENSITY * volume * parity_cases.body_acceleration(case)[axis]
         cells = []
         for record in (row["ours"], row["kratos"]):
             if record.get("status") != "ok":
@@ -290,7 +291,7 @@ mortarcontact reports them as unknown names); HyperElasticAxisym2DLaw and the me
 (mortarcontact only); move_mesh_flag false with configuration-dependent loads (Kratos then
 integrates LINE_LOAD, SURFACE_LOAD and pressures over the reference configuration, mortarcontact
 always over the current one).
-"""
+"""  # noqa: E501 (markdown table rows, one line each)
 
 
 def write_results(rows: list[dict], cases: list[parity_cases.Case], path: str, kratos_python: str) -> None:

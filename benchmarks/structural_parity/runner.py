@@ -25,8 +25,8 @@ import traceback
 
 def _kratos():
     import KratosMultiphysics as KM
-    import KratosMultiphysics.ConstitutiveLawsApplication  # noqa: F401 (HyperElastic3DLaw, KirchhoffSaintVenant3DLaw)
-    import KratosMultiphysics.LinearSolversApplication  # noqa: F401 (sparse_lu)
+    import KratosMultiphysics.ConstitutiveLawsApplication  # registers HyperElastic3DLaw, KirchhoffSaintVenant3DLaw
+    import KratosMultiphysics.LinearSolversApplication  # registers sparse_lu
     from KratosMultiphysics.StructuralMechanicsApplication.structural_mechanics_analysis import (
         StructuralMechanicsAnalysis)
 

@@ -10,10 +10,10 @@ import sys
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import meshio  # noqa: E402
-import numpy as np  # noqa: E402
-from matplotlib.collections import PolyCollection  # noqa: E402
+import matplotlib.pyplot as plt
+import meshio
+import numpy as np
+from matplotlib.collections import PolyCollection
 
 HOLE_RADIUS, APPLIED_STRESS = 1.0, 100.0
 
@@ -52,7 +52,7 @@ def main() -> None:
     ax_line.plot(r[order], sxx[near_axis][order], "o", ms=4, label="mortarcontact (element centers)")
     ax_line.set_xlabel("distance from the hole centre along x = 0")
     ax_line.set_ylabel(r"$\sigma_{xx}$")
-    ax_line.set_title("Stress concentration: peak / applied = %.2f (Kirsch: 3)" % (sxx[near_axis].max() / APPLIED_STRESS))
+    ax_line.set_title(f"Stress concentration: peak / applied = {sxx[near_axis].max() / APPLIED_STRESS:.2f} (Kirsch: 3)")
     ax_line.grid(alpha=0.3)
     ax_line.legend()
     fig.tight_layout()

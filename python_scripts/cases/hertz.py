@@ -195,7 +195,7 @@ def mesh_2d(scale: float):
         left, bottom, right = geo.addPoint(-r, r, 0), geo.addPoint(0, 0, 0), geo.addPoint(r, r, 0)
         centre = geo.addPoint(0, r, 0)
         arcs = [geo.addCircleArc(left, centre, bottom), geo.addCircleArc(bottom, centre, right)]
-        loop = geo.addCurveLoop(arcs + [geo.addLine(right, left)])
+        loop = geo.addCurveLoop([*arcs, geo.addLine(right, left)])
         geo.addPlaneSurface([loop])
         geo.synchronize()
 
@@ -316,13 +316,14 @@ def _mesh_grid_body(gmsh, build, size) -> tuple[np.ndarray, np.ndarray]:
                                for tet in KUHN_TETRAHEDRA])
             faces = np.sort(np.concatenate([np.delete(cells, m, axis=1) for m in range(4)]), axis=1)
             if target <= {tuple(f) for f in faces}:
-                return _compact(coords, np.vstack(rest + [cells]))
+                return _compact(coords, np.vstack([*rest, cells]))
         last = arrangement
     raise RuntimeError(f"no face arrangement (last tried {last}) matches a Kuhn split of the structured zone")
 
 
 _ARRANGEMENTS = [("Left", "Right", "Right"), ("Left", "Left", "Right")] + [
-    a for a in itertools.product(("Left", "Right"), repeat=3) if a not in (("Left", "Right", "Right"), ("Left", "Left", "Right"))]
+    a for a in itertools.product(("Left", "Right"), repeat=3)
+    if a not in (("Left", "Right", "Right"), ("Left", "Left", "Right"))]
 
 
 def _compact(coords: np.ndarray, cells: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

@@ -26,7 +26,7 @@ IGNORED_KEYS = {"help": "", "mesh_id": 0, "computing_model_part_name": ""}
 
 def slots_of(value) -> dict:
     """Ten empty slots."""
-    return {slot: value for slot in SLOTS}
+    return dict.fromkeys(SLOTS, value)
 
 
 def pair_defaults(prefix: str = "contact") -> dict:
@@ -86,11 +86,11 @@ def alm_defaults() -> dict:
     }
 
 
-def to_parameters(defaults: dict) -> "_core.Parameters":
+def to_parameters(defaults: dict) -> _core.Parameters:
     return _core.Parameters(json.dumps(defaults))
 
 
-def normalise_pair_layouts(settings: "_core.Parameters", keys) -> None:
+def normalise_pair_layouts(settings: _core.Parameters, keys) -> None:
     """Accepts every layout of the slot keys found in CSMA inputs, in place: the slot
     dictionary ``{"0": [...], ...}``, a plain list of part names or a single name (slot 0), and
     for numeric keys a single number (slot 0)."""
@@ -118,7 +118,7 @@ def normalise_pair_layouts(settings: "_core.Parameters", keys) -> None:
         settings.AddValue(key, replacement)
 
 
-def interval_of(settings: "_core.Parameters") -> tuple[float, float]:
+def interval_of(settings: _core.Parameters) -> tuple[float, float]:
     """``[start, end]`` with ``"End"`` (any case) meaning 1e30."""
     interval = settings["interval"]
     if interval.size() != 2:

@@ -12,7 +12,7 @@ class ExplicitPenaltyContactProcess(NotImplementedContactProcess):
     feature = "explicit penalty contact (solver_type explicit)"
 
     @classmethod
-    def GetDefaultParameters(cls) -> "_core.Parameters":
+    def GetDefaultParameters(cls) -> _core.Parameters:
         defaults = _settings.alm_defaults()
         defaults["tangent_factor"] = 1.0e-4
         defaults["search_parameters"]["type_search"] = "octree_with_obb"
@@ -31,7 +31,7 @@ class MPCContactProcess(NotImplementedContactProcess):
     feature = "multipoint-constraint (MPC) contact"
 
     @classmethod
-    def GetDefaultParameters(cls) -> "_core.Parameters":
+    def GetDefaultParameters(cls) -> _core.Parameters:
         common = _settings.common_defaults()
         common.update({
             "contact_type": "Frictionless",
@@ -64,7 +64,7 @@ class MeshTyingProcess(NotImplementedContactProcess):
         return ("mesh_tying_model_part", "assume_master_slave", "mesh_tying_property_ids")
 
     @classmethod
-    def GetDefaultParameters(cls) -> "_core.Parameters":
+    def GetDefaultParameters(cls) -> _core.Parameters:
         search = _settings.search_defaults()
         search["database_step_update"] = 999999999
         del search["octree_search_parameters"]["build_from_bounding_box"]

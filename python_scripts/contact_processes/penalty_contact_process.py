@@ -23,5 +23,5 @@ class PenaltyContactProcess(ALMContactProcess):
     penalty_floor = 1.0e16
 
     @classmethod
-    def GetDefaultParameters(cls) -> "_core.Parameters":
+    def GetDefaultParameters(cls) -> _core.Parameters:
         return _settings.to_parameters(penalty_defaults())

@@ -32,7 +32,7 @@ class SearchBaseProcess(Process):
     python_module = ""
 
     @classmethod
-    def GetDefaultParameters(cls) -> "_core.Parameters":
+    def GetDefaultParameters(cls) -> _core.Parameters:
         return _settings.to_parameters(_settings.alm_defaults())
 
     def __init__(self, model, settings=None):

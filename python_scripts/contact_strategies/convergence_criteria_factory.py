@@ -31,7 +31,7 @@ CRITERIA_SETTINGS = """{
 
 def _core_module(core):
     if core is None:
-        from .. import _core as core  # noqa: PLC0415 (the extension is only needed when building)
+        from .. import _core as core  # imported here: the extension is only needed when building
     return core
 
 

@@ -37,8 +37,8 @@ def create_contact_strategy(model_part, solver_settings, scheme, linear_solver, 
     s = solver_settings
     contact = s["contact_settings"]
     builder = create_builder_and_solver(s, linear_solver, core)
-    common = dict(compute_reactions=_value(s, "compute_reactions", "Bool"), reform_dofs_at_each_step=True,
-                  move_mesh=_value(s, "move_mesh_flag", "Bool"), echo_level=echo_level)
+    common = {"compute_reactions": _value(s, "compute_reactions", "Bool"), "reform_dofs_at_each_step": True,
+              "move_mesh": _value(s, "move_mesh_flag", "Bool"), "echo_level": echo_level}
     model_part.Set(core.INTERACTION, not _value(contact, "simplified_semi_smooth_newton", "Bool"))
     if _value(s, "analysis_type", "String") == "linear":
         return core.LinearStrategy(model_part, scheme, builder, **common)

@@ -41,7 +41,7 @@ VTK_CELL_TYPES = {
 # Our hexahedra list the vertical mid-edges before the top ones and the face centres as bottom,
 # front, right, back, left, top; VTK lists top edges first and faces as left, right, front, back,
 # bottom, top. Column k of the VTK cell takes our node _VTK_ORDER[k].
-_HEX27_TO_VTK = list(range(12)) + [16, 17, 18, 19, 12, 13, 14, 15, 24, 22, 21, 23, 20, 25, 26]
+_HEX27_TO_VTK = [*range(12), 16, 17, 18, 19, 12, 13, 14, 15, 24, 22, 21, 23, 20, 25, 26]
 _VTK_ORDER = {"hexahedron20": _HEX27_TO_VTK[:20], "hexahedron27": _HEX27_TO_VTK}
 
 
@@ -342,9 +342,11 @@ class GidOutputProcess(VtkOutputProcess):
         settings.CheckKeys(["help", "model_part_name", "output_name", "postprocess_parameters"])
         output_name = settings["output_name"].GetString() if settings.Has("output_name") else "gid_output"
         results = _core.Parameters()
-        if settings.Has("postprocess_parameters") and settings["postprocess_parameters"].Has("result_file_configuration"):
+        if (settings.Has("postprocess_parameters")
+                and settings["postprocess_parameters"].Has("result_file_configuration")):
             results = settings["postprocess_parameters"]["result_file_configuration"]
-        vtk: dict = {"model_part_name": settings["model_part_name"].GetString() if settings.Has("model_part_name") else "",
+        model_part_name = settings["model_part_name"].GetString() if settings.Has("model_part_name") else ""
+        vtk: dict = {"model_part_name": model_part_name,
                      "output_path": f"{output_name}_vtk"}
         translation = {"nodal_results": "nodal_solution_step_data_variables",
                        "nodal_nonhistorical_results": "nodal_data_value_variables",
@@ -353,7 +355,8 @@ class GidOutputProcess(VtkOutputProcess):
             if results.Has(gid_key):
                 vtk[vtk_key] = results[gid_key].GetStringArray()
         if results.Has("output_control_type"):
-            vtk["output_control_type"] = "time" if results["output_control_type"].GetString().startswith("time") else "step"
+            control = results["output_control_type"].GetString()
+            vtk["output_control_type"] = "time" if control.startswith("time") else "step"
         for key in ("output_interval", "output_frequency"):
             if results.Has(key):
                 vtk["output_interval"] = results[key].GetDouble()

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import json
 import os
+from typing import ClassVar
 
 import numpy as np
 
@@ -57,8 +58,8 @@ class CsvTable:
     """A time table read from a CSV file (``{"name": "csv_table", "filename": ...}``), linearly
     interpolated in ``t`` and held constant outside its range."""
 
-    DEFAULTS = {"name": "csv_table", "filename": None, "delimiter": ",", "skiprows": 0,
-                "first_column_id": 0, "second_column_id": 1, "table_id": -1, "na_replace": 0.0}
+    DEFAULTS: ClassVar[dict] = {"name": "csv_table", "filename": None, "delimiter": ",", "skiprows": 0,
+                                "first_column_id": 0, "second_column_id": 1, "table_id": -1, "na_replace": 0.0}
 
     def __init__(self, spec: dict, where: str):
         unknown = set(spec) - set(self.DEFAULTS)
@@ -101,7 +102,7 @@ class ScalarValue:
         else:
             raise _core.InputError(f"{where}: expected a number or an expression string, got {json.dumps(value)}")
 
-    def scaled(self, factor: float, where: str) -> "ScalarValue":
+    def scaled(self, factor: float, where: str) -> ScalarValue:
         """This value times ``factor`` (used to split a modulus along a direction)."""
         if self.expression is not None:
             return ScalarValue(f"({factor!r})*({self.expression.Text()})", where)

@@ -35,7 +35,7 @@ def node_mask(part, flag_name: str) -> np.ndarray:
 def node_keys(part, mask: np.ndarray, use_coordinates: bool) -> list[str]:
     if use_coordinates:
         coordinates = part.NodeCoordinates(True)[mask]
-        return ["NODE_X_%.6f_Y_%.6f_Z_%.6f" % tuple(x) for x in coordinates]
+        return [f"NODE_X_{x:.6f}_Y_{y:.6f}_Z_{z:.6f}" for x, y, z in coordinates]
     return [f"NODE_{i}" for i in part.NodeIds()[mask]]
 
 

@@ -23,7 +23,8 @@ def create_solver(model: _core.Model, settings: _core.Parameters, case_dir: str 
                                f"{nearest(solver_type, ['Static', 'Dynamic'])}; valid: \"Static\", \"Dynamic\"")
     method = settings["time_integration_method"].GetString()
     if kind == "dynamic" and method not in ("implicit", "explicit"):
-        raise _core.InputError(f"{where}.time_integration_method: expected \"implicit\" or \"explicit\", got \"{method}\"")
+        raise _core.InputError(f"{where}.time_integration_method: expected \"implicit\" or \"explicit\", "
+                               f"got \"{method}\"")
     contact = settings["contact_settings"]
     solver_class = MechanicalSolver
     if contact.size() > 0 and contact["mortar_type"].GetString():

@@ -146,7 +146,8 @@ class MechanicalSolver:
         for candidate in candidates:
             if os.path.isfile(candidate):
                 return candidate
-        raise _core.InputError(f"{key}: file not found; looked for " + " and ".join(os.path.abspath(c) for c in candidates))
+        raise _core.InputError(f"{key}: file not found; looked for "
+                               + " and ".join(os.path.abspath(c) for c in candidates))
 
     def AddDofs(self) -> None:
         part = self.main_model_part
@@ -183,9 +184,9 @@ class MechanicalSolver:
         kind = s["builder_and_solver_settings"]["type"].GetString()
         builder = (_core.BlockBuilderAndSolver(linear_solver) if kind == "block"
                    else _core.EliminationBuilderAndSolver(linear_solver))
-        common = dict(compute_reactions=s["compute_reactions"].GetBool(),
-                      reform_dofs_at_each_step=s["reform_dofs_at_each_step"].GetBool(),
-                      move_mesh=s["move_mesh_flag"].GetBool(), echo_level=self.echo_level)
+        common = {"compute_reactions": s["compute_reactions"].GetBool(),
+                  "reform_dofs_at_each_step": s["reform_dofs_at_each_step"].GetBool(),
+                  "move_mesh": s["move_mesh_flag"].GetBool(), "echo_level": self.echo_level}
         if s["analysis_type"].GetString() == "linear":
             return _core.LinearStrategy(part, scheme, builder, **common)
         criteria = self._create_criteria()
@@ -216,7 +217,7 @@ class MechanicalSolver:
         """Line-search keys of solving_strategy_settings.advanced_settings (Kratos' names)."""
         advanced = self.settings["solving_strategy_settings"]["advanced_settings"]
         settings = _core.LineSearchSettings()
-        for key in advanced.keys():
+        for key in advanced.keys():  # noqa: SIM118 (a Parameters, not a dict: keys() insists on an object)
             if not hasattr(settings, key):
                 valid = [k for k in dir(settings) if not k.startswith("_")]
                 raise _core.InputError(f"{advanced.Where()}: unknown key '{key}'{nearest(key, valid)}")
@@ -251,7 +252,7 @@ class MechanicalSolver:
             return float(np.interp(time, table[:, 0], table[:, 1]))
         if stepping.Has("time_step_intervals"):
             intervals = stepping["time_step_intervals"]
-            for key in intervals.keys():
+            for key in intervals.keys():  # noqa: SIM118 (a Parameters, not a dict: keys() insists on an object)
                 item = intervals[key]
                 start = item["interval"][0].GetDouble()
                 end_item = item["interval"][1]
@@ -264,7 +265,8 @@ class MechanicalSolver:
     def AdvanceInTime(self, time: float) -> float:
         dt = self.ComputeDeltaTime(time)
         if not dt > 0.0:
-            raise _core.InputError(f"{self.settings['time_stepping'].Where()}: the time step must be positive, got {dt}")
+            raise _core.InputError(f"{self.settings['time_stepping'].Where()}: the time step must be positive, "
+                                   f"got {dt}")
         new_time = time + dt
         self.main_model_part.CloneTimeStep(new_time)
         return new_time

@@ -146,7 +146,8 @@ def validate_solver_settings(settings: _core.Parameters) -> None:
     if not settings["model_part_name"].GetString():
         raise _core.InputError(f"{settings.Where()}.model_part_name: must name the model part (e.g. \"Structure\")")
     if settings["domain_size"].GetInt() not in (2, 3):
-        raise _core.InputError(f"{settings.Where()}.domain_size: must be 2 or 3, got {settings['domain_size'].GetInt()}")
+        raise _core.InputError(f"{settings.Where()}.domain_size: must be 2 or 3, "
+                               f"got {settings['domain_size'].GetInt()}")
     for key in ("volumetric_strain_dofs", "strain_dofs", "pressure_dofs", "displacement_control",
                 "use_orthogonal_subscales"):
         if settings[key].GetBool():

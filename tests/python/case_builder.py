@@ -35,7 +35,8 @@ def structured_quads(nx: int, ny: int, lx: float, ly: float, order: int = 1):
 
 def structured_hexes(nx: int, ny: int, nz: int, lx: float, ly: float, lz: float):
     ids = np.arange(1, (nx + 1) * (ny + 1) * (nz + 1) + 1).reshape(nx + 1, ny + 1, nz + 1)
-    coords = [(lx * i / nx, ly * j / ny, lz * k / nz) for i in range(nx + 1) for j in range(ny + 1) for k in range(nz + 1)]
+    coords = [(lx * i / nx, ly * j / ny, lz * k / nz)
+              for i in range(nx + 1) for j in range(ny + 1) for k in range(nz + 1)]
     cells = []
     for i in range(nx):
         for j in range(ny):
@@ -80,7 +81,8 @@ def materials(part: str, law: str, young: float, poisson: float, **extra) -> dic
                             "Material": {"constitutive_law": {"name": law}, "Variables": variables, "Tables": {}}}]}
 
 
-def fix_process(part: str, value, constrained=(True, True, True), variable="DISPLACEMENT", interval=(0.0, "End")) -> dict:
+def fix_process(part: str, value, constrained=(True, True, True), variable="DISPLACEMENT",
+                interval=(0.0, "End")) -> dict:
     return {"python_module": "assign_vector_variable_process", "kratos_module": "KratosMultiphysics",
             "Parameters": {"model_part_name": part, "variable_name": variable, "value": list(value),
                            "constrained": list(constrained), "interval": list(interval)}}

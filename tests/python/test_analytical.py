@@ -44,7 +44,8 @@ def test_cantilever_tip_deflection_matches_timoshenko(tmp_path):
                 "clamp": {"nodes": clamped},
                 "tip": {"nodes": sorted({n for c in tip for n in c}), "conditions": range(1, len(tip) + 1)}})
     params = project_parameters("beam", 2, constraints=[fix_process("Structure.clamp", [0.0, 0.0, 0.0])],
-                                loads=[condition_load_process("Structure.tip", "LINE_LOAD", [0.0, -load / height, 0.0])])
+                                loads=[condition_load_process("Structure.tip", "LINE_LOAD",
+                                                              [0.0, -load / height, 0.0])])
     path = write_case(tmp_path, "beam", params,
                       materials("Structure.Parts_beam", "LinearElasticPlaneStress2DLaw", young, poisson, THICKNESS=1.0))
     analysis = mc.run(str(path), progress=False)

@@ -29,7 +29,7 @@ def test_parameters_files_validate(path, monkeypatch):
     if implemented:
         create_solver(mc.Model(), solver_settings)
     else:
-        with pytest.raises(mc.NotImplementedFeatureError, match="contact|mortar_type"):
+        with pytest.raises(mc.NotImplementedFeatureError, match=r"contact|mortar_type"):
             create_solver(mc.Model(), solver_settings)
         # The settings themselves are valid: validation alone succeeds.
         validate_solver_settings(read_project_parameters(path)["solver_settings"])
@@ -48,7 +48,8 @@ def test_mdpa_files_load(path):
     with open(path, newline="") as f:
         text = f.read()
     node_lines = text.split("Begin Nodes")[1].split("End Nodes")[0].strip().splitlines()
-    assert part.NumberOfNodes() == len([line for line in node_lines if line.strip() and not line.strip().startswith("//")])
+    data_lines = [line for line in node_lines if line.strip() and not line.strip().startswith("//")]
+    assert part.NumberOfNodes() == len(data_lines)
 
 
 def test_materials_files_apply(csma_cases, monkeypatch):

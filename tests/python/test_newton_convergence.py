@@ -30,7 +30,7 @@ class HistoryAnalysis(StructuralMechanicsAnalysis):
 
     def FinalizeSolutionStep(self):
         super().FinalizeSolutionStep()
-        self.histories.append([(r.increment_norm, dict((c.name, c.value) for c in r.criteria))
+        self.histories.append([(r.increment_norm, {c.name: c.value for c in r.criteria})
                                for r in self.solver.LastIterationHistory()])
 
 

@@ -188,12 +188,12 @@ def test_vector_by_direction_to_condition_and_scalar_to_conditions():
 # --- model-part names ----------------------------------------------------------------------------
 
 def test_model_part_name_resolution():
-    model, root = square_grid()
+    model, _ = square_grid()
     assert resolve_model_part(model, "Structure").FullName() == "Structure"
     assert resolve_model_part(model, "Structure.Parts.inner").FullName() == "Structure.Parts.inner"
     assert resolve_model_part(model, "inner").FullName() == "Structure.Parts.inner"
     assert resolve_model_part(model, "Structure.computing_domain").FullName() == "Structure"
-    with pytest.raises(mc.InputError, match="'innr'.*Structure.Parts.inner|'innr'.*'inner'"):
+    with pytest.raises(mc.InputError, match=r"'innr'.*Structure\.Parts\.inner|'innr'.*'inner'"):
         resolve_model_part(model, "innr")
 
 
@@ -253,11 +253,13 @@ def test_contact_processes_are_registered_under_both_module_spellings(module):
 
 def test_process_lists_run_in_lexicographic_order():
     model, root = square_grid()
-    item = lambda value: {"python_module": "assign_scalar_variable_process", "kratos_module": "KratosMultiphysics",
-                          "Parameters": {"model_part_name": "Structure", "variable_name": "DISPLACEMENT_X",
-                                         "value": value}}
-    block = parameters(json.dumps({"loads_process_list": [item(3.0)], "constraints_process_list": [item(1.0), item(2.0)],
-                                   "_disabled": [item(9.0)]}))
+
+    def item(value):
+        return {"python_module": "assign_scalar_variable_process", "kratos_module": "KratosMultiphysics",
+                "Parameters": {"model_part_name": "Structure", "variable_name": "DISPLACEMENT_X", "value": value}}
+
+    block = parameters(json.dumps({"loads_process_list": [item(3.0)],
+                                   "constraints_process_list": [item(1.0), item(2.0)], "_disabled": [item(9.0)]}))
     processes = create_process_lists(block, model)
     assert len(processes) == 3
     for process in processes:

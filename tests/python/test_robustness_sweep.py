@@ -130,7 +130,7 @@ def _pressures(part, formulation: str) -> dict[str, float]:
     return out
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _run(name: str) -> dict:
     """Runs a case once (both tests read it): iterations and convergence per step, displacements
     and pressures."""

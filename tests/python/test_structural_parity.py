@@ -50,8 +50,8 @@ def run_case(name: str):
 
 def test_every_kind_of_case_is_stored():
     names = [p.values[0] for p in _cases()]
-    for kind in ("loads_ps_", "loads_pe_", "check_ax_", "loads_3d_", "matrix_", "dynamic_pe_bossak", "dynamic_pe_newmark",
-                 "cantilever_plane_stress"):
+    for kind in ("loads_ps_", "loads_pe_", "check_ax_", "loads_3d_", "matrix_", "dynamic_pe_bossak",
+                 "dynamic_pe_newmark", "cantilever_plane_stress"):
         assert any(n.startswith(kind) for n in names), kind
 
 
