@@ -22,7 +22,7 @@ from ..process import OutputProcess
 from ..processes.bulk_data import (UnsetVariableWarning, entity_connectivity, integration_point_means, nodal_flags,
                                nodal_values, variable_by_name)
 from ..processes.model_part_resolution import resolve_model_part
-from ..utilities import write_text_atomically
+from ..utilities import publish_file, write_text_atomically
 
 LOG = logging.getLogger("mortarcontact")
 
@@ -112,7 +112,7 @@ class _PartWriter:
         os.close(handle)
         try:
             meshio.vtu.write(temporary, mesh, binary=binary)
-            os.replace(temporary, os.path.join(self.folder, name))
+            publish_file(temporary, os.path.join(self.folder, name))
         except BaseException:
             if os.path.exists(temporary):
                 os.remove(temporary)
