@@ -21,7 +21,7 @@ CELL_DIMENSION = {"vertex": 0, "line": 1, "triangle": 2, "quad": 2, "tetra": 3, 
                   "hexahedron20": 3, "pyramid": 3}
 
 
-def write_msh(path, points, groups) -> None:
+def write_msh(path, points, groups, file_format="gmsh") -> None:
     """A gmsh msh 4.1 file of ``groups`` [(name, meshio cell type, 0-based connectivity)]: one
     physical group and one geometric entity per group (tag i + 1). meshio lists the entities of the
     nodes' "gmsh:dim_tags", so each entity first gets a node of its own, then the other nodes go to
@@ -42,7 +42,7 @@ def write_msh(path, points, groups) -> None:
                        cell_data={"gmsh:physical": tags, "gmsh:geometrical": tags},
                        field_data={name: np.array([i + 1, CELL_DIMENSION[cell_type]])
                                    for i, (name, cell_type, _) in enumerate(groups)})
-    meshio.write(path, mesh, file_format="gmsh")
+    meshio.write(path, mesh, file_format=file_format)
 
 
 def describe(part, entities=True) -> dict:
@@ -108,8 +108,9 @@ def hand_built(model):
     return part
 
 
-def test_msh_and_mdpa_give_the_same_model_part(tmp_path):
-    write_msh(tmp_path / "blocks.msh", POINTS, GROUPS)
+@pytest.mark.parametrize("file_format", ["gmsh", "gmsh22"])  # msh 4.1 (cell_sets), msh 2.2 (physical tags)
+def test_msh_and_mdpa_give_the_same_model_part(tmp_path, file_format):
+    write_msh(tmp_path / "blocks.msh", POINTS, GROUPS, file_format)
     from_msh = read_into_model(tmp_path / "blocks.msh")
     built = hand_built(mc.Model())
     mc.WriteModelPart(built, str(tmp_path / "blocks.mdpa"))
@@ -214,3 +215,126 @@ def test_unreadable_file_and_missing_meshio(tmp_path, monkeypatch):
     with pytest.raises(mc.InputError, match="\"meshio\" needs the Python package meshio, a dependency of "
                                             "mortarcontact that is not installed"):
         read_mesh(str(tmp_path / "broken.msh"), "meshio", "solver_settings.model_import_settings")
+
+
+# --- cases -------------------------------------------------------------------------------------
+GEOMETRY_CELLS = {"Triangle2D3": "triangle", "Quadrilateral2D4": "quad", "Line2D2": "line", "Tetrahedra3D4": "tetra",
+                  "Hexahedra3D8": "hexahedron", "Triangle3D3": "triangle", "Quadrilateral3D4": "quad"}
+
+
+def msh_of_mdpa(mdpa: str, msh: str) -> dict:
+    """Writes the mesh of an mdpa (consecutive node ids, flat sub model parts) as msh 4.1; a part
+    with elements is a group of its cells, a part of nodes only a group of vertex cells. Returns
+    the model_import_settings that read it back as the same model."""
+    root = mc.Model().CreateModelPart("Structure")
+    mc.ReadModelPart(root, mdpa)
+    assert root.NodeIds().tolist() == list(range(1, root.NumberOfNodes() + 1))
+    groups, settings = [], {"input_type": "gmsh", "input_filename": os.path.basename(msh), "element_names": {},
+                            "properties_ids": {}}
+    # element groups in the order of their element ids, so that the msh numbers them as the mdpa
+    for sub in sorted(root.SubModelParts, key=lambda sub: min((e.Id for e in sub.Elements), default=0)):
+        assert not sub.SubModelPartNames() and sub.NumberOfConditions() == 0
+        if sub.NumberOfElements() == 0:
+            groups.append((sub.Name, "vertex", sub.NodeIds().reshape(-1, 1) - 1))
+            continue
+        (geometry, (ids, connectivity)), = sub.EntityConnectivity().items()
+        first = sub.GetElement(int(ids[0]))
+        groups.append((sub.Name, GEOMETRY_CELLS[geometry], connectivity - 1))
+        settings["element_names"][sub.Name] = first.Info()
+        settings["properties_ids"][sub.Name] = first.GetProperties().Id
+    write_msh(msh, root.NodeCoordinates(True), groups)
+    return settings
+
+
+@pytest.fixture(scope="module")
+def hertz_case(tmp_path_factory):
+    """The smallest Hertz case (mdpa) and the same case read from msh 4.1, side by side."""
+    from mortarcontact.cases import hertz
+
+    folder = hertz.write_case("hertz2d", "2k", str(tmp_path_factory.mktemp("hertz_msh")))
+    name = os.path.basename(folder)
+    with open(os.path.join(folder, "ProjectParameters.json")) as f:
+        params = json.load(f)
+    params["solver_settings"]["model_import_settings"] = msh_of_mdpa(os.path.join(folder, f"{name}.mdpa"),
+                                                                     os.path.join(folder, f"{name}.msh"))
+    with open(os.path.join(folder, "ProjectParameters_msh.json"), "w") as f:
+        json.dump(params, f, indent=2)
+    return folder
+
+
+def test_contact_case_from_msh_matches_mdpa(hertz_case):
+    """The Hertz contact case gives the same displacements and contact pressure from msh as from mdpa."""
+    results = []
+    for parameters_file in ("ProjectParameters.json", "ProjectParameters_msh.json"):
+        analysis = mc.run(os.path.join(hertz_case, parameters_file), progress=False)
+        root = analysis.model["Structure"]
+        results.append((describe(root), root.GetNodalValues(mc.DISPLACEMENT),
+                        root.GetNodalValues(mc.LAGRANGE_MULTIPLIER_CONTACT_PRESSURE)))
+    (mdpa_model, mdpa_u, mdpa_p), (msh_model, msh_u, msh_p) = results
+    assert msh_model == mdpa_model  # nodes, elements, the contact conditions and parts the processes made
+    assert np.abs(mdpa_u).max() > 1e-3 and np.abs(mdpa_p).max() > 0.0  # the case does load the contact
+    np.testing.assert_allclose(msh_u, mdpa_u, rtol=0.0, atol=1e-12)
+    np.testing.assert_allclose(msh_p, mdpa_p, rtol=0.0, atol=1e-12 * np.abs(mdpa_p).max())
+
+
+# --- command line ------------------------------------------------------------------------------
+def blocks_case(folder, edit=None) -> str:
+    """The two blocks, bottom fixed, top pulled down by 0.01, from blocks.msh; VTU output."""
+    from case_builder import fix_process, materials, project_parameters, write_case
+
+    write_msh(os.path.join(folder, "blocks.msh"), POINTS, GROUPS)
+    params = project_parameters("blocks", 2, constraints=[
+        fix_process("Structure.DISPLACEMENT_bottom", [0.0, 0.0, 0.0]),
+        fix_process("Structure.Load_top", [None, -0.01, None], (False, True, False))])
+    params["solver_settings"]["model_import_settings"] = {
+        "input_type": "gmsh", "input_filename": "blocks.msh",
+        "element_names": {"Parts.base": "SmallDisplacementElement", "Parts.block": "SmallDisplacementElement"}}
+    params["output_processes"] = {"vtk_output": [{
+        "python_module": "vtk_output_process", "kratos_module": "KratosMultiphysics",
+        "Parameters": {"model_part_name": "Structure", "output_path": "vtk_output",
+                       "nodal_solution_step_data_variables": ["DISPLACEMENT"]}}]}
+    if edit:
+        edit(params["solver_settings"]["model_import_settings"])
+    return write_case(folder, "blocks", params, materials("Structure.Parts", "LinearElasticPlaneStrain2DLaw", 1000.0, 0.3))
+
+
+def run_cli(parameters_file, cwd):
+    return subprocess.run([sys.executable, "-m", "mortarcontact", "run", parameters_file], capture_output=True,
+                          text=True, cwd=cwd, timeout=300)
+
+
+def test_cli_runs_a_msh_case(tmp_path):
+    result = run_cli(blocks_case(str(tmp_path)), tmp_path)
+    assert result.returncode == 0, result.stdout + result.stderr
+    mesh = meshio.read(tmp_path / "vtk_output" / "Structure_1.vtu")
+    top = np.isclose(mesh.points[:, 1], 2.0)
+    assert np.allclose(mesh.point_data["DISPLACEMENT"][top, 1], -0.01)
+    assert np.allclose(mesh.point_data["DISPLACEMENT"][np.isclose(mesh.points[:, 1], 0.0)], 0.0)
+
+
+@pytest.mark.parametrize("edit, code, fragments", [
+    (lambda s: s.update(input_filename="nowhere.msh"), 2,
+     ["model_import_settings.input_filename: file not found", "nowhere.msh"]),
+    (lambda s: s.update(input_type="gmesh"), 3, ["input_type: \"gmesh\" is not supported", "did you mean 'gmsh'"]),
+    (lambda s: s.update(input_type="mdpa"), 2,
+     ["model_import_settings.element_names: only for input_type \"gmsh\""]),
+    (lambda s: (s.update(input_type="mdpa"), s.pop("element_names")), 2,
+     ["\"blocks.msh\" is not an mdpa", "read it with input_type \"gmsh\""]),
+    (lambda s: s["element_names"].update({"Parts.blok": "SmallDisplacementElement"}), 2,
+     ["element_names: no group 'Parts.blok' in", "blocks.msh", "did you mean 'Parts.block'"]),
+    (lambda s: s.update(input_filename="blocks_parameters.json", input_type="meshio"), 2,
+     ["blocks_parameters.json: meshio cannot read it as 'meshio' input"]),
+])
+def test_cli_input_errors(tmp_path, edit, code, fragments):
+    result = run_cli(blocks_case(str(tmp_path), edit), tmp_path)
+    assert result.returncode == code, result.stdout + result.stderr
+    assert "Traceback" not in result.stderr, result.stderr
+    for fragment in fragments:
+        assert fragment in result.stderr, f"{fragment!r} not in {result.stderr!r}"
+
+
+def test_group_names_that_cannot_name_a_model_part(tmp_path):
+    write_msh(tmp_path / "spaced.msh", POINTS, [("Parts block", "quad", QUADS), ("top", "triangle", TRIANGLES)])
+    with pytest.raises(mc.InputError, match="spaced.msh: group name 'Parts block' cannot name a sub model part"):
+        read_into_model(tmp_path / "spaced.msh", {"element_names": {"Parts block": "SmallDisplacementElement",
+                                                                    "top": "SmallDisplacementElement"}})
