@@ -126,12 +126,11 @@ class MechanicalSolver:
             if given:
                 raise _core.InputError(f"{where}.{given[0]}: only for input_type \"gmsh\" or \"meshio\", "
                                        "not \"mdpa\" (an mdpa names its elements itself)")
-            if os.path.splitext(filename)[1].lower() in MESHIO_EXTENSIONS and not filename.endswith(".mdpa"):
-                located = self._find(filename + ".mdpa")
-                if located is None:
-                    raise _core.InputError(f"{where}.input_filename: \"{filename}\" is not an mdpa (input_type "
-                                           "\"mdpa\" adds .mdpa to the name); read it with input_type \"gmsh\" "
-                                           "or \"meshio\"")
+            if (os.path.splitext(filename)[1].lower() in MESHIO_EXTENSIONS
+                    and self._find(filename + ".mdpa") is None):
+                raise _core.InputError(f"{where}.input_filename: \"{filename}\" is not an mdpa (input_type "
+                                       "\"mdpa\" adds .mdpa to the name); read it with input_type \"gmsh\" "
+                                       "or \"meshio\"")
             path = self._locate(filename if filename.endswith(".mdpa") else filename + ".mdpa",
                                 f"{where}.input_filename")
             self.pending_fixities = _core.ReadModelPart(
