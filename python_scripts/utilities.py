@@ -27,8 +27,17 @@ def write_text_atomically(path: str, text: str) -> None:
     try:
         with os.fdopen(handle, "w") as stream:
             stream.write(text)
-        os.replace(temporary, path)
+        publish_file(temporary, path)
     except BaseException:
         if os.path.exists(temporary):
             os.remove(temporary)
         raise
+
+
+def publish_file(temporary: str, path: str) -> None:
+    """Renames a finished temporary file over ``path`` with the mode of a file created normally
+    (0666 less the umask, usually 0644) instead of mkstemp's private 0600."""
+    umask = os.umask(0)
+    os.umask(umask)
+    os.chmod(temporary, 0o666 & ~umask)
+    os.replace(temporary, path)

@@ -22,27 +22,10 @@ from ..process import OutputProcess
 from ..processes.bulk_data import (UnsetVariableWarning, entity_connectivity, integration_point_means, nodal_flags,
                                nodal_values, variable_by_name)
 from ..processes.model_part_resolution import resolve_model_part
-from ..utilities import write_text_atomically
+from ..utilities import publish_file, write_text_atomically
+from .vtk_cell_types import VTK_CELL_TYPES, VTK_NODE_ORDER as _VTK_ORDER
 
 LOG = logging.getLogger("mortarcontact")
-
-#: Kratos geometry name -> meshio (VTK) cell type
-VTK_CELL_TYPES = {
-    "Point2D": "vertex", "Point3D": "vertex",
-    "Line2D2": "line", "Line3D2": "line", "Line2D3": "line3", "Line3D3": "line3",
-    "Triangle2D3": "triangle", "Triangle3D3": "triangle", "Triangle2D6": "triangle6", "Triangle3D6": "triangle6",
-    "Quadrilateral2D4": "quad", "Quadrilateral3D4": "quad", "Quadrilateral2D8": "quad8",
-    "Quadrilateral3D8": "quad8", "Quadrilateral2D9": "quad9", "Quadrilateral3D9": "quad9",
-    "Tetrahedra3D4": "tetra", "Tetrahedra3D10": "tetra10",
-    "Hexahedra3D8": "hexahedron", "Hexahedra3D20": "hexahedron20", "Hexahedra3D27": "hexahedron27",
-    "Prism3D6": "wedge",
-}
-
-# Our hexahedra list the vertical mid-edges before the top ones and the face centres as bottom,
-# front, right, back, left, top; VTK lists top edges first and faces as left, right, front, back,
-# bottom, top. Column k of the VTK cell takes our node _VTK_ORDER[k].
-_HEX27_TO_VTK = [*range(12), 16, 17, 18, 19, 12, 13, 14, 15, 24, 22, 21, 23, 20, 25, 26]
-_VTK_ORDER = {"hexahedron20": _HEX27_TO_VTK[:20], "hexahedron27": _HEX27_TO_VTK}
 
 
 class _StagedTimeSeriesWriter(meshio.xdmf.TimeSeriesWriter):
@@ -112,7 +95,7 @@ class _PartWriter:
         os.close(handle)
         try:
             meshio.vtu.write(temporary, mesh, binary=binary)
-            os.replace(temporary, os.path.join(self.folder, name))
+            publish_file(temporary, os.path.join(self.folder, name))
         except BaseException:
             if os.path.exists(temporary):
                 os.remove(temporary)

@@ -7,6 +7,7 @@ import os
 from .. import _core
 from ..utilities import nearest
 from ..processes.model_part_resolution import resolve_model_part
+from .meshio_import import GROUP_KEYS as MESHIO_KEYS, import_mesh, read_mesh
 
 BASE_VARIABLES = ["DISPLACEMENT", "REACTION", "POSITIVE_FACE_PRESSURE", "NEGATIVE_FACE_PRESSURE",
                   "POINT_LOAD", "LINE_LOAD", "SURFACE_LOAD", "VOLUME_ACCELERATION"]
@@ -14,6 +15,8 @@ ROTATION_VARIABLES = ["ROTATION", "REACTION_MOMENT", "POINT_MOMENT"]
 DYNAMIC_VARIABLES = ["VELOCITY", "ACCELERATION"]
 IMPLICIT_SCHEMES = ("bossak", "newmark", "pseudo_static", "backward_euler", "bdf1", "bdf2", "bdf3", "bdf4",
                     "bdf5", "relaxation")
+#: extensions of mesh files that input_type "mdpa" cannot read
+MESHIO_EXTENSIONS = (".msh", ".med", ".inp", ".vtu", ".vtk", ".xdmf", ".xmf", ".h5m", ".mesh", ".obj", ".stl")
 CRITERIA = ("displacement_criterion", "residual_criterion", "and_criterion", "or_criterion")
 
 
@@ -107,21 +110,39 @@ class MechanicalSolver:
         return 2
 
     def ImportModelPart(self) -> None:
+        """Reads the mesh named by ``model_import_settings``: ``input_type`` ``"mdpa"`` (Kratos), or
+        mortarcontact's ``"gmsh"`` / ``"meshio"`` with ``element_names``, ``condition_names`` and
+        ``properties_ids`` (see ``solvers/meshio_import.py``), then the materials."""
         imports = self.settings["model_import_settings"]
+        where = imports.Where()
         input_type = imports["input_type"].GetString()
         # Nodes are created with the buffer in force, so it is set before the mesh is read.
         self.main_model_part.SetBufferSize(max(self.settings["buffer_size"].GetInt(), self.minimum_buffer_size()))
+        if input_type in ("mdpa", "gmsh", "meshio") and not imports["input_filename"].GetString():
+            raise _core.InputError(f"{where}.input_filename: required for input_type \"{input_type}\"")
+        filename = imports["input_filename"].GetString()
         if input_type == "mdpa":
-            filename = imports["input_filename"].GetString()
-            if not filename:
-                raise _core.InputError(f"{imports.Where()}.input_filename: required for input_type \"mdpa\"")
+            given = [key for key in MESHIO_KEYS if imports[key].size() > 0]
+            if given:
+                raise _core.InputError(f"{where}.{given[0]}: only for input_type \"gmsh\" or \"meshio\", "
+                                       "not \"mdpa\" (an mdpa names its elements itself)")
+            if (os.path.splitext(filename)[1].lower() in MESHIO_EXTENSIONS
+                    and self._find(filename + ".mdpa") is None):
+                raise _core.InputError(f"{where}.input_filename: \"{filename}\" is not an mdpa (input_type "
+                                       "\"mdpa\" adds .mdpa to the name); read it with input_type \"gmsh\" "
+                                       "or \"meshio\"")
             path = self._locate(filename if filename.endswith(".mdpa") else filename + ".mdpa",
-                                f"{imports.Where()}.input_filename")
+                                f"{where}.input_filename")
             self.pending_fixities = _core.ReadModelPart(
                 self.main_model_part, path, imports["ignore_variables_not_in_solution_step_data"].GetBool())
+        elif input_type in ("gmsh", "meshio"):
+            path = self._locate(filename, f"{where}.input_filename")
+            mesh, node_ids = read_mesh(path, input_type, where)
+            import_mesh(self.main_model_part, mesh, node_ids, imports, self.domain_size, path)
         elif input_type != "use_input_model_part":
-            raise _core.NotImplementedFeatureError(f"{imports.Where()}.input_type: \"{input_type}\" is not "
-                                                   "supported; use \"mdpa\"")
+            valid = ("mdpa", "gmsh", "meshio", "use_input_model_part")
+            raise _core.NotImplementedFeatureError(f"{where}.input_type: \"{input_type}\" is not supported"
+                                                   f"{nearest(input_type, valid)}; valid: {', '.join(valid)}")
         self._import_materials()
 
     def _import_materials(self) -> None:
@@ -138,16 +159,25 @@ class MechanicalSolver:
                     entry["model_part_name"].SetString(part.FullName())
         _core.ReadMaterials(self.model, materials, filename)
 
-    def _locate(self, filename: str, key: str) -> str:
+    def _find(self, filename: str) -> str | None:
         """A case's input file: relative to the working directory (Kratos' rule), else to the case folder."""
+        for candidate in self._candidates(filename):
+            if os.path.isfile(candidate):
+                return candidate
+        return None
+
+    def _candidates(self, filename: str) -> list[str]:
         candidates = [filename]
         if self.case_dir and not os.path.isabs(filename):
             candidates.append(os.path.join(self.case_dir, filename))
-        for candidate in candidates:
-            if os.path.isfile(candidate):
-                return candidate
-        raise _core.InputError(f"{key}: file not found; looked for "
-                               + " and ".join(os.path.abspath(c) for c in candidates))
+        return candidates
+
+    def _locate(self, filename: str, key: str) -> str:
+        found = self._find(filename)
+        if found is None:
+            raise _core.InputError(f"{key}: file not found; looked for "
+                                   + " and ".join(os.path.abspath(c) for c in self._candidates(filename)))
+        return found
 
     def AddDofs(self) -> None:
         part = self.main_model_part

@@ -21,7 +21,10 @@ STRUCTURAL_DEFAULTS = """{
         "skip_timer": true,
         "ignore_variables_not_in_solution_step_data": false,
         "reorder": false,
-        "reorder_consecutive": false
+        "reorder_consecutive": false,
+        "element_names": {},
+        "condition_names": {},
+        "properties_ids": {}
     },
     "material_import_settings": {
         "materials_filename": ""

@@ -176,3 +176,24 @@ def test_gid_output_writes_vtu_with_a_warning(tmp_path, caplog, monkeypatch):
     run_steps(process, root, 1, on_step=lambda step: set_results(root, step))
     mesh = meshio.read(tmp_path / "test_solution_vtk" / "Structure_1.vtu")
     assert set(mesh.point_data) == {"DISPLACEMENT", "SLAVE"}
+
+
+@pytest.mark.parametrize("umask", [0o022, 0o027])
+def test_written_files_get_the_mode_of_ordinary_files(tmp_path, umask):
+    """Issue 15, item 4: VTU, PVD and JSON results are readable as any file the user creates
+    (0666 less the umask), not mkstemp's private 0600, and still appear atomically."""
+    from mortarcontact.utilities import write_text_atomically
+
+    previous = os.umask(umask)
+    try:
+        model, root = square_grid(2, 2)
+        process = vtk_process(model, model_part_name="Structure", output_path=str(tmp_path / "vtk"),
+                              nodal_solution_step_data_variables=["DISPLACEMENT"])
+        run_steps(process, root, 1)
+        write_text_atomically(str(tmp_path / "results.json"), "{}")
+    finally:
+        os.umask(previous)
+    written = [tmp_path / "vtk" / "Structure.pvd", tmp_path / "vtk" / "Structure_1.vtu", tmp_path / "results.json"]
+    assert {path.name: oct(path.stat().st_mode & 0o777) for path in written} == \
+        {path.name: oct(0o666 & ~umask) for path in written}
+    assert not [f for f in os.listdir(tmp_path / "vtk") if f.startswith(".")]
