@@ -7,6 +7,7 @@ import os
 from .. import _core
 from ..utilities import nearest
 from ..processes.model_part_resolution import resolve_model_part
+from .mesh_checks import check_imported_mesh
 
 BASE_VARIABLES = ["DISPLACEMENT", "REACTION", "POSITIVE_FACE_PRESSURE", "NEGATIVE_FACE_PRESSURE",
                   "POINT_LOAD", "LINE_LOAD", "SURFACE_LOAD", "VOLUME_ACCELERATION"]
@@ -119,6 +120,7 @@ class MechanicalSolver:
                                 f"{imports.Where()}.input_filename")
             self.pending_fixities = _core.ReadModelPart(
                 self.main_model_part, path, imports["ignore_variables_not_in_solution_step_data"].GetBool())
+            check_imported_mesh(self.main_model_part, path)
         elif input_type != "use_input_model_part":
             raise _core.NotImplementedFeatureError(f"{imports.Where()}.input_type: \"{input_type}\" is not "
                                                    "supported; use \"mdpa\"")
@@ -130,13 +132,18 @@ class MechanicalSolver:
             return
         filename = self._locate(filename, f"{self.settings['material_import_settings'].Where()}.materials_filename")
         materials = _core.Parameters.FromFile(filename)
-        if materials.Has("properties"):
-            for i in range(materials["properties"].size()):
-                entry = materials["properties"][i]
-                if entry.Has("model_part_name"):
-                    part = resolve_model_part(self.model, entry["model_part_name"].GetString())
-                    entry["model_part_name"].SetString(part.FullName())
-        _core.ReadMaterials(self.model, materials, filename)
+        try:
+            if materials.Has("properties"):
+                for i in range(materials["properties"].size()):
+                    entry = materials["properties"][i]
+                    if entry.Has("model_part_name"):
+                        part = resolve_model_part(self.model, entry["model_part_name"].GetString())
+                        entry["model_part_name"].SetString(part.FullName())
+            _core.ReadMaterials(self.model, materials, filename)
+        except _core.InputError as error:
+            if filename in str(error):
+                raise
+            raise _core.InputError(f"{filename}: {error}") from None
 
     def _locate(self, filename: str, key: str) -> str:
         """A case's input file: relative to the working directory (Kratos' rule), else to the case folder."""
