@@ -6,6 +6,7 @@ from .. import _core
 from ..process import Process
 from ..processes.model_part_resolution import resolve_model_part
 from . import _settings
+from .initial_overlap import check_initial_overlap
 
 
 class NotImplementedContactProcess(Process):
@@ -92,6 +93,7 @@ class SearchBaseProcess(Process):
         for slot, parts, slaves, property_id, mu in self.interface_slots():
             interface = builder.Build(slot, parts, slaves, property_id, mu,
                                       self.settings["normal_check_proportion"].GetDouble())
+            check_initial_overlap(interface, slot)
             properties = _core.ContactInterfaceBuilder.InterfaceProperties(self.root, slot)
             properties.SetValue(_core.INTEGRATION_ORDER_CONTACT, self.settings["integration_order"].GetInt())
             properties.SetValue(_core.CONSIDER_TESSELLATION, self.settings["consider_tessellation"].GetBool())
