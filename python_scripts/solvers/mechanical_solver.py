@@ -149,7 +149,9 @@ class MechanicalSolver:
         """A case's input file: relative to the working directory (Kratos' rule), else to the case folder."""
         candidates = [filename]
         if self.case_dir and not os.path.isabs(filename):
-            candidates.append(os.path.join(self.case_dir, filename))
+            beside = os.path.join(self.case_dir, filename)
+            if os.path.abspath(beside) != os.path.abspath(filename):
+                candidates.append(beside)
         for candidate in candidates:
             if os.path.isfile(candidate):
                 return candidate
