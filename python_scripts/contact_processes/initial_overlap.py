@@ -1,4 +1,4 @@
-"""Start-up check of a contact interface (issue 16): a slave node that starts behind a facing
+"""Start-up check of a contact interface (issue 16): a slave node that starts behind its nearest
 master condition by more than that condition's size. The bodies then overlap by more than an
 element in the initial mesh -- a mesh or placement mistake the search cannot resolve (it pairs
 nothing, or pairs the wrong side), so the case would run without contact. Small initial
@@ -27,30 +27,26 @@ def _faces(conditions):
 
 
 def check_initial_overlap(interface, slot: str) -> None:
-    """Raises InputError naming the first slave node found behind a facing master condition of
-    ``interface`` by more than the condition's size."""
+    """Raises InputError naming the first slave node found behind the nearest master condition of
+    ``interface`` it projects onto, by more than that condition's size. Only the nearest counts:
+    a node in front of one master face is behind the faces beyond it (the far side of the body)."""
     masters = [c for c in interface.Conditions if c.Is(_core.MASTER)]
     slaves = [c for c in interface.Conditions if c.Is(_core.SLAVE)]
     if not masters or not slaves:
         return
     ids, nodes, centres, normals, sizes, lows, highs = _faces(masters)
-    slave_normal: dict[int, np.ndarray] = {}
-    slave_position: dict[int, np.ndarray] = {}
-    for condition in slaves:
-        normal = np.asarray(condition.GetGeometry().UnitNormal([0.0, 0.0, 0.0], _core.Configuration.Initial), dtype=float)
-        for node in condition.GetNodes():
-            slave_normal[node.Id] = slave_normal.get(node.Id, 0.0) + normal
-            slave_position[node.Id] = np.array([node.X0, node.Y0, node.Z0])
+    slave_position = {node.Id: np.array([node.X0, node.Y0, node.Z0])
+                      for condition in slaves for node in condition.GetNodes()}
     tolerance = 1e-9 * sizes.max()
     for node_id in sorted(slave_position):
         x = slave_position[node_id]
         depth = np.einsum("ij,ij->i", x - centres, normals)
         projected = x - depth[:, None] * normals
         inside = np.all((projected >= lows - tolerance) & (projected <= highs + tolerance), axis=1)
-        facing = normals @ slave_normal[node_id] < 0.0
-        deep = inside & facing & (depth < -sizes)
-        if deep.any():
-            k = int(np.argmax(deep))
+        if not inside.any():
+            continue
+        k = int(np.argmin(np.where(inside, np.abs(depth), np.inf)))
+        if depth[k] < -sizes[k]:
             raise _core.InputError(
                 f"contact interface {slot}: slave node {node_id} starts {-depth[k]:.4g} behind master condition "
                 f"{ids[k]} (nodes {' '.join(map(str, nodes[k]))}), more than the condition's size {sizes[k]:.4g}: "

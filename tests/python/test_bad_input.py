@@ -701,3 +701,33 @@ def test_bad_input(tmp_path, entry):
         fragment = fragment.format(**values)
         assert fragment in result.stderr, f"{fragment!r} not in {result.stderr!r}"
     assert not any(os.path.exists(tmp_path / name) for name in OUTPUTS), os.listdir(tmp_path)
+
+
+# == legitimate situations the checks above must not reject ========================================
+def _mutated_contact_case(tmp_path, upper_y: float, edit=None) -> str:
+    path = contact_case(str(tmp_path))
+    case = Case(str(tmp_path), "contact").load()
+    for node, x, y in ((5, 0.0, upper_y), (6, 1.0, upper_y), (7, 1.0, upper_y + 1.0), (8, 0.0, upper_y + 1.0)):
+        case.set_line(case.node_line(node), f"{node} {x} {y} 0.0")
+    if edit:
+        edit(case)
+    case.save()
+    return path
+
+
+def test_parts_far_apart_warn_and_run(tmp_path):
+    """Bodies 10 apart: no contact yet is a legitimate state (they may close later), so the run
+    goes on with a warning naming the interface and the search radius, and exit code 0."""
+    result = run_cli("run", _mutated_contact_case(tmp_path, 11.0), cwd=tmp_path)
+    assert result.returncode == 0, result.stderr
+    assert "no master condition found" in result.stdout + result.stderr
+    assert "search_factor" in result.stdout + result.stderr
+
+
+def test_whole_skin_interface_is_not_taken_for_an_overlap(tmp_path):
+    """An empty contact_model_part takes the whole skin: a slave node is then behind the far
+    faces of the master block, but in front of the nearest one, which is no overlap."""
+    def whole_skin(case):
+        case.contact["contact_model_part"] = {"0": []}
+    result = run_cli("run", _mutated_contact_case(tmp_path, 1.001, whole_skin), cwd=tmp_path)
+    assert "overlap" not in result.stderr and "Traceback" not in result.stderr, result.stderr
