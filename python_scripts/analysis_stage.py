@@ -15,7 +15,7 @@ import time as wallclock
 from contextlib import contextmanager
 
 from . import _core
-from .process_factory import create_process_lists
+from .process_factory import create_process_lists, naming_the_item
 from .project_parameters import read_project_parameters
 from .solvers import create_solver
 from .utilities import warn
@@ -59,20 +59,23 @@ class StructuralMechanicsAnalysis:
         self.processes = self._create_processes("processes")
         self.output_processes = self._create_processes("output_processes")
         for process in self._all_processes():
-            process.ExecuteInitialize()
+            with naming_the_item(getattr(process, "item_where", "")):
+                process.ExecuteInitialize()
         if hasattr(self.solver, "set_sub_step_callbacks"):
             self.solver.set_sub_step_callbacks(self._initialize_processes_step, self._finalize_processes_step)
         self.solver.Initialize()
         self.Check()
         for process in self._all_processes():
-            process.ExecuteBeforeSolutionLoop()
+            with naming_the_item(getattr(process, "item_where", "")):
+                process.ExecuteBeforeSolutionLoop()
         self.time = self.start_time
         self.solver.GetComputingModelPart().ProcessInfo.SetValue(_core.TIME, self.time)
 
     def Check(self) -> None:
         self.solver.Check()
         for process in self._all_processes():
-            process.Check()
+            with naming_the_item(getattr(process, "item_where", "")):
+                process.Check()
 
     def KeepAdvancingSolutionLoop(self) -> bool:
         return self.time < self.end_time

@@ -11,6 +11,7 @@ this module: ``processes`` (kernel processes), ``contact_processes`` and ``outpu
 from __future__ import annotations
 
 import re
+from contextlib import contextmanager
 
 from . import _core
 from .contact_processes import CONTACT_MODULE, CONTACT_PROCESSES
@@ -87,7 +88,26 @@ def create_process(item: _core.Parameters, model: _core.Model) -> Process:
         module = item["kratos_module"].GetString() if item.Has("kratos_module") else None
         settings = item["Parameters"] if item.Has("Parameters") else _core.Parameters()
     cls = find_process_class(module, python_module)
-    return cls(model, settings)
+    where = settings.Where()
+    with naming_the_item(where):
+        process = cls(model, settings)
+    process.item_where = where
+    return process
+
+
+@contextmanager
+def naming_the_item(where: str):
+    """Prefixes an InputError whose message does not name the parameters file with the file and
+    key path of the process item (``where``), e.g. a model part or variable name that does not
+    exist, found only when the process resolves it."""
+    try:
+        yield
+    except _core.InputError as error:
+        message = str(error)
+        file = where.split(": ", 1)[0] if ": " in where else ""
+        if not file or file in message:
+            raise
+        raise _core.InputError(f"{where}: {message}") from None
 
 
 def create_process_lists(block: _core.Parameters, model: _core.Model) -> list[Process]:
@@ -106,4 +126,4 @@ def create_process_lists(block: _core.Parameters, model: _core.Model) -> list[Pr
 
 
 __all__ = ["PROCESS_REGISTRY", "create_process", "create_process_lists", "find_process_class",
-           "normalise_kratos_module"]
+           "naming_the_item", "normalise_kratos_module"]

@@ -6,6 +6,7 @@ from .. import _core
 from ..process import Process
 from ..processes.model_part_resolution import resolve_model_part
 from . import _settings
+from .initial_overlap import check_initial_overlap
 
 
 class NotImplementedContactProcess(Process):
@@ -48,10 +49,21 @@ class SearchBaseProcess(Process):
         self._steps_since_search = None
         self._inside = None
         self._check_types()
+        self._check_factors()
 
     # Settings ----------------------------------------------------------------------------------
     def _check_types(self) -> None:
         """Hook: reject the contact types this class does not implement."""
+
+    def _check_factors(self) -> None:
+        """Factors that scale distances must be positive numbers (issue 16: a negative one was
+        accepted and silently found no contact)."""
+        sp = self.settings["search_parameters"]
+        for block, key in ((sp, "active_check_factor"), (sp, "search_factor"),
+                           (self.settings, "zero_tolerance_factor")):
+            value = block[key].GetDouble()
+            if not 0.0 < value < float("inf"):
+                raise _core.InputError(f"{block.Where()}.{key}: must be a positive number, got {value!r}")
 
     def interface_slots(self) -> list[tuple[str, list[str], list[str], int, float]]:
         """(slot, parts, slave parts, property id, friction coefficient) of the non-empty slots;
@@ -81,6 +93,7 @@ class SearchBaseProcess(Process):
         for slot, parts, slaves, property_id, mu in self.interface_slots():
             interface = builder.Build(slot, parts, slaves, property_id, mu,
                                       self.settings["normal_check_proportion"].GetDouble())
+            check_initial_overlap(interface, slot)
             properties = _core.ContactInterfaceBuilder.InterfaceProperties(self.root, slot)
             properties.SetValue(_core.INTEGRATION_ORDER_CONTACT, self.settings["integration_order"].GetInt())
             properties.SetValue(_core.CONSIDER_TESSELLATION, self.settings["consider_tessellation"].GetBool())

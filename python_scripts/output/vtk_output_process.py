@@ -214,7 +214,8 @@ class VtkOutputProcess(OutputProcess):
 
     # --- process hooks -------------------------------------------------------------------------
     def ExecuteInitialize(self) -> None:
-        os.makedirs(self.folder, exist_ok=True)
+        # The folder is made at the first output, so that a case stopped by bad input during the
+        # set-up (issue 16) leaves no output behind.
         root = resolve_model_part(self.model, self.settings["model_part_name"].GetString())
         parts = [root]
         if self.settings["output_sub_model_parts"].GetBool():
@@ -243,6 +244,7 @@ class VtkOutputProcess(OutputProcess):
         if not self.writers:
             self.ExecuteInitialize()
         time = self._time()
+        os.makedirs(self.folder, exist_ok=True)
         for writer in self.writers:
             mesh = self._mesh(writer)
             if self.file_format == "xdmf":

@@ -8,6 +8,7 @@ from .. import _core
 from ..utilities import nearest
 from ..processes.model_part_resolution import resolve_model_part
 from .meshio_import import GROUP_KEYS as MESHIO_KEYS, import_mesh, read_mesh
+from .mesh_checks import check_imported_mesh
 
 BASE_VARIABLES = ["DISPLACEMENT", "REACTION", "POSITIVE_FACE_PRESSURE", "NEGATIVE_FACE_PRESSURE",
                   "POINT_LOAD", "LINE_LOAD", "SURFACE_LOAD", "VOLUME_ACCELERATION"]
@@ -135,10 +136,12 @@ class MechanicalSolver:
                                 f"{where}.input_filename")
             self.pending_fixities = _core.ReadModelPart(
                 self.main_model_part, path, imports["ignore_variables_not_in_solution_step_data"].GetBool())
+            check_imported_mesh(self.main_model_part, path)
         elif input_type in ("gmsh", "meshio"):
             path = self._locate(filename, f"{where}.input_filename")
             mesh, node_ids = read_mesh(path, input_type, where)
             import_mesh(self.main_model_part, mesh, node_ids, imports, self.domain_size, path)
+            check_imported_mesh(self.main_model_part, path)
         elif input_type != "use_input_model_part":
             valid = ("mdpa", "gmsh", "meshio", "use_input_model_part")
             raise _core.NotImplementedFeatureError(f"{where}.input_type: \"{input_type}\" is not supported"
@@ -151,13 +154,18 @@ class MechanicalSolver:
             return
         filename = self._locate(filename, f"{self.settings['material_import_settings'].Where()}.materials_filename")
         materials = _core.Parameters.FromFile(filename)
-        if materials.Has("properties"):
-            for i in range(materials["properties"].size()):
-                entry = materials["properties"][i]
-                if entry.Has("model_part_name"):
-                    part = resolve_model_part(self.model, entry["model_part_name"].GetString())
-                    entry["model_part_name"].SetString(part.FullName())
-        _core.ReadMaterials(self.model, materials, filename)
+        try:
+            if materials.Has("properties"):
+                for i in range(materials["properties"].size()):
+                    entry = materials["properties"][i]
+                    if entry.Has("model_part_name"):
+                        part = resolve_model_part(self.model, entry["model_part_name"].GetString())
+                        entry["model_part_name"].SetString(part.FullName())
+            _core.ReadMaterials(self.model, materials, filename)
+        except _core.InputError as error:
+            if filename in str(error):
+                raise
+            raise _core.InputError(f"{filename}: {error}") from None
 
     def _find(self, filename: str) -> str | None:
         """A case's input file: relative to the working directory (Kratos' rule), else to the case folder."""
@@ -169,7 +177,9 @@ class MechanicalSolver:
     def _candidates(self, filename: str) -> list[str]:
         candidates = [filename]
         if self.case_dir and not os.path.isabs(filename):
-            candidates.append(os.path.join(self.case_dir, filename))
+            beside = os.path.join(self.case_dir, filename)
+            if os.path.abspath(beside) != os.path.abspath(filename):
+                candidates.append(beside)
         return candidates
 
     def _locate(self, filename: str, key: str) -> str:

@@ -151,7 +151,31 @@ def validate_solver_settings(settings: _core.Parameters) -> None:
     if settings["domain_size"].GetInt() not in (2, 3):
         raise _core.InputError(f"{settings.Where()}.domain_size: must be 2 or 3, "
                                f"got {settings['domain_size'].GetInt()}")
+    _check_numbers(settings)
     for key in ("volumetric_strain_dofs", "strain_dofs", "pressure_dofs", "displacement_control",
                 "use_orthogonal_subscales"):
         if settings[key].GetBool():
             raise _core.NotImplementedFeatureError(f"{settings.Where()}.{key}: mixed formulations are not implemented")
+
+
+TIME_STEPPING_KEYS = ["time_step", "time_step_table", "time_step_intervals"]
+TOLERANCE_KEYS = ["displacement_relative_tolerance", "displacement_absolute_tolerance",
+                  "residual_relative_tolerance", "residual_absolute_tolerance"]
+
+
+def _check_numbers(settings: _core.Parameters) -> None:
+    """Keys of time_stepping, the sign of the tolerances, time step and iteration limit (issue 16:
+    each of these was accepted and failed later, or never)."""
+    where = settings.Where()
+    stepping = settings["time_stepping"]
+    stepping.CheckKeys(TIME_STEPPING_KEYS)
+    if stepping.Has("time_step") and stepping["time_step"].IsNumber():
+        dt = stepping["time_step"].GetDouble()
+        if not 0.0 < dt < float("inf"):
+            raise _core.InputError(f"{where}.time_stepping.time_step: must be a positive number, got {dt!r}")
+    for key in TOLERANCE_KEYS:
+        value = settings[key].GetDouble()
+        if not 0.0 <= value < float("inf"):
+            raise _core.InputError(f"{where}.{key}: must be a non-negative number, got {value!r}")
+    if settings["max_iteration"].GetInt() < 1:
+        raise _core.InputError(f"{where}.max_iteration: must be at least 1, got {settings['max_iteration'].GetInt()}")
