@@ -36,9 +36,7 @@ Keys (objects keyed by group name; a name unknown to the file is an error):
 from __future__ import annotations
 
 import contextlib
-import os
 import re
-import tempfile
 
 import numpy as np
 
@@ -281,39 +279,18 @@ def import_mesh(part, mesh, node_ids, imports, domain_size: int, path: str) -> N
 
 def _add_members(part, members: dict, path: str) -> None:
     """Creates the sub model parts (nested by dots) and fills them with their node, element and
-    condition ids. ``ModelPart.AddNodes`` looks every id up in the root, which re-sorts its
-    container after each addition (quadratic: minutes for 100k nodes), so the membership goes
-    through the mdpa reader's SubModelPart blocks, which index the root once."""
-    tree: dict = {}
-    for group in members:
+    condition ids."""
+    for group in sorted(members):
         if not group or any(c.isspace() for c in group) or "" in group.split("."):
             raise _core.InputError(f"{path}: group name {group!r} cannot name a sub model part (no spaces, "
                                    "no empty names between dots)")
-        node = tree
+        sub = part
         for name in group.split("."):
-            node = node.setdefault(name, {})
-        node[None] = members[group]
-    lines: list[str] = []
-    _write_blocks(tree, lines, "")
-    with tempfile.TemporaryDirectory(prefix="mortarcontact_") as folder:
-        membership = os.path.join(folder, "sub_model_parts.mdpa")
-        with open(membership, "w") as stream:
-            stream.write("\n".join(lines) + "\n")
-        _core.ReadModelPart(part, membership)
-
-
-def _write_blocks(tree: dict, lines: list, indent: str) -> None:
-    blocks = (("nodes", "Nodes"), ("element", "Elements"), ("condition", "Conditions"))
-    for name in sorted(key for key in tree if key is not None):
-        lines.append(f"{indent}Begin SubModelPart {name}")
-        content = tree[name].get(None, {})
-        for what, block in blocks:
+            sub = sub.GetSubModelPart(name) if sub.HasSubModelPart(name) else sub.CreateSubModelPart(name)
+        content = members[group]
+        for what, add in (("nodes", sub.AddNodes), ("element", sub.AddElements), ("condition", sub.AddConditions)):
             if content.get(what):
-                ids = np.unique(np.concatenate(content[what]))
-                lines += [f"{indent}  Begin SubModelPart{block}", *map(str, ids.tolist()),
-                          f"{indent}  End SubModelPart{block}"]
-        _write_blocks(tree[name], lines, indent + "  ")
-        lines.append(f"{indent}End SubModelPart")
+                add(np.unique(np.concatenate(content[what])).tolist())
 
 
 def _create_entities(part, kind, cell_type, connectivity, cell_name, cell_properties, counters) -> np.ndarray:
