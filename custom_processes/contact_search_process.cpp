@@ -363,8 +363,7 @@ ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
                !ShareNode(slave_geometry, master.condition->GetGeometry());
       };
       auto beneath = [&](const FaceData& master) {
-        const double tolerance = 1e-6 * std::min(slave.length, master.length);
-        return ProjectedOverlap(slave_geometry, slave.normal, master.condition->GetGeometry()) > tolerance;
+        return ProjectedOverlap(slave_geometry, slave.normal, master.condition->GetGeometry()) > 0.0;
       };
       std::vector<std::size_t>& kept = candidates[s];
       for (std::size_t f : found) {
