@@ -52,9 +52,10 @@ struct ContactSearchSlot {
 ///     with consider_gap_threshold, masters farther than DISTANCE_THRESHOLD are dropped.
 /// Then slave nodes without any pair are flagged ISOLATED (and inactive), and at every search
 /// (every step) a slave node is predicted ACTIVE when its normal gap (along its nodal normal to
-/// a paired master, stored in NORMAL_GAP) is below active_check_factor * h_M, and inactive
-/// otherwise, with h_M the mean NODAL_H of the master interface nodes (Kratos' length scale);
-/// a node with no master beneath it along its normal keeps its state.
+/// a paired master, stored in NORMAL_GAP; when the normal misses every paired master, to the
+/// plane of the nearest one) is below active_check_factor * h_M, or when it is active and its
+/// last weighted gap over its nodal area is below that too, and inactive otherwise, with h_M the
+/// mean NODAL_H of the master interface nodes (Kratos' length scale).
 ///
 /// Pair names: condition_name + geometry token (+ final_string), e.g.
 /// "ALMFrictionlessMortarContactCondition" + "3D3N4N"; the prototype must be a
