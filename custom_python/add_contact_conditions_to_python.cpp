@@ -25,12 +25,6 @@ void AddContactConditionsToPython(py::module_& m) {
       },
       py::arg("condition"), py::arg("process_info"),
       "Adds one pair condition's weighted gap and nodal areas to its slave nodes.");
-  m.def("MeasurePairedNodeIds", [](Condition& condition) {
-    auto* pair = dynamic_cast<PairedCondition*>(&condition);
-    std::vector<IndexType> ids;
-    for (const Node* n : pair->GetPairedGeometry().Nodes()) ids.push_back(n->Id());
-    return ids;
-  });
 }
 
 }  // namespace mc::python

@@ -194,7 +194,6 @@ void AddModelToPython(py::module_& m) {
       .def_property_readonly("Z0", [](const Node& n) { return n.X0()[2]; })
       .def("Coordinates", [](const Node& n) { return Array3(n.Coordinates()); })
       .def("InitialCoordinates", [](const Node& n) { return Array3(n.X0()); })
-      .def("MeasureSetCoordinates", [](Node& n, const Array3& x) { n.Coordinates() = x; })
       .def("GetSolutionStepValue", &GetHistorical, py::arg("variable"), py::arg("step") = 0)
       .def("SetSolutionStepValue", [](Node& n, const VariableData& v, const py::object& value) { SetHistorical(n, v, value, 0); },
            py::arg("variable"), py::arg("value"))
