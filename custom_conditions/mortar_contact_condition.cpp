@@ -189,7 +189,7 @@ void MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::AddExplicitContri
     Node& node = slave[j];
     AtomicAdd(node.GetSolutionStepValue(WEIGHTED_GAP), kinematics.weighted_gap(j));
     // A sliver's area does not count: a node covered by slivers alone keeps NODAL_AREA = 0 and is
-    // ISOLATED, as its weighted gap (element dual basis on a sliver) has no reliable sign.
+    // ISOLATED: its multiplier row would carry D_jj of the order of the sliver's area.
     if (!kinematics.sliver) AtomicAdd(node.GetValueRef(NODAL_AREA), kinematics.nodal_area(j));
   }
 }

@@ -363,8 +363,7 @@ ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
                !ShareNode(slave_geometry, master.condition->GetGeometry());
       };
       auto beneath = [&](const FaceData& master) {
-        const double tolerance = 1e-6 * std::min(slave.length, master.length);
-        return ProjectedOverlap(slave_geometry, slave.normal, master.condition->GetGeometry()) > tolerance;
+        return ProjectedOverlap(slave_geometry, slave.normal, master.condition->GetGeometry()) > 0.0;
       };
       std::vector<std::size_t>& kept = candidates[s];
       for (std::size_t f : found) {
@@ -470,9 +469,9 @@ ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
 
 void ContactSearchProcess::PredictActiveSet(const std::vector<std::pair<Condition*, Condition*>>& pairs,
                                             ContactSearchStatistics& stats) {
-  std::unordered_map<Node*, std::vector<Condition*>> masters_of;
-  for (const auto& [slave, master] : pairs)
-    for (Node* node : slave->GetGeometry().Nodes()) masters_of[node].push_back(master);
+  std::unordered_map<Node*, std::vector<std::pair<Condition*, Condition*>>> pairs_of;
+  for (const auto& pair : pairs)
+    for (Node* node : pair.first->GetGeometry().Nodes()) pairs_of[node].push_back(pair);
   // Every search predicts the set again, as Kratos does: a slave node is active when its gap
   // along the nodal normal is below active_check_factor times the mean NODAL_H of the master
   // interface. That one master length, not the slave node's own NODAL_H, is what Kratos 10.4
@@ -493,8 +492,8 @@ void ContactSearchProcess::PredictActiveSet(const std::vector<std::pair<Conditio
   const double factor = settings_["active_check_factor"].GetDouble();
   for (Node* node : interface_.Nodes()) {
     if (!node->Is(SLAVE)) continue;
-    auto it = masters_of.find(node);
-    if (it == masters_of.end()) {
+    auto it = pairs_of.find(node);
+    if (it == pairs_of.end()) {
       node->Set(ISOLATED, true);
       node->Set(ACTIVE, false);
       ++stats.isolated_nodes;
@@ -503,24 +502,44 @@ void ContactSearchProcess::PredictActiveSet(const std::vector<std::pair<Conditio
     node->Set(ISOLATED, false);
     const Array3 normal = NormalCalculationUtilities::GetNodalNormal(*node);
     const Array3& x = node->Coordinates();
+    // The gap along the nodal normal to the master faces of the node's pairs. A node whose ray
+    // misses them all (a slave edge over the master's edge, an inclined or slightly larger slave)
+    // can still overlap them through its faces; Kratos measures it with the master coordinates
+    // mortar-mapped onto the slave, which such a node has. Here it is measured to the plane of
+    // the overlapping paired master face whose ray intersection lies nearest to its centre.
     double gap = std::numeric_limits<double>::max();
-    for (Condition* master : it->second) {
+    double nearest_plane_gap = std::numeric_limits<double>::max();
+    double nearest_distance = std::numeric_limits<double>::max();
+    for (const auto& [slave, master] : it->second) {
       const Geometry& geometry = master->GetGeometry();
       const Array3 master_normal = master->GetValue(NORMAL);
       const double denominator = normal.dot(master_normal);
       if (std::abs(denominator) < 1e-12) continue;
-      const double t = (geometry.Center() - x).dot(master_normal) / denominator;
+      const Array3 center = geometry.Center();
+      const double t = (center - x).dot(master_normal) / denominator;
+      const Array3 hit = x + t * normal;
       Array3 local;
-      if (!geometry.PointLocalCoordinates(Array3(x + t * normal), local) || !geometry.IsInsideLocal(local, 1e-6))
-        continue;
-      if (std::abs(t) < std::abs(gap)) gap = t;
+      if (geometry.PointLocalCoordinates(hit, local) && geometry.IsInsideLocal(local, 1e-6)) {
+        if (std::abs(t) < std::abs(gap)) gap = t;
+      } else if (const double distance = (hit - center).norm();
+                 distance < nearest_distance &&
+                 ProjectedOverlap(slave->GetGeometry(), slave->GetValue(NORMAL), geometry) > 0.0) {
+        nearest_distance = distance;
+        nearest_plane_gap = t;
+      }
     }
-    // No master face beneath the node along its normal: the prediction has nothing to say and
-    // the node keeps its state.
-    if (gap == std::numeric_limits<double>::max()) continue;
+    if (gap == std::numeric_limits<double>::max()) gap = nearest_plane_gap;
+    if (gap == std::numeric_limits<double>::max()) continue;  // every paired face parallel to the normal
     node->SetValue(NORMAL_GAP, gap);
-    const double length = masters > 0 ? master_h : ContactInterfaceBuilder::GetNodalH(*node);
-    node->Set(ACTIVE, gap < factor * length);
+    const double threshold = factor * (masters > 0 ? master_h : ContactInterfaceBuilder::GetNodalH(*node));
+    // As in Kratos, a node that is active stays so while its weighted gap per unit nodal area (of
+    // the last iterate, i.e. the previous step's solution) is below the threshold too: the
+    // pressure it carries is not dropped because its nodal gap has opened by a little.
+    bool stays_active = false;
+    if (node->Is(ACTIVE) && node->HasSolutionStepValue(WEIGHTED_GAP) && node->Has(NODAL_AREA) &&
+        node->GetValue(NODAL_AREA) > 0.0)
+      stays_active = node->FastGetSolutionStepValue(WEIGHTED_GAP) / node->GetValue(NODAL_AREA) < threshold;
+    node->Set(ACTIVE, gap < threshold || stays_active);
   }
   for (Node* node : interface_.Nodes()) stats.active_nodes += (node->Is(SLAVE) && node->Is(ACTIVE)) ? 1 : 0;
 }

@@ -48,13 +48,14 @@ struct ContactSearchSlot {
 ///  3. `*_with_obb`: drop masters whose oriented box (grown by bounding_box_factor * L) does not
 ///     meet s's (separating-axis test) — removes far-but-in-radius faces;
 ///  4. check_gap: `mapping_check` (default, also "check_mapping") keeps m when its projection
-///     on s's plane overlaps s; `direct_check` projects s on m's plane; `no_check` keeps all;
+///     on s's plane overlaps or touches s; `direct_check` projects s on m's plane; `no_check` keeps all;
 ///     with consider_gap_threshold, masters farther than DISTANCE_THRESHOLD are dropped.
 /// Then slave nodes without any pair are flagged ISOLATED (and inactive), and at every search
 /// (every step) a slave node is predicted ACTIVE when its normal gap (along its nodal normal to
-/// a paired master, stored in NORMAL_GAP) is below active_check_factor * h_M, and inactive
-/// otherwise, with h_M the mean NODAL_H of the master interface nodes (Kratos' length scale);
-/// a node with no master beneath it along its normal keeps its state.
+/// a paired master, stored in NORMAL_GAP; when the normal misses every paired master, to the
+/// plane of the nearest one) is below active_check_factor * h_M, or when it is active and its
+/// last weighted gap over its nodal area is below that too, and inactive otherwise, with h_M the
+/// mean NODAL_H of the master interface nodes (Kratos' length scale).
 ///
 /// Pair names: condition_name + geometry token (+ final_string), e.g.
 /// "ALMFrictionlessMortarContactCondition" + "3D3N4N"; the prototype must be a

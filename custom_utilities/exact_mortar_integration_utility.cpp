@@ -75,6 +75,34 @@ Eigen::Matrix<T, TDim - 1, 1> ProjectAlong(const Eigen::Matrix<T, TNodes, TDim>&
   }
 }
 
+/// Local coordinates of the point of the bilinear quadrilateral x closest to p: Newton on the
+/// stationarity x_xi . (p - x) = x_eta . (p - x) = 0 from `xi` (x_xi_xi = x_eta_eta = 0, x_xi_eta
+/// constant). One extra step after convergence settles the AutoDiff derivatives.
+template <class T>
+Eigen::Matrix<T, 2, 1> ClosestPointOnQuadrilateral(const Eigen::Matrix<T, 4, 3>& x, const Eigen::Matrix<T, 3, 1>& p,
+                                                   Eigen::Matrix<T, 2, 1> xi) {
+  using SF = MortarShapeFunctions<4>;
+  const Eigen::Matrix<T, 3, 1> twist = 0.25 * (x.row(0) - x.row(1) + x.row(2) - x.row(3)).transpose();
+  bool converged = false;
+  for (int it = 0; it < 30; ++it) {
+    const auto dn = SF::template DN<T>(xi);
+    const Eigen::Matrix<T, 3, 1> a = x.transpose() * dn.col(0);
+    const Eigen::Matrix<T, 3, 1> b = x.transpose() * dn.col(1);
+    const Eigen::Matrix<T, 3, 1> r = p - x.transpose() * SF::template N<T>(xi);
+    const T f0 = a.dot(r), f1 = b.dot(r);
+    const T j00 = -a.dot(a), j11 = -b.dot(b), j01 = twist.dot(r) - a.dot(b);
+    const T det = j00 * j11 - j01 * j01;
+    if (!(std::abs(ValueOf(det)) > 1e-300)) break;
+    const T s0 = (j11 * f0 - j01 * f1) / det;
+    const T s1 = (j00 * f1 - j01 * f0) / det;
+    xi(0) -= s0;
+    xi(1) -= s1;
+    if (converged) break;
+    converged = std::abs(ValueOf(s0)) + std::abs(ValueOf(s1)) < 1e-14;
+  }
+  return xi;
+}
+
 template <class T, int TDim, int TNodes>
 Eigen::Matrix<T, TDim, 1> Interpolate(const Eigen::Matrix<T, TNodes, TDim>& values,
                                       const Eigen::Matrix<T, TNodes, 1>& n) {
@@ -328,18 +356,35 @@ bool ExactMortarIntegrationUtility<TDim, TNumNodes, TNumNodesMaster>::Compute(
 
     const auto& rule = ReferenceElement::Get(GeometryType::Triangle2D3)
                            .IntegrationPoints(settings.integration_order);
+    auto to_slave = [&](const P2& q) { return ProjectAlong<T, 3, TNumNodes>(x1, Vec(c + q(0) * t1 + q(1) * t2), n); };
     const P2& v0 = poly[start];
     for (int k = 1; k + 1 < n_poly; ++k) {
       const P2& va = poly[(start + k) % n_poly];
       const P2& vb = poly[(start + k + 1) % n_poly];
       const T sub_area = 0.5 * Cross2<T>(P2(va - v0), P2(vb - v0));
       if (!(ValueOf(sub_area) > 0.0)) continue;
-      for (const auto& gp : rule) {
-        const double a = gp.local(0), b = gp.local(1);
-        const P2 q = (1.0 - a - b) * v0 + a * va + b * vb;
-        const Vec x = c + q(0) * t1 + q(1) * t2;
-        const Eigen::Matrix<T, 2, 1> slave_local = ProjectAlong<T, 3, TNumNodes>(x1, x, n);
-        add_point(slave_local, 2.0 * gp.weight * sub_area);
+      if constexpr (TNumNodes == 3) {
+        // A triangle is its own plane: the fan triangle is part of the face.
+        for (const auto& gp : rule) {
+          const double a = gp.local(0), b = gp.local(1);
+          add_point(to_slave(P2((1.0 - a - b) * v0 + a * va + b * vb)), 2.0 * gp.weight * sub_area);
+        }
+      } else {
+        // A warped quadrilateral leaves its mean plane: the fan triangle is lifted onto the face
+        // (its corners projected along the plane normal, as Kratos 10.4 does) and integrated
+        // there, each point at the face's closest point. Its area, unlike the projected one,
+        // follows the tilt of the face.
+        const Eigen::Matrix<T, 2, 1> xi[3] = {to_slave(v0), to_slave(va), to_slave(vb)};
+        Vec lifted[3];
+        for (int v = 0; v < 3; ++v) lifted[v] = x1.transpose() * SF1::template N<T>(xi[v]);
+        const Vec normal = (lifted[1] - lifted[0]).cross(lifted[2] - lifted[0]);
+        const T lifted_area = 0.5 * sqrt(normal.squaredNorm());
+        for (const auto& gp : rule) {
+          const double a = gp.local(0), b = gp.local(1);
+          const Vec x = (1.0 - a - b) * lifted[0] + a * lifted[1] + b * lifted[2];
+          const Eigen::Matrix<T, 2, 1> guess = (1.0 - a - b) * xi[0] + a * xi[1] + b * xi[2];
+          add_point(ClosestPointOnQuadrilateral<T>(x1, x, guess), 2.0 * gp.weight * lifted_area);
+        }
       }
     }
     return result.size > 0;

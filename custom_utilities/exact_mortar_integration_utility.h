@@ -30,7 +30,8 @@ struct MortarIntegrationPoint {
   Eigen::Matrix<T, kLocalDim, 1> slave_local;   ///< slave local coordinates
   Eigen::Matrix<T, kLocalDim, 1> master_local;  ///< master local coordinates (see below)
   /// Physical measure: sum over the pair = overlap length (2D) or area (3D) measured on the
-  /// slave line / slave mean plane. Kratos' 2D convention is twice this value.
+  /// slave line / slave triangle / lifted fan of a quadrilateral slave (below). Kratos' 2D
+  /// convention is twice this value.
   T weight;
 };
 
@@ -63,8 +64,11 @@ struct MortarIntegrationPoints {
 ///   vertices merged); it is cut into a fan from Kratos 10.4's first point (a master vertex inside
 ///   the slave, else a slave vertex inside the master, else an edge crossing: the integration
 ///   points, and so M, whose integrand is not polynomial, depend on it), and each sub-triangle
-///   gets the triangle rule of the order.
-/// - Slave local coordinates: inverse map of the slave geometry along n_s.
+///   gets the triangle rule of the order. A quadrilateral slave, which may be warped, takes each
+///   sub-triangle lifted onto it (its corners mapped to the slave along n_s): the rule of the
+///   lifted triangle, its area, each point at the slave's closest point (Kratos 10.4).
+/// - Slave local coordinates: inverse map of the slave geometry along n_s (triangles; the
+///   corners of the lifted triangles), closest point (points of the lifted triangles).
 ///   Master local coordinates: the slave point x1(xi) is projected onto the master along the
 ///   interpolated slave nodal normal sum_i N_i(xi) n_i (Kratos), so they depend on the
 ///   nodal normals. Points projecting outside the master are kept (extrapolated), as Kratos.

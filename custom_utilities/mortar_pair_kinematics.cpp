@@ -75,14 +75,14 @@ bool ComputePair(const Eigen::Matrix<T, TNumNodes, TDim>& x1,
   // The pair basis needs at least as many independent points as slave nodes: a quadrilateral
   // slave whose overlap is one sub-triangle has 3 points at order 2 (and order 1 has one point),
   // so such overlaps are integrated again at kDualBasisOrder. What is still singular there is a
-  // sliver, which takes the element basis (DualLagrangeMultiplier).
+  // sliver, which takes the standard basis (DualLagrangeMultiplier).
   bool regular = PairDualBasis(out.points, out.ae);
   if (!regular && settings.integration_order < kDualBasisOrder) {
     segment(kDualBasisOrder);
     regular = PairDualBasis(out.points, out.ae);
   }
   out.sliver = !regular;
-  if (out.sliver) out.ae = DualLagrangeMultiplier<TDim, TNumNodes>::OverElement(x1, settings.axisymmetric);
+  if (out.sliver) out.ae = Eigen::Matrix<T, TNumNodes, TNumNodes>::Identity();
 
   out.op.Compute(out.points, out.ae);
   out.gap_vector = out.op.D * x1 - out.op.M * x2;

@@ -66,7 +66,7 @@ struct MortarPairKinematics {
   // Values.
   bool has_overlap = false;
   double area = 0.0;  ///< overlap length (2D) / area (3D)
-  /// The overlap is too thin to carry its own dual basis and took the slave element's
+  /// The overlap is too thin to carry its own dual basis and took the standard basis
   /// (DualLagrangeMultiplier): it cannot carry contact by itself.
   bool sliver = false;
   MortarIntegrationPoints<double, TDim, TNumNodes, TNumNodesMaster> points;

@@ -20,12 +20,20 @@ Eigen::Matrix3d Skew(const Array3& v) {
 
 const Array3& X(const Geometry& face, int i) { return face[static_cast<std::size_t>(i)].Coordinates(); }
 
-/// Calls add(local node, da/dx of that node) for every node of a face with a closed-form area vector.
+/// The position of `node` in `face`.
+int LocalIndex(const Geometry& face, const Node& node) {
+  for (std::size_t i = 0; i < face.PointsNumber(); ++i)
+    if (&face[i] == &node) return static_cast<int>(i);
+  throw Error(Concat("nodal normal: node ", node.Id(), " is not a node of the face"));
+}
+
+/// Calls add(local node, dc/dx of that node) for every node that moves the corner vector c of
+/// corner `j` (NodalNormalSupport::CornerVector).
 template <class TAdd>
-void ForEachAreaVectorDerivative(const Geometry& face, TAdd&& add) {
+void ForEachCornerVectorDerivative(const Geometry& face, int j, TAdd&& add) {
   switch (face.Type()) {
     case GeometryType::Line2D2: {
-      // a = (t_y, -t_x, 0) with t = x1 - x0.
+      // c = (t_y, -t_x, 0) with t = x1 - x0.
       Eigen::Matrix3d r = Eigen::Matrix3d::Zero();
       r(0, 1) = 1.0;
       r(1, 0) = -1.0;
@@ -33,37 +41,30 @@ void ForEachAreaVectorDerivative(const Geometry& face, TAdd&& add) {
       add(1, r);
       return;
     }
-    case GeometryType::Triangle3D3: {
-      // a = u x v / 2, u = x1 - x0, v = x2 - x0: da/du = -S(v)/2, da/dv = S(u)/2.
-      const Eigen::Matrix3d su = 0.5 * Skew(X(face, 1) - X(face, 0));
-      const Eigen::Matrix3d sv = 0.5 * Skew(X(face, 2) - X(face, 0));
-      add(0, Eigen::Matrix3d(sv - su));
-      add(1, Eigen::Matrix3d(-sv));
-      add(2, su);
-      return;
-    }
+    case GeometryType::Triangle3D3:
     case GeometryType::Quadrilateral3D4: {
-      // a = u x v / 2 with the diagonals u = x2 - x0, v = x3 - x1.
-      const Eigen::Matrix3d su = 0.5 * Skew(X(face, 2) - X(face, 0));
-      const Eigen::Matrix3d sv = 0.5 * Skew(X(face, 3) - X(face, 1));
-      add(0, sv);
-      add(1, Eigen::Matrix3d(-su));
-      add(2, Eigen::Matrix3d(-sv));
-      add(3, su);
+      // c = u x v, u = x_next - x_j, v = x_previous - x_j: dc/du = -S(v), dc/dv = S(u).
+      const int n = static_cast<int>(face.PointsNumber());
+      const int next = (j + 1) % n, previous = (j + n - 1) % n;
+      const Eigen::Matrix3d su = Skew(X(face, next) - X(face, j));
+      const Eigen::Matrix3d sv = Skew(X(face, previous) - X(face, j));
+      add(j, Eigen::Matrix3d(sv - su));
+      add(next, Eigen::Matrix3d(-sv));
+      add(previous, su);
       return;
     }
     default:
-      throw Error(Concat("nodal normal derivatives: no closed-form area vector for ", face.Name(),
+      throw Error(Concat("nodal normal derivatives: no closed-form corner vector for ", face.Name(),
                          " faces (Line2D2, Triangle3D3 and Quadrilateral3D4 have one)"));
   }
 }
 
 }  // namespace
 
-Array3 NodalNormalSupport::WeightedVector(const Geometry& face) {
-  const Array3 a = AreaVector(face);
-  const double norm = a.norm();
-  return norm > 0.0 ? Array3(a / norm) : Array3::Zero();
+Array3 NodalNormalSupport::UnitCornerNormal(const Geometry& face, const Node& node) {
+  const Array3 c = CornerVector(face, LocalIndex(face, node));
+  const double norm = c.norm();
+  return norm > 0.0 ? Array3(c / norm) : Array3::Zero();
 }
 
 NodalNormalSupport::NodalNormalSupport(const std::vector<const Geometry*>& faces) {
@@ -78,24 +79,20 @@ void NodalNormalSupport::Add(const Geometry* face) {
   for (const Node* node : face->Nodes()) faces_of_[node].push_back(face);
 }
 
-Array3 NodalNormalSupport::AreaVector(const Geometry& face) {
+Array3 NodalNormalSupport::CornerVector(const Geometry& face, int j) {
   switch (face.Type()) {
     case GeometryType::Line2D2: {
       const Array3 t = X(face, 1) - X(face, 0);
       return {t.y(), -t.x(), 0.0};
     }
     case GeometryType::Triangle3D3:
-      return 0.5 * (X(face, 1) - X(face, 0)).cross(X(face, 2) - X(face, 0));
-    case GeometryType::Quadrilateral3D4:
-      return 0.5 * (X(face, 2) - X(face, 0)).cross(X(face, 3) - X(face, 1));
+    case GeometryType::Quadrilateral3D4: {
+      const int n = static_cast<int>(face.PointsNumber());
+      return (X(face, (j + 1) % n) - X(face, j)).cross(X(face, (j + n - 1) % n) - X(face, j));
+    }
     default:
-      return face.DomainSize() * face.UnitNormal(face.Reference().LocalCenter());
+      return face.UnitNormal(face.Reference().NodesLocalCoordinates()[static_cast<std::size_t>(j)]);
   }
-}
-
-bool NodalNormalSupport::HasAreaVectorDerivatives(const Geometry& face) {
-  const GeometryType type = face.Type();
-  return type == GeometryType::Line2D2 || type == GeometryType::Triangle3D3 || type == GeometryType::Quadrilateral3D4;
 }
 
 const std::vector<const Geometry*>& NodalNormalSupport::Faces(const Node& node) const {
@@ -106,7 +103,7 @@ const std::vector<const Geometry*>& NodalNormalSupport::Faces(const Node& node) 
 
 Array3 NodalNormalSupport::Normal(const Node& node) const {
   Array3 m = Array3::Zero();
-  for (const Geometry* face : Faces(node)) m += WeightedVector(*face);
+  for (const Geometry* face : Faces(node)) m += UnitCornerNormal(*face, node);
   const double norm = m.norm();
   return norm > 0.0 ? Array3(m / norm) : Array3::Zero();
 }
@@ -116,15 +113,16 @@ void NodalNormalSupport::Compute(const Node& node, Derivatives& out) const {
   out.dn_dx.clear();
   Array3 m = Array3::Zero();
   for (const Geometry* face : Faces(node)) {
-    const Array3 a = AreaVector(*face);
+    const int j = LocalIndex(*face, node);
+    const Array3 a = CornerVector(*face, j);
     const double norm_a = a.norm();
-    if (!(norm_a > 0.0)) throw SolutionError(Concat("nodal normal of node ", node.Id(), ": a face of zero area"));
+    if (!(norm_a > 0.0)) throw SolutionError(Concat("nodal normal of node ", node.Id(), ": a degenerate face corner"));
     const Array3 unit_a = a / norm_a;
     m += unit_a;
     // d(a/|a|)/da = (I - a^ a^T) / |a|, chained with da/dx_k and accumulated per distinct node
     // (a node's faces share it and its neighbours).
     const Eigen::Matrix3d chain = (Eigen::Matrix3d::Identity() - unit_a * unit_a.transpose()) / norm_a;
-    ForEachAreaVectorDerivative(*face, [&](int local, const Eigen::Matrix3d& da_raw) {
+    ForEachCornerVectorDerivative(*face, j, [&](int local, const Eigen::Matrix3d& da_raw) {
       const Eigen::Matrix3d da = chain * da_raw;
       Node* k = face->pGetNode(static_cast<std::size_t>(local));
       std::size_t i = 0;

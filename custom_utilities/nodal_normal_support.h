@@ -14,16 +14,18 @@ class ModelPart;
 /// The averaged nodal normals of an interface as functions of the current coordinates, with
 /// their exact derivatives (the normal variation of the NV mortar conditions).
 ///
-///   n_j = m_j / |m_j|,   m_j = sum over the faces f holding node j of a_f(x) / |a_f(x)|,
-///   dn_j/dx_k = (I - n_j n_j^T) / |m_j| . sum_f (I - u_f u_f^T) / |a_f| . da_f/dx_k,  u_f = a_f / |a_f|,
+///   n_j = m_j / |m_j|,   m_j = sum over the faces f holding node j of c_fj(x) / |c_fj(x)|,
+///   dn_j/dx_k = (I - n_j n_j^T) / |m_j| . sum_f (I - u_fj u_fj^T) / |c_fj| . dc_fj/dx_k,  u_fj = c_fj / |c_fj|,
 ///
-/// nonzero for every node k of the faces around j. Every face's unit normal counts once (Popp's
-/// nodal normal, and Kratos 10.4's): weighted by area instead, a curved surface meshed with faces
-/// of different sizes gets twice the first-order normal error. The area vector a_f is |f| times the unit normal for
-/// lines and triangles, and the closed form (x2 - x0) x (x3 - x1) / 2 for bilinear quads (the
-/// exact area of a planar quad, and the normal at its centre); NormalCalculationUtilities uses
-/// the same weighted vectors, so the stored NORMAL and this class agree. Normals point out of
-/// the body when the faces are ordered as the interface builder generates them.
+/// nonzero for the nodes k of the faces around j that move a corner vector c_fj. Every face's
+/// unit normal at the node counts once (Popp's nodal normal, and Kratos 10.4's, which evaluates
+/// each face's normal at the node): weighted by area instead, a curved surface meshed with faces
+/// of different sizes gets twice the first-order normal error. c_fj is the face normal at its
+/// corner j: the rotated tangent of a line, and (x_next - x_j) x (x_previous - x_j) for a
+/// triangle (its constant normal) or a bilinear quadrilateral (its normal at that corner, which
+/// differs from the centre's on a warped face). NormalCalculationUtilities uses the same vectors,
+/// so the stored NORMAL and this class agree. Normals point out of the body when the faces are
+/// ordered as the interface builder generates them.
 ///
 /// Built once per contact search from the interface conditions (the faces must outlive it);
 /// read-only afterwards, so the pair conditions of all threads share one instance.
@@ -41,14 +43,12 @@ class NodalNormalSupport {
   /// Every condition of `interface` is a face.
   explicit NodalNormalSupport(const ModelPart& interface);
 
-  /// a_f: 2D line: the tangent x1 - x0 rotated by -90 degrees; triangle: (x1-x0) x (x2-x0) / 2;
-  /// quadrilateral: (x2-x0) x (x3-x1) / 2. Other geometries: DomainSize() x UnitNormal at the centre.
-  static Array3 AreaVector(const Geometry& face);
-  /// The face's contribution to the nodal normal sums: its unit normal a_f / |a_f|.
-  static Array3 WeightedVector(const Geometry& face);
-  /// Whether AreaVector has closed-form derivatives for this face (Line2D2, Triangle3D3,
-  /// Quadrilateral3D4).
-  static bool HasAreaVectorDerivatives(const Geometry& face);
+  /// c_fj of corner j (local index): 2D line: the tangent x1 - x0 rotated by -90 degrees;
+  /// triangle and quadrilateral: (x_next - x_j) x (x_previous - x_j). Other geometries: the unit
+  /// normal at the corner.
+  static Array3 CornerVector(const Geometry& face, int j);
+  /// The face's contribution to the normal sum of `node` (one of its nodes): c_fj / |c_fj|.
+  static Array3 UnitCornerNormal(const Geometry& face, const Node& node);
 
   bool Contains(const Node& node) const { return faces_of_.count(&node) > 0; }
   /// The faces holding `node` (empty when none).

@@ -28,11 +28,10 @@ void NormalCalculationUtilities::ComputeNodalNormals(ModelPart& part) {
   sums.reserve(part.NumberOfNodes());
   for (Condition* condition : part.Conditions()) {
     const Geometry& geometry = condition->GetGeometry();
-    // The same weighted vector as NodalNormalSupport, whose derivatives the NV conditions use.
-    const Array3 weighted = NodalNormalSupport::WeightedVector(geometry);
+    // The same unit normals as NodalNormalSupport, whose derivatives the NV conditions use.
     for (Node* node : geometry.Nodes()) {
       auto [it, inserted] = sums.try_emplace(node, Array3::Zero());
-      it->second += weighted;
+      it->second += NodalNormalSupport::UnitCornerNormal(geometry, *node);
     }
   }
   for (auto& [node, sum] : sums) {

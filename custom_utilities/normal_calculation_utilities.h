@@ -9,9 +9,9 @@ namespace mc {
 ///
 /// Condition normal: the unit normal at the condition's local centre (Geometry::UnitNormal, so a
 /// line in 2D uses the tangent rotated by -90 degrees and a face generated from an element
-/// points out of it). Nodal normal: the average of the unit normals of the part's conditions
-/// that hold the node, each counted once (n_i = normalise(sum_c n_c), Popp's definition and
-/// Kratos 10.4's); NodalNormalSupport::WeightedVector gives the contribution and
+/// points out of it). Nodal normal: the average of the unit normals at the node of the part's
+/// conditions that hold it, each counted once (n_i = normalise(sum_c n_c(x_i)), Popp's definition
+/// and Kratos 10.4's); NodalNormalSupport::UnitCornerNormal gives the contribution and
 /// NodalNormalSupport the exact derivatives of the same n_i.
 class NormalCalculationUtilities {
  public:

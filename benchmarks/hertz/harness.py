@@ -72,14 +72,16 @@ def ensure_case(name: str, cases_dir: str) -> str:
 
 
 def run_once(code: str, folder: str, output: str, threads: int, python: str | None = None,
-             timeout: float = 6 * 3600, linear_solver: str | None = None, all_nodes: bool = False) -> dict:
+             timeout: float = 6 * 3600, linear_solver: str | None = None, all_nodes: bool = False,
+             overrides: list[str] = ()) -> dict:
     """One run in a fresh subprocess; returns the runner's record (status, timings, raw fields),
     status "timeout" when the run is stopped after ``timeout`` seconds.
     ``linear_solver``: mortarcontact's linear_solver_settings (JSON) in place of the case's;
-    ``all_nodes``: see case_runner.py --all-nodes."""
+    ``all_nodes``: see case_runner.py --all-nodes; ``overrides``: its --set items."""
     python = python or sys.executable
     extra = ["--linear-solver", linear_solver] if linear_solver and code == "mortarcontact" else []
     extra += ["--all-nodes"] if all_nodes else []
+    extra += [arg for item in overrides for arg in ("--set", item)]
     env = dict(os.environ, OMP_NUM_THREADS=str(threads))
     os.makedirs(os.path.dirname(output), exist_ok=True)
     log = os.path.splitext(output)[0] + ".log"

@@ -3,8 +3,8 @@
 // "nodal_elemental_derivatives"):
 //  - NodalNormalSupport: dn_j/dx_k of the averaged nodal normals equals central finite differences
 //    for 2D lines and 3D triangle / quadrilateral patches (curved, warped), is zero for the nodes
-//    outside the faces around j, and its normals equal NormalCalculationUtilities' (same area
-//    vectors, normals out of the slave body);
+//    outside the faces around j, and its normals equal NormalCalculationUtilities' (same corner
+//    normals, normals out of the slave body); a face contributes its normal at the node;
 //  - the assembled tangent of all NV pairs of a small interface (2D: slave segments on an arc vs
 //    2 master segments; 3D: a 2x2 quad or triangle slave patch vs a quad or triangle master patch),
 //    with mixed active / inactive nodes, equals central finite differences of the assembled
@@ -21,6 +21,7 @@
 #include <memory>
 
 #include "contact_condition_test_utilities.h"
+#include "core/geometries/reference_element.h"
 #include "core/model/registry.h"
 #include "custom_conditions/normal_variation_mortar_contact_condition.h"
 #include "custom_conditions/register_contact_conditions.h"
@@ -200,16 +201,22 @@ TEST(NodalNormalSupport, Derivatives2DLines) { CheckNormalDerivatives("2D2N"); }
 TEST(NodalNormalSupport, Derivatives3DQuadrilaterals) { CheckNormalDerivatives("3D4N"); }
 TEST(NodalNormalSupport, Derivatives3DTriangles) { CheckNormalDerivatives("3D3N"); }
 
-// The quadrilateral's closed-form area vector is the exact area times the normal of a planar quad.
-TEST(NodalNormalSupport, PlanarQuadAreaVector) {
+// A face's contribution to a nodal normal is its unit normal at that node (Kratos 10.4 evaluates
+// UnitNormal at the node's local coordinates): on a warped quadrilateral it differs from corner
+// to corner and from the centre's.
+TEST(NodalNormalSupport, WarpedQuadCornerNormals) {
   Interface in;
   in.dim = 3;
-  const Array3 points[] = {{0.0, 0.0, 0.0}, {2.0, 0.1, 0.0}, {1.7, 1.3, 0.0}, {-0.2, 0.9, 0.0}};
-  Eigen::Matrix3d rotation = Eigen::AngleAxisd(0.4, Array3(1.0, 2.0, 0.5).normalized()).toRotationMatrix();
-  for (int i = 0; i < 4; ++i) MakeNode(in.root, 1 + i, Array3(rotation * points[i]));
+  const Array3 points[] = {{0.0, 0.0, 0.0}, {2.0, 0.1, 0.3}, {1.7, 1.3, -0.2}, {-0.2, 0.9, 0.25}};
+  for (int i = 0; i < 4; ++i) MakeNode(in.root, 1 + i, points[i]);
   const Geometry quad = in.Face({1, 2, 3, 4});
-  const Array3 expected = quad.DomainSize() * quad.UnitNormal(Array3::Zero());
-  EXPECT_LE((NodalNormalSupport::AreaVector(quad) - expected).norm(), 1e-13);
+  const Array3 centre = quad.UnitNormal(quad.Reference().LocalCenter());
+  for (std::size_t j = 0; j < 4; ++j) {
+    const Array3 expected = quad.UnitNormal(quad.Reference().NodesLocalCoordinates()[j]);
+    const Array3 corner = NodalNormalSupport::UnitCornerNormal(quad, quad[j]);
+    EXPECT_LE((corner - expected).norm(), 1e-14) << "corner " << j;
+    EXPECT_GT((corner - centre).norm(), 0.05) << "corner " << j;
+  }
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -28,6 +28,14 @@ ModelPart& BuildPatch2D(Model& model) {
   return test::PatchInterface(root);
 }
 
+/// Moves the patch's upper body (the master side) by `dx` along x, in both configurations.
+void ShiftUpperBodyAside(ModelPart& root, double dx) {
+  for (IndexType id : {5, 6, 7, 8}) {
+    root.GetNode(id).Coordinates().x() += dx;
+    root.GetNode(id).X0().x() += dx;
+  }
+}
+
 TEST(ContactSearch, MatchingPatch2DPairsAndActiveSet) {
   Model model;
   ModelPart& sub = BuildPatch2D(model);
@@ -55,6 +63,27 @@ TEST(ContactSearch, MatchingPatch2DPairsAndActiveSet) {
   // A second search replaces the pairs instead of adding to them.
   search.UpdateMortarConditions();
   EXPECT_EQ(search.ComputingPart().NumberOfConditions(), 1u);
+}
+
+TEST(ContactSearch, SlaveNodeBeyondTheMasterEdgeIsPredictedFromTheMasterPlane) {
+  // Master shifted aside by a quarter: the normal of slave node 4 (x = 0) misses the master face
+  // (x = 0.25 .. 1.25), but the slave face overlaps it, so the node is predicted from the master's
+  // plane (as Kratos does from the mortar-mapped master coordinates) instead of being left out.
+  Model model;
+  ModelPart& root = test::ReadPatch2D(model);
+  ShiftUpperBodyAside(root, 0.25);
+  ModelPart& sub = test::PatchInterface(root);
+  ContactSearchProcess search(root, sub, SearchSettings());
+  const ContactSearchStatistics stats = search.UpdateMortarConditions();
+  ASSERT_EQ(stats.pairs, 1u);
+  for (IndexType id : {3, 4}) {
+    EXPECT_TRUE(root.GetNode(id).Is(ACTIVE)) << id;
+    EXPECT_NEAR(root.GetNode(id).GetValue(NORMAL_GAP), 0.001, 1e-12) << id;
+  }
+  // Lifted beyond active_check_factor x NODAL_H, neither is.
+  for (IndexType id : {5, 6, 7, 8}) root.GetNode(id).Coordinates().y() += 0.05;
+  search.UpdateMortarConditions();
+  for (IndexType id : {3, 4}) EXPECT_FALSE(root.GetNode(id).Is(ACTIVE)) << id;
 }
 
 TEST(ContactSearch, SmallActiveCheckFactorLeavesNodesInactive) {
@@ -91,10 +120,7 @@ TEST(ContactSearch, ObbRejectsLaterallyFarCandidateInsideTheRadius) {
   for (const char* type : {"in_radius", "in_radius_with_obb", "in_box", "in_box_with_obb", "InRadiusWithOBB"}) {
     Model model;
     ModelPart& root = test::ReadPatch2D(model);
-    for (IndexType id : {5, 6, 7, 8}) {
-      root.GetNode(id).Coordinates().x() += 2.0;
-      root.GetNode(id).X0().x() += 2.0;
-    }
+    ShiftUpperBodyAside(root, 2.0);
     ModelPart& sub = test::PatchInterface(root);
     test::WarningCapture warnings;
     ContactSearchProcess search(

@@ -173,6 +173,24 @@ TEST(ExactMortarIntegration, Quadrilateral_Q4_2_Shifted) {
   EXPECT_NEAR(k.points.points[0].master_local(1), 2 * (0.5 * (1 + 1. / 6) - 0.5) - 1, kTol);
 }
 
+// A warped quadrilateral slave is integrated on its fan triangles lifted onto it, as Kratos 10.4
+// does: fully covered, the fan from node 0 lifts to the triangles (0,1,2) and (0,2,3) of its
+// nodes, whose area follows the tilt of the face; the projection on the mean plane is smaller.
+TEST(ExactMortarIntegration, WarpedQuadrilateralIsIntegratedOnTheLiftedFan) {
+  const auto x1 = Rows<K44::SlaveMatrix>({0, 0, 0, 1, 0, 0.2, 1, 1, 0, 0, 1, 0.2});
+  const auto x2 = Rows<K44::MasterMatrix>({-1, -1, 0.3, 2, -1, 0.3, 2, 2, 0.3, -1, 2, 0.3});
+  const auto k = Pair3D<4, 4>(x1, x2);
+  auto triangle = [&](int a, int b, int c) {
+    return 0.5 * (x1.row(b) - x1.row(a)).cross(x1.row(c) - x1.row(a)).norm();
+  };
+  const double lifted = triangle(0, 1, 2) + triangle(0, 2, 3);
+  EXPECT_NEAR(k.area, lifted, 1e-13);
+  EXPECT_NEAR(k.D.sum(), lifted, 1e-13);
+  const Eigen::Vector3d n = ConditionNormals<K44>(x1).row(0).transpose();
+  const double projected = 0.5 * (x1.row(2) - x1.row(0)).cross(x1.row(3) - x1.row(1)).dot(n.transpose());
+  EXPECT_GT(lifted - projected, 1e-2);
+}
+
 TEST(ExactMortarIntegration, MasterOrderingAndRuleOrderDoNotChangeInvariants) {
   // Q4-2 with the master listed clockwise, for every order: same area and first moments.
   const auto x1 = Rows<K44::SlaveMatrix>({0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0});
