@@ -7,26 +7,30 @@
 namespace mc {
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
-std::unique_ptr<Condition> ALMFrictionlessComponentsMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::Create(IndexType id, Geometry::NodesArray nodes,
-                                                                  Properties* properties) const {
+std::unique_ptr<Condition> ALMFrictionlessComponentsMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::Create(
+    IndexType id, Geometry::NodesArray nodes, Properties* properties) const {
   return this->CreateOfType(*this, id, std::move(nodes), properties);
 }
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
-std::unique_ptr<PairedCondition> ALMFrictionlessComponentsMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::CreatePaired(IndexType id, Condition& slave, Condition& master,
-                                                                               Properties* properties) const {
-  return this->template CreatePairedOfType<ALMFrictionlessComponentsMortarContactCondition>(id, slave, master, properties);
+std::unique_ptr<PairedCondition>
+ALMFrictionlessComponentsMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::CreatePaired(
+    IndexType id, Condition& slave, Condition& master, Properties* properties) const {
+  return this->template CreatePairedOfType<ALMFrictionlessComponentsMortarContactCondition>(id, slave, master,
+                                                                                            properties);
 }
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
-const Variable<double>& ALMFrictionlessComponentsMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::MultiplierVariable(int c) const {
+const Variable<double>&
+ALMFrictionlessComponentsMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::MultiplierVariable(int c) const {
   static const Variable<double>* const components[3] = {&VECTOR_LAGRANGE_MULTIPLIER_X, &VECTOR_LAGRANGE_MULTIPLIER_Y,
-                                                         &VECTOR_LAGRANGE_MULTIPLIER_Z};
+                                                        &VECTOR_LAGRANGE_MULTIPLIER_Z};
   return *components[c];
 }
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
-void ALMFrictionlessComponentsMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::GatherMultipliers(Data& data) const {
+void ALMFrictionlessComponentsMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::GatherMultipliers(
+    Data& data) const {
   const Geometry& slave = this->GetGeometry();
   for (int j = 0; j < TNumNodes; ++j)
     data.vector_multiplier.row(j) =
@@ -34,12 +38,14 @@ void ALMFrictionlessComponentsMortarContactCondition<TDim, TNumNodes, TNumNodesM
 }
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
-void ALMFrictionlessComponentsMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::AddRHS(const Data& data, Vector& rhs) const {
+void ALMFrictionlessComponentsMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::AddRHS(const Data& data,
+                                                                                               Vector& rhs) const {
   generated::ALMFrictionlessComponentsRHS(data, rhs);
 }
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
-void ALMFrictionlessComponentsMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::AddLHS(const Data& data, Matrix& lhs, Matrix* normal_sensitivity) const {
+void ALMFrictionlessComponentsMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::AddLHS(
+    const Data& data, Matrix& lhs, Matrix* normal_sensitivity) const {
   generated::ALMFrictionlessComponentsLHS(data, lhs, normal_sensitivity);
 }
 

@@ -18,7 +18,8 @@ namespace mc {
 ///  - inactive: the multiplier rows are -k^2/eps_j lambda_j.
 /// The local RHS and its exact tangent are generated (automatic_differentiation/, generated/).
 template <int TDim, int TNumNodes, int TNumNodesMaster>
-class ALMFrictionlessComponentsMortarContactCondition : public MortarContactCondition<TDim, TNumNodes, TNumNodesMaster> {
+class ALMFrictionlessComponentsMortarContactCondition
+    : public MortarContactCondition<TDim, TNumNodes, TNumNodesMaster> {
  public:
   using Base = MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>;
   using Data = typename Base::Data;

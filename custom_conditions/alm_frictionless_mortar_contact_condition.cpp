@@ -7,19 +7,20 @@
 namespace mc {
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
-std::unique_ptr<Condition> ALMFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::Create(IndexType id, Geometry::NodesArray nodes,
-                                                                  Properties* properties) const {
+std::unique_ptr<Condition> ALMFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::Create(
+    IndexType id, Geometry::NodesArray nodes, Properties* properties) const {
   return this->CreateOfType(*this, id, std::move(nodes), properties);
 }
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
-std::unique_ptr<PairedCondition> ALMFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::CreatePaired(IndexType id, Condition& slave, Condition& master,
-                                                                               Properties* properties) const {
+std::unique_ptr<PairedCondition> ALMFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::CreatePaired(
+    IndexType id, Condition& slave, Condition& master, Properties* properties) const {
   return this->template CreatePairedOfType<ALMFrictionlessMortarContactCondition>(id, slave, master, properties);
 }
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
-const Variable<double>& ALMFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::MultiplierVariable(int) const {
+const Variable<double>& ALMFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::MultiplierVariable(
+    int) const {
   return LAGRANGE_MULTIPLIER_CONTACT_PRESSURE;
 }
 
@@ -31,12 +32,14 @@ void ALMFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::Ga
 }
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
-void ALMFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::AddRHS(const Data& data, Vector& rhs) const {
+void ALMFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::AddRHS(const Data& data,
+                                                                                     Vector& rhs) const {
   generated::ALMFrictionlessRHS(data, rhs);
 }
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
-void ALMFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::AddLHS(const Data& data, Matrix& lhs, Matrix* normal_sensitivity) const {
+void ALMFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::AddLHS(const Data& data, Matrix& lhs,
+                                                                                     Matrix* normal_sensitivity) const {
   generated::ALMFrictionlessLHS(data, lhs, normal_sensitivity);
 }
 

@@ -24,8 +24,8 @@ const char* AxisymmetricMortarContactCondition<TFormulation>::Stem() const {
 
 template <class TFormulation>
 std::unique_ptr<Condition> AxisymmetricMortarContactCondition<TFormulation>::Create(IndexType id,
-                                                                                  Geometry::NodesArray nodes,
-                                                                                  Properties* properties) const {
+                                                                                    Geometry::NodesArray nodes,
+                                                                                    Properties* properties) const {
   return this->CreateOfType(*this, id, std::move(nodes), properties);
 }
 

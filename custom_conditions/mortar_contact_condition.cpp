@@ -84,8 +84,10 @@ MortarIntegrationSettings MortarContactCondition<TDim, TNumNodes, TNumNodesMaste
   MortarIntegrationSettings settings;
   if (HasProperties()) {
     const Properties& properties = GetProperties();
-    if (properties.Has(INTEGRATION_ORDER_CONTACT)) settings.integration_order = properties.GetValue(INTEGRATION_ORDER_CONTACT);
-    if (properties.Has(CONSIDER_TESSELLATION)) settings.consider_tessellation = properties.GetValue(CONSIDER_TESSELLATION);
+    if (properties.Has(INTEGRATION_ORDER_CONTACT))
+      settings.integration_order = properties.GetValue(INTEGRATION_ORDER_CONTACT);
+    if (properties.Has(CONSIDER_TESSELLATION))
+      settings.consider_tessellation = properties.GetValue(CONSIDER_TESSELLATION);
   }
   if (info.Has(ZERO_TOLERANCE_FACTOR)) settings.zero_tolerance_factor = info.GetValue(ZERO_TOLERANCE_FACTOR);
   settings.axisymmetric = IsAxisymmetric();
@@ -115,8 +117,8 @@ template <int TDim, int TNumNodes, int TNumNodesMaster>
 void MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::FillData(Data& data, const ProcessInfo& info) const {
   data.scale_factor = info.Has(SCALE_FACTOR) ? info.GetValue(SCALE_FACTOR) : 1.0;
   if (!(data.scale_factor > 0.0))
-    throw InputError(Concat("condition ", Id(), " (", Info(), "): SCALE_FACTOR = ", data.scale_factor,
-                            " must be positive"));
+    throw InputError(
+        Concat("condition ", Id(), " (", Info(), "): SCALE_FACTOR = ", data.scale_factor, " must be positive"));
   const Geometry& slave = GetGeometry();
   for (int j = 0; j < TNumNodes; ++j) {
     const Node& node = slave[j];

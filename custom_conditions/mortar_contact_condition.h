@@ -49,8 +49,9 @@ class MortarContactCondition : public PairedCondition {
   void Check(const ProcessInfo& info) const override;
 
   /// Adds this pair's weighted gap to the historical WEIGHTED_GAP of its slave nodes and its
-  /// nodal areas to NODAL_AREA (non-historical; not for a sliver overlap, see MortarPairKinematics). Atomic accumulation, so pairs may be processed
-  /// in parallel; the caller zeroes both variables on the slave nodes beforehand.
+  /// nodal areas to NODAL_AREA (non-historical; not for a sliver overlap, see MortarPairKinematics). Atomic
+  /// accumulation, so pairs may be processed in parallel; the caller zeroes both variables on the slave nodes
+  /// beforehand.
   void AddExplicitContribution(const ProcessInfo& info) override;
 
   int LocalSize() const noexcept { return kNumDisplacementDofs + TNumNodes * MultiplierComponents(); }

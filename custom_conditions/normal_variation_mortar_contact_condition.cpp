@@ -47,8 +47,8 @@ const char* NormalVariationMortarContactCondition<TFormulation>::Stem() const {
 
 template <class TFormulation>
 std::unique_ptr<Condition> NormalVariationMortarContactCondition<TFormulation>::Create(IndexType id,
-                                                                                     Geometry::NodesArray nodes,
-                                                                                     Properties* properties) const {
+                                                                                       Geometry::NodesArray nodes,
+                                                                                       Properties* properties) const {
   return this->CreateOfType(*this, id, std::move(nodes), properties);
 }
 
@@ -117,8 +117,7 @@ void NormalVariationMortarContactCondition<TFormulation>::CalculateLeftHandSide(
 }
 
 template <class TFormulation>
-void NormalVariationMortarContactCondition<TFormulation>::CalculateRightHandSide(Vector& rhs,
-                                                                                 const ProcessInfo& info) {
+void NormalVariationMortarContactCondition<TFormulation>::CalculateRightHandSide(Vector& rhs, const ProcessInfo& info) {
   CalculateAll(nullptr, &rhs, info);
 }
 

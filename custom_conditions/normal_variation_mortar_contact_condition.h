@@ -77,8 +77,8 @@ template <int TDim, int TNumNodes, int TNumNodesMaster>
 using ALMNVFrictionlessComponentsMortarContactCondition = NormalVariationMortarContactCondition<
     ALMFrictionlessComponentsMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>>;
 template <int TDim, int TNumNodes, int TNumNodesMaster>
-using ALMNVFrictionlessAxisymMortarContactCondition =
-    NormalVariationMortarContactCondition<ALMFrictionlessAxisymMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>>;
+using ALMNVFrictionlessAxisymMortarContactCondition = NormalVariationMortarContactCondition<
+    ALMFrictionlessAxisymMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>>;
 template <int TDim, int TNumNodes, int TNumNodesMaster>
 using PenaltyNVFrictionlessAxisymMortarContactCondition = NormalVariationMortarContactCondition<
     PenaltyFrictionlessAxisymMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>>;

@@ -7,24 +7,27 @@
 namespace mc {
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
-std::unique_ptr<Condition> PenaltyFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::Create(IndexType id, Geometry::NodesArray nodes,
-                                                                  Properties* properties) const {
+std::unique_ptr<Condition> PenaltyFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::Create(
+    IndexType id, Geometry::NodesArray nodes, Properties* properties) const {
   return this->CreateOfType(*this, id, std::move(nodes), properties);
 }
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
-std::unique_ptr<PairedCondition> PenaltyFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::CreatePaired(IndexType id, Condition& slave, Condition& master,
-                                                                               Properties* properties) const {
+std::unique_ptr<PairedCondition>
+PenaltyFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::CreatePaired(
+    IndexType id, Condition& slave, Condition& master, Properties* properties) const {
   return this->template CreatePairedOfType<PenaltyFrictionlessMortarContactCondition>(id, slave, master, properties);
 }
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
-void PenaltyFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::AddRHS(const Data& data, Vector& rhs) const {
+void PenaltyFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::AddRHS(const Data& data,
+                                                                                         Vector& rhs) const {
   generated::PenaltyFrictionlessRHS(data, rhs);
 }
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
-void PenaltyFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::AddLHS(const Data& data, Matrix& lhs, Matrix* normal_sensitivity) const {
+void PenaltyFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::AddLHS(
+    const Data& data, Matrix& lhs, Matrix* normal_sensitivity) const {
   generated::PenaltyFrictionlessLHS(data, lhs, normal_sensitivity);
 }
 

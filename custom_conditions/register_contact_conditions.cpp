@@ -21,7 +21,7 @@ using GT = GeometryType;
 template <template <int, int, int> class TCondition, int TDim, int TNumNodes, int TNumNodesMaster>
 void Add(GT slave, GT master) {
   auto prototype = std::make_shared<const TCondition<TDim, TNumNodes, TNumNodesMaster>>(0, Geometry(slave, {}), nullptr,
-                                                                                         Geometry(master, {}));
+                                                                                        Geometry(master, {}));
   Registry<Condition>::Instance().Add(prototype->Info(), prototype);
 }
 

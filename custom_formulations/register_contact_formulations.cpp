@@ -88,18 +88,19 @@ void RegisterAll() {
                                    .contact_kind = "Frictional",
                                    .not_implemented = friction});
   for (const std::string& mortar_type : {"ScalarMeshTying", "ComponentsMeshTying"})
-    ContactFormulation::Register(D{.mortar_type = mortar_type,
-                                   .process = "mesh_tying_process",
-                                   .active_set_criterion =
-                                       [](Parameters) { return std::make_shared<MeshTyingMortarConvergenceCriteria>(); },
-                                   .not_implemented = "mortar mesh tying"});
+    ContactFormulation::Register(
+        D{.mortar_type = mortar_type,
+          .process = "mesh_tying_process",
+          .active_set_criterion = [](Parameters) { return std::make_shared<MeshTyingMortarConvergenceCriteria>(); },
+          .not_implemented = "mortar mesh tying"});
 
   // As in Kratos, the condensing solver wraps the solver of linear_solver_settings and is chosen
   // by contact_settings.mixed_ulm_solver_parameters; as a linear solver of its own it has nothing
   // to wrap.
   RegisterLinearSolver("mixed_ulm_linear_solver", [](const Parameters& settings) -> std::unique_ptr<LinearSolver> {
-    throw InputError(Concat(settings.Where(), ".solver_type: 'mixed_ulm_linear_solver' is only valid in "
-                                              "contact_settings.mixed_ulm_solver_parameters"));
+    throw InputError(Concat(settings.Where(),
+                            ".solver_type: 'mixed_ulm_linear_solver' is only valid in "
+                            "contact_settings.mixed_ulm_solver_parameters"));
   });
 }
 

@@ -91,7 +91,8 @@ void MixedULMLinearSolver::BuildRowLists(const SparseMatrix& A) {
   row_offsets_.assign(static_cast<std::size_t>(tracked) + 1, 0);
   for (int j = 0; j < n; ++j)
     for (int p = outer[j]; p < outer[j + 1]; ++p)
-      if (const int t = tracked_row_[static_cast<std::size_t>(inner[p])]; t >= 0) ++row_offsets_[static_cast<std::size_t>(t) + 1];
+      if (const int t = tracked_row_[static_cast<std::size_t>(inner[p])]; t >= 0)
+        ++row_offsets_[static_cast<std::size_t>(t) + 1];
   for (int t = 0; t < tracked; ++t) row_offsets_[t + 1] += row_offsets_[t];
   row_positions_.resize(static_cast<std::size_t>(row_offsets_.back()));
   row_columns_.resize(static_cast<std::size_t>(row_offsets_.back()));
@@ -144,7 +145,8 @@ void MixedULMLinearSolver::BuildStructure(const SparseMatrix& A) {
   column_to_cond_.assign(un, -1);
   cond_to_column_.clear();
   for (int j = 0; j < n; ++j) {
-    if (eliminated_pair_[static_cast<std::size_t>(j)] >= 0 || types_[static_cast<std::size_t>(j)] == BlockType::kLmInactive)
+    if (eliminated_pair_[static_cast<std::size_t>(j)] >= 0 ||
+        types_[static_cast<std::size_t>(j)] == BlockType::kLmInactive)
       continue;
     column_to_cond_[static_cast<std::size_t>(j)] = static_cast<int>(cond_to_column_.size());
     cond_to_column_.push_back(j);
@@ -153,8 +155,10 @@ void MixedULMLinearSolver::BuildStructure(const SparseMatrix& A) {
   for (int r = 0; r < n; ++r) {
     const int q = eliminated_pair_[static_cast<std::size_t>(r)];
     if (q >= 0)
-      row_to_cond_[static_cast<std::size_t>(r)] = column_to_cond_[static_cast<std::size_t>(pair_slave_[static_cast<std::size_t>(q)])];
-    else if (slave_pair[static_cast<std::size_t>(r)] < 0 && types_[static_cast<std::size_t>(r)] != BlockType::kLmInactive)
+      row_to_cond_[static_cast<std::size_t>(r)] =
+          column_to_cond_[static_cast<std::size_t>(pair_slave_[static_cast<std::size_t>(q)])];
+    else if (slave_pair[static_cast<std::size_t>(r)] < 0 &&
+             types_[static_cast<std::size_t>(r)] != BlockType::kLmInactive)
       row_to_cond_[static_cast<std::size_t>(r)] = column_to_cond_[static_cast<std::size_t>(r)];
   }
 
@@ -169,7 +173,8 @@ void MixedULMLinearSolver::BuildStructure(const SparseMatrix& A) {
   pair_pivot_.resize(n_pairs);
   for (std::size_t q = 0; q < n_pairs; ++q) pair_pivot_[q] = find_in_row(pair_slave_[q], pair_lm_[q]);
   lm_inactive_diag_.resize(lm_inactive_.size());
-  for (std::size_t k = 0; k < lm_inactive_.size(); ++k) lm_inactive_diag_[k] = find_in_row(lm_inactive_[k], lm_inactive_[k]);
+  for (std::size_t k = 0; k < lm_inactive_.size(); ++k)
+    lm_inactive_diag_[k] = find_in_row(lm_inactive_[k], lm_inactive_[k]);
 
   // Pattern of A' = A_RC - A_RL K_SL^-1 A_SC and, per entry, where its terms come from. Column j
   // of A' holds the R rows of column j of A and, for every pair row s with an entry in column j,
@@ -202,7 +207,8 @@ void MixedULMLinearSolver::BuildStructure(const SparseMatrix& A) {
       if (q < 0) continue;
       const int l = pair_lm_[static_cast<std::size_t>(q)];
       for (int p2 = outer[l]; p2 < outer[l + 1]; ++p2)
-        if (const int cr = row_to_cond_[static_cast<std::size_t>(inner[p2])]; cr >= 0) terms.push_back({cr, -1, {p2, p, q}});
+        if (const int cr = row_to_cond_[static_cast<std::size_t>(inner[p2])]; cr >= 0)
+          terms.push_back({cr, -1, {p2, p, q}});
     }
     std::stable_sort(terms.begin(), terms.end(), [](const Term& a, const Term& b) { return a.row < b.row; });
     for (std::size_t k = 0; k < terms.size();) {
@@ -250,7 +256,8 @@ std::string MixedULMLinearSolver::CheckDiagonalBlocks(const SparseMatrix& A) {
   auto first_off = [&](int row, double limit, auto off) {
     const int t = tracked_row_[static_cast<std::size_t>(row)];
     for (int k = row_offsets_[static_cast<std::size_t>(t)]; k < row_offsets_[static_cast<std::size_t>(t) + 1]; ++k)
-      if (off(row_columns_[static_cast<std::size_t>(k)]) && std::abs(v[row_positions_[static_cast<std::size_t>(k)]]) > limit)
+      if (off(row_columns_[static_cast<std::size_t>(k)]) &&
+          std::abs(v[row_positions_[static_cast<std::size_t>(k)]]) > limit)
         return k;
     return -1;
   };
@@ -265,8 +272,9 @@ std::string MixedULMLinearSolver::CheckDiagonalBlocks(const SparseMatrix& A) {
     const int k = first_off(s, kDiagonalTolerance * largest,
                             [&](int c) { return c != l && eliminated_pair_[static_cast<std::size_t>(c)] >= 0; });
     if (k >= 0)
-      return Concat("K(S_A, LM_A) is not diagonal: row ", DofName(s), " has ", v[row_positions_[static_cast<std::size_t>(k)]],
-                    " at ", DofName(row_columns_[static_cast<std::size_t>(k)]), " (pivot ", pivot, " at ", DofName(l), ")");
+      return Concat("K(S_A, LM_A) is not diagonal: row ", DofName(s), " has ",
+                    v[row_positions_[static_cast<std::size_t>(k)]], " at ",
+                    DofName(row_columns_[static_cast<std::size_t>(k)]), " (pivot ", pivot, " at ", DofName(l), ")");
     inv_pivot_[static_cast<Eigen::Index>(q)] = 1.0 / pivot;
   }
   for (std::size_t k = 0; k < lm_inactive_.size(); ++k) {
@@ -276,8 +284,9 @@ std::string MixedULMLinearSolver::CheckDiagonalBlocks(const SparseMatrix& A) {
     if (diagonal == 0.0) return Concat("K(LM_I, LM_I) has a zero diagonal at ", DofName(i));
     const int e = first_off(i, kDiagonalTolerance * largest, [&](int c) { return c != i; });
     if (e >= 0)
-      return Concat("the inactive multiplier row ", DofName(i), " is not diagonal: ", v[row_positions_[static_cast<std::size_t>(e)]],
-                    " at ", DofName(row_columns_[static_cast<std::size_t>(e)]));
+      return Concat("the inactive multiplier row ", DofName(i),
+                    " is not diagonal: ", v[row_positions_[static_cast<std::size_t>(e)]], " at ",
+                    DofName(row_columns_[static_cast<std::size_t>(e)]));
   }
   return {};
 }
@@ -296,8 +305,8 @@ void MixedULMLinearSolver::Solve(const SparseMatrix& A, Vector& x, const Vector&
 void MixedULMLinearSolver::SolveFull(const SparseMatrix& A, Vector& x, const Vector& b, std::string reason, bool warn) {
   last_condensed_ = false;
   if (warn && !warned_) {  // once: the reason recurs at every iteration of a case
-    Logger::Warning(Concat(Name(), ": ", reason, "; solving the full system of ", A.rows(),
-                           " unknowns instead (reported once)"));
+    Logger::Warning(
+        Concat(Name(), ": ", reason, "; solving the full system of ", A.rows(), " unknowns instead (reported once)"));
     warned_ = true;
   }
   fallback_reason_ = std::move(reason);
@@ -318,7 +327,8 @@ void MixedULMLinearSolver::SolveCondensed(const SparseMatrix& A, Vector& x, cons
   b_work_ = b;
 
   // Inactive multipliers from their diagonal rows; their columns move to the right-hand side.
-  for (std::size_t k = 0; k < lm_inactive_.size(); ++k) x[lm_inactive_[k]] = b[lm_inactive_[k]] / v[lm_inactive_diag_[k]];
+  for (std::size_t k = 0; k < lm_inactive_.size(); ++k)
+    x[lm_inactive_[k]] = b[lm_inactive_[k]] / v[lm_inactive_diag_[k]];
   for (const int i : lm_inactive_)
     for (int p = outer[i]; p < outer[i + 1]; ++p)
       if (inner[p] != i) b_work_[inner[p]] -= v[p] * x[i];
@@ -353,10 +363,13 @@ void MixedULMLinearSolver::SolveCondensed(const SparseMatrix& A, Vector& x, cons
     inner_->Solve(condensed_, x_condensed_, b_condensed_);
   } catch (const SingularMatrixError& e) {
     const long k = e.Equation();
-    const long column = k >= 0 && static_cast<std::size_t>(k) < cond_to_column_.size() ? cond_to_column_[static_cast<std::size_t>(k)] : -1;
+    const long column = k >= 0 && static_cast<std::size_t>(k) < cond_to_column_.size()
+                            ? cond_to_column_[static_cast<std::size_t>(k)]
+                            : -1;
     throw SingularMatrixError(Concat(e.what(), " (condensed system of ", Name(), ")"), column);
   }
-  for (std::size_t k = 0; k < cond_to_column_.size(); ++k) x[cond_to_column_[k]] = x_condensed_[static_cast<Eigen::Index>(k)];
+  for (std::size_t k = 0; k < cond_to_column_.size(); ++k)
+    x[cond_to_column_[k]] = x_condensed_[static_cast<Eigen::Index>(k)];
 
   // Active multipliers from their slave rows (eq. 4.40b).
   for (std::size_t q = 0; q < pair_slave_.size(); ++q) {
@@ -365,7 +378,8 @@ void MixedULMLinearSolver::SolveCondensed(const SparseMatrix& A, Vector& x, cons
     double sum = b_work_[s];
     for (int k = row_offsets_[static_cast<std::size_t>(t)]; k < row_offsets_[static_cast<std::size_t>(t) + 1]; ++k) {
       const int c = row_columns_[static_cast<std::size_t>(k)];
-      if (column_to_cond_[static_cast<std::size_t>(c)] >= 0) sum -= v[row_positions_[static_cast<std::size_t>(k)]] * x[c];
+      if (column_to_cond_[static_cast<std::size_t>(c)] >= 0)
+        sum -= v[row_positions_[static_cast<std::size_t>(k)]] * x[c];
     }
     x[pair_lm_[q]] = sum * inv_pivot_[static_cast<Eigen::Index>(q)];
   }

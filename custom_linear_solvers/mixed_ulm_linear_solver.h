@@ -109,23 +109,23 @@ class MixedULMLinearSolver : public LinearSolver {
   bool structure_valid_ = false;  ///< the index lists below match types_ and the pattern of A
 
   // Structure (BuildStructure), rebuilt when the pattern or the classification changes.
-  std::vector<int> pair_slave_;       ///< row s of each pair
-  std::vector<int> pair_lm_;          ///< column l of each pair
-  std::vector<int> pair_pivot_;       ///< position of K_sl in A's values
-  std::vector<int> lm_inactive_;      ///< LM_I rows
-  std::vector<int> lm_inactive_diag_; ///< position of their diagonal (-1 if absent)
-  std::vector<int> row_to_cond_;      ///< condensed row of each row of A, -1 if eliminated
-  std::vector<int> column_to_cond_;   ///< condensed column of each column of A, -1 if eliminated
+  std::vector<int> pair_slave_;        ///< row s of each pair
+  std::vector<int> pair_lm_;           ///< column l of each pair
+  std::vector<int> pair_pivot_;        ///< position of K_sl in A's values
+  std::vector<int> lm_inactive_;       ///< LM_I rows
+  std::vector<int> lm_inactive_diag_;  ///< position of their diagonal (-1 if absent)
+  std::vector<int> row_to_cond_;       ///< condensed row of each row of A, -1 if eliminated
+  std::vector<int> column_to_cond_;    ///< condensed column of each column of A, -1 if eliminated
   std::vector<int> cond_to_column_;
   std::vector<int> eliminated_pair_;  ///< pair of each eliminated LM_A column, -1 otherwise
   /// Entries of the S_A and LM_I rows: (position in A's values, column), CSR-like.
-  std::vector<int> tracked_row_;      ///< index into row_offsets_ of each row, -1 if untracked
+  std::vector<int> tracked_row_;  ///< index into row_offsets_ of each row, -1 if untracked
   std::vector<int> row_offsets_;
   std::vector<int> row_positions_;
   std::vector<int> row_columns_;
   SparseMatrix condensed_;
-  std::vector<int> cond_source_;      ///< position in A's values of each condensed entry, -1 if none
-  std::vector<int> cond_offsets_;     ///< corrections of each condensed entry
+  std::vector<int> cond_source_;   ///< position in A's values of each condensed entry, -1 if none
+  std::vector<int> cond_offsets_;  ///< corrections of each condensed entry
   std::vector<Correction> corrections_;
 
   // Work vectors.

@@ -69,8 +69,8 @@ ModelPart& ContactInterfaceBuilder::ResolvePart(ModelPart& root, const std::stri
   if (matches.size() > 1)
     throw InputError(Concat("contact model part '", name, "' is ambiguous: ", matches[0]->FullName(), " and ",
                             matches[1]->FullName(), "; write the full dotted path"));
-  throw InputError(Concat("contact model part '", name, "' does not exist in '", root.Name(), "'",
-                          DidYouMean(name, names)));
+  throw InputError(
+      Concat("contact model part '", name, "' does not exist in '", root.Name(), "'", DidYouMean(name, names)));
 }
 
 Properties& ContactInterfaceBuilder::InterfaceProperties(ModelPart& root, const std::string& slot) {
@@ -82,7 +82,8 @@ Properties& ContactInterfaceBuilder::InterfaceProperties(ModelPart& root, const 
 
 ModelPart& ContactInterfaceBuilder::Build(const ContactInterfaceSettings& settings) {
   RegisterStructuralMechanics();
-  ModelPart& contact = root_.HasSubModelPart("Contact") ? root_.GetSubModelPart("Contact") : root_.CreateSubModelPart("Contact");
+  ModelPart& contact =
+      root_.HasSubModelPart("Contact") ? root_.GetSubModelPart("Contact") : root_.CreateSubModelPart("Contact");
   const std::string name = "ContactSub" + settings.slot;
   if (contact.HasSubModelPart(name)) {
     if (!root_.Is(MODIFIED)) return contact.GetSubModelPart(name);
@@ -100,8 +101,8 @@ ModelPart& ContactInterfaceBuilder::Build(const ContactInterfaceSettings& settin
   } catch (const std::exception&) {
     throw InputError(Concat("contact interface slot '", settings.slot, "' must be a number 0..9"));
   }
-  const IndexType property_id =
-      settings.property_id > 0 ? static_cast<IndexType>(settings.property_id) : static_cast<IndexType>(100 + slot_index);
+  const IndexType property_id = settings.property_id > 0 ? static_cast<IndexType>(settings.property_id)
+                                                         : static_cast<IndexType>(100 + slot_index);
   const bool new_property = !root_.HasProperties(property_id);
   Properties& properties = sub.GetOrCreateProperties(property_id);
 
@@ -363,7 +364,8 @@ void ContactInterfaceBuilder::CheckNormals(ModelPart& sub, const ContactInterfac
   if (same_way > facing)
     throw InputError(Concat("contact interface ", sub.FullName(), ": the slave side (", settings.slave_parts.front(),
                             ") and the master side have normals pointing the same way in ", same_way, " of ",
-                            slaves.size(), " slave conditions; the surfaces must face each other (check the node "
+                            slaves.size(),
+                            " slave conditions; the surfaces must face each other (check the node "
                             "order of the interface conditions, or which parts are listed in contact_model_part):",
                             examples));
 }

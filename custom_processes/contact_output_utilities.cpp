@@ -13,9 +13,8 @@ std::size_t ComputeContactOutputs(ModelPart& part, bool clear_inactive) {
     if (!node.Is(SLAVE)) continue;
     ++visited;
     const bool active = node.Is(ACTIVE);
-    const double stress = active && node.Has(AUGMENTED_NORMAL_CONTACT_PRESSURE)
-                              ? node.GetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE)
-                              : 0.0;
+    const double stress =
+        active && node.Has(AUGMENTED_NORMAL_CONTACT_PRESSURE) ? node.GetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE) : 0.0;
     const double area = node.Has(NODAL_AREA) ? node.GetValue(NODAL_AREA) : 0.0;
     node.SetValue(NORMAL_CONTACT_STRESS, stress);
     node.SetValue(CONTACT_PRESSURE, -stress);

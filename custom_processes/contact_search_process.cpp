@@ -8,13 +8,13 @@
 #include <map>
 #include <memory>
 #include <mutex>
-#include <set>
 #include <numeric>
+#include <set>
 #include <unordered_map>
 
 #include "core/geometries/reference_element.h"
-#include "core/model/registry.h"
 #include "core/model/parallel_utilities.h"
+#include "core/model/registry.h"
 #include "core/utilities/error.h"
 #include "core/utilities/logger.h"
 #include "core/utilities/string_utilities.h"
@@ -51,8 +51,8 @@ const std::map<std::string, std::string>& SearchTypeNames() {
 
 const std::map<std::string, std::string>& CheckGapNames() {
   static const std::map<std::string, std::string> names = {
-      {"no_check", "no_check"},         {"NoCheck", "no_check"},
-      {"direct_check", "direct_check"}, {"DirectCheck", "direct_check"},
+      {"no_check", "no_check"},           {"NoCheck", "no_check"},
+      {"direct_check", "direct_check"},   {"DirectCheck", "direct_check"},
       {"mapping_check", "mapping_check"}, {"MappingCheck", "mapping_check"},
       {"check_mapping", "mapping_check"},
   };
@@ -111,13 +111,14 @@ FaceData MakeFaceData(Condition* condition) {
   const Geometry& geometry = condition->GetGeometry();
   FaceData data{condition, geometry.Center(), condition->GetValue(NORMAL), InterfaceCharacteristicLength(geometry),
                 0.0};
-  for (const Node* node : geometry.Nodes()) data.radius = std::max(data.radius, (node->Coordinates() - data.center).norm());
+  for (const Node* node : geometry.Nodes())
+    data.radius = std::max(data.radius, (node->Coordinates() - data.center).norm());
   return data;
 }
 
 ModelPart& ComputingSubPart(ModelPart& root, const std::string& id) {
-  ModelPart& computing =
-      root.HasSubModelPart("ComputingContact") ? root.GetSubModelPart("ComputingContact") : root.CreateSubModelPart("ComputingContact");
+  ModelPart& computing = root.HasSubModelPart("ComputingContact") ? root.GetSubModelPart("ComputingContact")
+                                                                  : root.CreateSubModelPart("ComputingContact");
   const std::string name = "ComputingContactSub" + id;
   return computing.HasSubModelPart(name) ? computing.GetSubModelPart(name) : computing.CreateSubModelPart(name);
 }
@@ -182,8 +183,8 @@ ContactSearchProcess::ContactSearchProcess(ModelPart& root, ModelPart& interface
                            DidYouMean(check, Keys(checks))));
   }
   if (!(settings_["search_factor"].GetDouble() > 0.0))
-    throw InputError(Concat(settings_.Where(), ".search_factor: must be positive, got ",
-                            settings_["search_factor"].GetDouble()));
+    throw InputError(
+        Concat(settings_.Where(), ".search_factor: must be positive, got ", settings_["search_factor"].GetDouble()));
 }
 
 void ContactSearchProcess::ClearMortarConditions() {
@@ -204,8 +205,7 @@ const PairedCondition& ContactSearchProcess::Prototype(const Geometry& slave, co
   // program's lifetime.
   static std::mutex mutex;
   static std::set<std::string> names;
-  const std::string name =
-      slot_.condition_name + GeometryToken(slave, master) + slot_.final_string;
+  const std::string name = slot_.condition_name + GeometryToken(slave, master) + slot_.final_string;
   const auto& registry = Registry<Condition>::Instance();
   if (!registry.Has(name)) {
     std::vector<std::string> paired;
@@ -215,8 +215,7 @@ const PairedCondition& ContactSearchProcess::Prototype(const Geometry& slave, co
                                      "' is not registered", DidYouMean(name, paired)));
   }
   const auto* prototype = dynamic_cast<const PairedCondition*>(&registry.Get(name));
-  if (!prototype)
-    throw Error(Concat("condition '", name, "' is registered but is not a PairedCondition"));
+  if (!prototype) throw Error(Concat("condition '", name, "' is registered but is not a PairedCondition"));
   {
     std::lock_guard<std::mutex> lock(mutex);
     *interned = &*names.insert(name).first;
@@ -454,12 +453,12 @@ ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
   PredictActiveSet(pairs, stats);
 
   if (pairs.empty() && stats.slave_conditions > 0) {
-    Logger::Warning(Concat(
-        "contact search of ", interface_.FullName(), ": no master condition found for any of the ",
-        stats.slave_conditions, " slave conditions (search radius = search_factor ", search_factor,
-        " x slave size = ", stats.min_search_radius, " .. ", stats.max_search_radius, ", type_search ", type_search_,
-        ", check_gap ", check, "). If the surfaces should touch, increase search_parameters.search_factor "
-        "(or check assume_master_slave and the distance between the surfaces)"));
+    Logger::Warning(Concat("contact search of ", interface_.FullName(), ": no master condition found for any of the ",
+                           stats.slave_conditions, " slave conditions (search radius = search_factor ", search_factor,
+                           " x slave size = ", stats.min_search_radius, " .. ", stats.max_search_radius,
+                           ", type_search ", type_search_, ", check_gap ", check,
+                           "). If the surfaces should touch, increase search_parameters.search_factor "
+                           "(or check assume_master_slave and the distance between the surfaces)"));
   }
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   total_seconds_ += stats.seconds;

@@ -20,7 +20,8 @@ void AddContactConditionsToPython(py::module_& m) {
       "AddExplicitContribution",
       [](Condition& condition, const ProcessInfo& info) {
         auto* pair = dynamic_cast<PairedCondition*>(&condition);
-        if (!pair) throw InputError(Concat("condition ", condition.Id(), " (", condition.Info(), ") is not a pair condition"));
+        if (!pair)
+          throw InputError(Concat("condition ", condition.Id(), " (", condition.Info(), ") is not a pair condition"));
         pair->AddExplicitContribution(info);
       },
       py::arg("condition"), py::arg("process_info"),

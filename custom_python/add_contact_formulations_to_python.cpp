@@ -25,21 +25,26 @@ void AddContactFormulationsToPython(py::module_& m) {
                   "The contact_type values a contact process accepts.")
       .def_property_readonly("mortar_type", &ContactFormulation::MortarType,
                              "Its contact_settings.mortar_type, e.g. 'ALMContactFrictionless'.")
-      .def_property_readonly("process", [](const ContactFormulation& f) { return f.Describe().process; },
-                             "python_module of its contact process, e.g. 'alm_contact_process'.")
-      .def_property_readonly("contact_type", [](const ContactFormulation& f) { return f.Describe().contact_type; },
-                             "That process' contact_type, e.g. 'Frictionless'.")
-      .def_property_readonly("variables", [](const ContactFormulation& f) { return f.Describe().variables; },
-                             "Nodal solution-step variables the solver adds.")
-      .def_property_readonly("dofs", [](const ContactFormulation& f) { return f.Describe().dofs; },
-                             "(DoF, reaction) variable names.")
-      .def_property_readonly("multiplier", [](const ContactFormulation& f) { return f.Describe().multiplier; },
-                             "The nodal multiplier variable ('' without multipliers).")
-      .def_property_readonly("multiplier_blocks",
-                             [](const ContactFormulation& f) { return f.Describe().multiplier_blocks; },
-                             "Multiplier blocks of the contact convergence criteria (0: none).")
-      .def_property_readonly("condensable", [](const ContactFormulation& f) { return f.Describe().condensable; },
-                             "Whether the MixedULM solver can condense its multipliers.")
+      .def_property_readonly(
+          "process", [](const ContactFormulation& f) { return f.Describe().process; },
+          "python_module of its contact process, e.g. 'alm_contact_process'.")
+      .def_property_readonly(
+          "contact_type", [](const ContactFormulation& f) { return f.Describe().contact_type; },
+          "That process' contact_type, e.g. 'Frictionless'.")
+      .def_property_readonly(
+          "variables", [](const ContactFormulation& f) { return f.Describe().variables; },
+          "Nodal solution-step variables the solver adds.")
+      .def_property_readonly(
+          "dofs", [](const ContactFormulation& f) { return f.Describe().dofs; }, "(DoF, reaction) variable names.")
+      .def_property_readonly(
+          "multiplier", [](const ContactFormulation& f) { return f.Describe().multiplier; },
+          "The nodal multiplier variable ('' without multipliers).")
+      .def_property_readonly(
+          "multiplier_blocks", [](const ContactFormulation& f) { return f.Describe().multiplier_blocks; },
+          "Multiplier blocks of the contact convergence criteria (0: none).")
+      .def_property_readonly(
+          "condensable", [](const ContactFormulation& f) { return f.Describe().condensable; },
+          "Whether the MixedULM solver can condense its multipliers.")
       .def("ConditionStem", &ContactFormulation::ConditionStem, py::arg("normal_variation"), py::arg("axisymmetric"),
            "Name stem of its pair conditions, e.g. 'ALMNVFrictionlessMortarContactCondition'.")
       .def("CreateActiveSetCriterion", &ContactFormulation::CreateActiveSetCriterion, py::arg("contact_settings"),

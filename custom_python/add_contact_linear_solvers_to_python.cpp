@@ -42,7 +42,8 @@ void AddContactLinearSolversToPython(py::module_& m) {
       "CreateMixedULMLinearSolver",
       [](std::shared_ptr<LinearSolver> inner_linear_solver) {
         if (!inner_linear_solver) throw InputError("CreateMixedULMLinearSolver: inner_linear_solver is None");
-        return std::make_shared<MixedULMLinearSolver>(std::make_unique<SharedLinearSolver>(std::move(inner_linear_solver)));
+        return std::make_shared<MixedULMLinearSolver>(
+            std::make_unique<SharedLinearSolver>(std::move(inner_linear_solver)));
       },
       py::arg("inner_linear_solver"),
       "mixed_ulm_linear_solver: condenses the dual multipliers of the components contact system (thesis eqs. "

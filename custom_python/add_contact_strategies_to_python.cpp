@@ -7,13 +7,13 @@
 #include "core/solving/builder_and_solver.h"
 #include "core/solving/scheme.h"
 #include "custom_python/python_module.h"
-#include "custom_strategies/custom_strategies/contact_mortar_updater.h"
 #include "custom_strategies/custom_convergencecriterias/alm_frictionless_components_mortar_criteria.h"
 #include "custom_strategies/custom_convergencecriterias/alm_frictionless_mortar_criteria.h"
 #include "custom_strategies/custom_convergencecriterias/block_contact_criteria.h"
 #include "custom_strategies/custom_convergencecriterias/mesh_tying_mortar_criteria.h"
 #include "custom_strategies/custom_convergencecriterias/mortar_and_criteria.h"
 #include "custom_strategies/custom_convergencecriterias/penalty_frictionless_mortar_criteria.h"
+#include "custom_strategies/custom_strategies/contact_mortar_updater.h"
 #include "custom_strategies/custom_strategies/line_search_contact_strategy.h"
 #include "custom_strategies/custom_strategies/residualbased_newton_raphson_contact_strategy.h"
 
@@ -80,8 +80,8 @@ void AddContactStrategiesToPython(py::module_& m) {
       .def_static("GetContactSettingsDefaults", &BlockContactCriteria::GetContactSettingsDefaults,
                   "The keys of contact_settings the block criteria read (ensure_contact, rotation and multiplier "
                   "tolerances) with Kratos' defaults.");
-  BindBlockCriteria<DisplacementContactCriteria>(m, "DisplacementContactCriteria",
-                                                 "displacement_contact_criteria: displacement (and rotation) increments");
+  BindBlockCriteria<DisplacementContactCriteria>(
+      m, "DisplacementContactCriteria", "displacement_contact_criteria: displacement (and rotation) increments");
   BindBlockCriteria<DisplacementResidualContactCriteria>(
       m, "DisplacementResidualContactCriteria", "displacement_residual_contact_criteria: displacement residuals");
   BindBlockCriteria<DisplacementLagrangeMultiplierContactCriteria>(
@@ -115,7 +115,7 @@ void AddContactStrategiesToPython(py::module_& m) {
       "penalty_frictionless_mortar_criteria: a node is active when its weighted gap is negative.");
   py::class_<MeshTyingMortarConvergenceCriteria, ConvergenceCriteria,
              std::shared_ptr<MeshTyingMortarConvergenceCriteria>>(m, "MeshTyingMortarConvergenceCriteria",
-                                                                   "mesh_tying_mortar_criteria: always converged")
+                                                                  "mesh_tying_mortar_criteria: always converged")
       .def(py::init<>(), "Mesh tying has no active set.");
 
   py::class_<MortarAndConvergenceCriteria, AndCriteria, std::shared_ptr<MortarAndConvergenceCriteria>>(
@@ -199,8 +199,9 @@ void AddContactStrategiesToPython(py::module_& m) {
                        bool compute_reactions, bool reform_dofs_at_each_step, bool move_mesh, double min_step,
                        int echo_level) {
              auto s = std::make_shared<LineSearchContactStrategy>(
-                 part, std::move(scheme), std::move(criteria), std::move(builder), ContactNewton::ReadSettings(settings),
-                 max_iteration, compute_reactions, reform_dofs_at_each_step, move_mesh, min_step);
+                 part, std::move(scheme), std::move(criteria), std::move(builder),
+                 ContactNewton::ReadSettings(settings), max_iteration, compute_reactions, reform_dofs_at_each_step,
+                 move_mesh, min_step);
              s->SetEchoLevel(echo_level);
              return s;
            }),

@@ -28,29 +28,41 @@ void AddGeometriesToPython(py::module_& m) {
            "surface in 3D.")
       .def("GlobalCoordinates", &Geometry::GlobalCoordinates, py::arg("local"),
            py::arg("configuration") = Configuration::Current, "The global coordinates of a local point.")
-      .def("PointLocalCoordinates", [](const Geometry& g, const Array3& x, Configuration c) -> py::object {
-        Array3 local;
-        if (!g.PointLocalCoordinates(x, local, c)) return py::none();
-        return py::cast(local);
-      }, py::arg("point"), py::arg("configuration") = Configuration::Current,
-         "The local coordinates of a global point (Newton inversion); None when it does not converge.")
-      .def("IntegrationPoints", [](const Geometry& g, int order) {
-        std::vector<std::pair<Array3, double>> points;
-        for (const auto& p : g.IntegrationPoints(order)) points.emplace_back(p.local, p.weight);
-        return points;
-      }, py::arg("order"), "(local coordinates, weight) of the quadrature points of an order 1 to 5.")
-      .def("ShapeFunctionsValues", [](const Geometry& g, const Array3& local) {
-        Vector N;
-        g.ShapeFunctionsValues(local, N);
-        return N;
-      }, py::arg("local"), "The shape functions N_i at a local point.")
+      .def(
+          "PointLocalCoordinates",
+          [](const Geometry& g, const Array3& x, Configuration c) -> py::object {
+            Array3 local;
+            if (!g.PointLocalCoordinates(x, local, c)) return py::none();
+            return py::cast(local);
+          },
+          py::arg("point"), py::arg("configuration") = Configuration::Current,
+          "The local coordinates of a global point (Newton inversion); None when it does not converge.")
+      .def(
+          "IntegrationPoints",
+          [](const Geometry& g, int order) {
+            std::vector<std::pair<Array3, double>> points;
+            for (const auto& p : g.IntegrationPoints(order)) points.emplace_back(p.local, p.weight);
+            return points;
+          },
+          py::arg("order"), "(local coordinates, weight) of the quadrature points of an order 1 to 5.")
+      .def(
+          "ShapeFunctionsValues",
+          [](const Geometry& g, const Array3& local) {
+            Vector N;
+            g.ShapeFunctionsValues(local, N);
+            return N;
+          },
+          py::arg("local"), "The shape functions N_i at a local point.")
       .def("Faces", &Geometry::Faces,
            "Local node indices of each face (edges in 2D), ordered so that face normals point outwards.")
       .def("__len__", &Geometry::PointsNumber)
-      .def("__getitem__", [](const Geometry& g, std::size_t i) -> Node& {
-        if (i >= g.PointsNumber()) throw py::index_error();
-        return g[i];
-      }, py::arg("index"), py::return_value_policy::reference, "The node at a local index.");
+      .def(
+          "__getitem__",
+          [](const Geometry& g, std::size_t i) -> Node& {
+            if (i >= g.PointsNumber()) throw py::index_error();
+            return g[i];
+          },
+          py::arg("index"), py::return_value_policy::reference, "The node at a local index.");
 }
 
 }  // namespace mc::python

@@ -19,24 +19,27 @@ void AddIoToPython(py::module_& m) {
   py::class_<PendingFixities>(m, "PendingFixities",
                               "The fixities of an mdpa's NodalData blocks, to apply once the solver added the DoFs.")
       .def("__len__", [](const PendingFixities& p) { return p.requests.size(); })
-      .def("Apply", [](const PendingFixities& p) { return MdpaReader::ApplyFixityRequests(p.requests); },
-           "Fixes the requested DoFs that exist now; returns how many found no DoF.");
+      .def(
+          "Apply", [](const PendingFixities& p) { return MdpaReader::ApplyFixityRequests(p.requests); },
+          "Fixes the requested DoFs that exist now; returns how many found no DoF.");
 
-  m.def("ReadModelPart",
-        [](ModelPart& part, const std::string& filename, bool ignore_variables_not_in_solution_step_data) {
-          MdpaReaderOptions options;
-          options.ignore_variables_not_in_solution_step_data = ignore_variables_not_in_solution_step_data;
-          MdpaReader reader(filename, options);
-          {
-            py::gil_scoped_release release;
-            reader.ReadModelPart(part);
-          }
-          return PendingFixities{reader.FixityRequests()};
-        },
-        py::arg("model_part"), py::arg("filename"), py::arg("ignore_variables_not_in_solution_step_data") = false,
-        "Reads a Kratos .mdpa file into the model part; returns the NodalData fixities to apply after AddDofs.");
-  m.def("WriteModelPart", [](const ModelPart& part, const std::string& filename) { MdpaWriter(filename).Write(part); },
-        py::arg("model_part"), py::arg("filename"), "Writes the model part as a Kratos .mdpa file (atomically).");
+  m.def(
+      "ReadModelPart",
+      [](ModelPart& part, const std::string& filename, bool ignore_variables_not_in_solution_step_data) {
+        MdpaReaderOptions options;
+        options.ignore_variables_not_in_solution_step_data = ignore_variables_not_in_solution_step_data;
+        MdpaReader reader(filename, options);
+        {
+          py::gil_scoped_release release;
+          reader.ReadModelPart(part);
+        }
+        return PendingFixities{reader.FixityRequests()};
+      },
+      py::arg("model_part"), py::arg("filename"), py::arg("ignore_variables_not_in_solution_step_data") = false,
+      "Reads a Kratos .mdpa file into the model part; returns the NodalData fixities to apply after AddDofs.");
+  m.def(
+      "WriteModelPart", [](const ModelPart& part, const std::string& filename) { MdpaWriter(filename).Write(part); },
+      py::arg("model_part"), py::arg("filename"), "Writes the model part as a Kratos .mdpa file (atomically).");
   m.def("ReadMaterials", &ReadMaterials, py::arg("model"), py::arg("materials"), py::arg("origin") = "",
         "Applies a Kratos materials.json (spec 1.8): properties, laws and tables to every element and "
         "condition of each listed model part.");

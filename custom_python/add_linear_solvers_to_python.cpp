@@ -12,16 +12,20 @@ void AddLinearSolversToPython(py::module_& m) {
       m, "LinearSolver", "Solves A x = b for the global system (direct solvers reuse their symbolic analysis).")
       .def("Name", &LinearSolver::Name, "The normalised name from the settings, e.g. 'umfpack', 'cg'.")
       .def("IsDirect", &LinearSolver::IsDirect, "Whether it factorizes (rather than iterates).")
-      .def("Solve", [](LinearSolver& solver, const SparseMatrix& A, const Vector& b) {
-        Vector x = Vector::Zero(b.size());
-        solver.Initialize(A);
-        solver.Solve(A, x, b);
-        return x;
-      }, py::arg("A"), py::arg("b"), "Solves A x = b for a scipy.sparse matrix A (converted to CSC).")
+      .def(
+          "Solve",
+          [](LinearSolver& solver, const SparseMatrix& A, const Vector& b) {
+            Vector x = Vector::Zero(b.size());
+            solver.Initialize(A);
+            solver.Solve(A, x, b);
+            return x;
+          },
+          py::arg("A"), py::arg("b"), "Solves A x = b for a scipy.sparse matrix A (converted to CSC).")
       .def("IterationsNumber", &LinearSolver::IterationsNumber, "Iterations of the last solve (1 for direct solvers).");
-  m.def("CreateLinearSolver",
-        [](const Parameters& settings) { return std::shared_ptr<LinearSolver>(CreateLinearSolver(settings)); },
-        py::arg("settings"), "A linear solver from Kratos-style linear_solver_settings (spec section 7).");
+  m.def(
+      "CreateLinearSolver",
+      [](const Parameters& settings) { return std::shared_ptr<LinearSolver>(CreateLinearSolver(settings)); },
+      py::arg("settings"), "A linear solver from Kratos-style linear_solver_settings (spec section 7).");
   m.def("NormalizeLinearSolverName", &NormalizeLinearSolverName, py::arg("name"),
         "The normalised solver name of a Kratos spelling, e.g. 'SkylineLUFactorizationSolver' (spec 7.1).");
 }

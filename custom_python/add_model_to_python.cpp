@@ -32,8 +32,7 @@ void SetHistorical(Node& node, const VariableData& var, const py::handle& value,
 }
 
 const Variable<double>& AsDouble(const VariableData& var) {
-  if (var.Type() != ValueType::Double)
-    throw InputError(Concat(var.Name(), " is not a scalar (double) variable"));
+  if (var.Type() != ValueType::Double) throw InputError(Concat(var.Name(), " is not a scalar (double) variable"));
   return static_cast<const Variable<double>&>(var);
 }
 
@@ -46,7 +45,8 @@ py::array_t<double> NodalValues(const ModelPart& part, const VariableData& var, 
   const VariablesList& list = part.GetNodalSolutionStepVariablesList();
   const int offset = list.Offset(var);
   const std::size_t width = var.Type() == ValueType::Array3 ? 3 : 1;
-  py::array_t<double> out(width == 3 ? std::vector<py::ssize_t>{py::ssize_t(n), 3} : std::vector<py::ssize_t>{py::ssize_t(n)});
+  py::array_t<double> out(width == 3 ? std::vector<py::ssize_t>{py::ssize_t(n), 3}
+                                     : std::vector<py::ssize_t>{py::ssize_t(n)});
   double* dst = out.mutable_data();
   for (std::size_t i = 0; i < n; ++i) {
     const double* src = nodes[i]->StepData(step) + offset;
@@ -55,8 +55,8 @@ py::array_t<double> NodalValues(const ModelPart& part, const VariableData& var, 
   return out;
 }
 
-void SetNodalValues(ModelPart& part, const VariableData& var, py::array_t<double, py::array::c_style | py::array::forcecast> values,
-                    int step) {
+void SetNodalValues(ModelPart& part, const VariableData& var,
+                    py::array_t<double, py::array::c_style | py::array::forcecast> values, int step) {
   const auto& nodes = part.Nodes();
   const std::size_t width = var.Type() == ValueType::Array3 ? 3 : 1;
   if (static_cast<std::size_t>(values.size()) != nodes.size() * width)
@@ -70,7 +70,6 @@ void SetNodalValues(ModelPart& part, const VariableData& var, py::array_t<double
     for (std::size_t k = 0; k < width; ++k) dst[k] = src[i * width + k];
   }
 }
-
 
 /// Non-historical nodal values as (n,) or (n, 3), node-id order.
 py::array_t<double> NodalNonHistoricalValues(const ModelPart& part, const VariableData& var) {
@@ -131,7 +130,8 @@ py::array_t<double> IntegrationPointMeans(const ModelPart& part, const VariableD
   std::vector<Vector> means(ids.size());
   Eigen::Index width = 0;
   for (std::size_t i = 0; i < ids.size(); ++i) {
-    Entity& e = conditions ? static_cast<Entity&>(part.GetCondition(ids[i])) : static_cast<Entity&>(part.GetElement(ids[i]));
+    Entity& e =
+        conditions ? static_cast<Entity&>(part.GetCondition(ids[i])) : static_cast<Entity&>(part.GetElement(ids[i]));
     std::vector<T> values;
     e.CalculateOnIntegrationPoints(static_cast<const Variable<T>&>(var), values, info);
     Vector mean;
@@ -175,26 +175,36 @@ template <class Class>
 Class& BindValues(Class& cls) {
   using Owner = typename Class::type;
   return cls
-      .def("GetValue", [](Owner& o, const VariableData& v) { return GetGeneric(ValuesOf(o), v); }, py::arg("variable"),
-           "The non-historical value of a variable (its zero when not set).")
-      .def("SetValue", [](Owner& o, const VariableData& v, const py::object& value) {
-        ValuesOf(o).SetGeneric(v, FromPython(v, value));
-      }, py::arg("variable"), py::arg("value"), "Sets the non-historical value of a variable.")
-      .def("Has", [](Owner& o, const VariableData& v) {
-        const auto& items = ValuesOf(o).Items();
-        return std::any_of(items.begin(), items.end(),
-                           [&](const auto& item) { return item.first == (v.IsComponent() ? v.Source() : &v); });
-      }, py::arg("variable"), "Whether a non-historical value of the variable is set.");
+      .def(
+          "GetValue", [](Owner& o, const VariableData& v) { return GetGeneric(ValuesOf(o), v); }, py::arg("variable"),
+          "The non-historical value of a variable (its zero when not set).")
+      .def(
+          "SetValue",
+          [](Owner& o, const VariableData& v, const py::object& value) {
+            ValuesOf(o).SetGeneric(v, FromPython(v, value));
+          },
+          py::arg("variable"), py::arg("value"), "Sets the non-historical value of a variable.")
+      .def(
+          "Has",
+          [](Owner& o, const VariableData& v) {
+            const auto& items = ValuesOf(o).Items();
+            return std::any_of(items.begin(), items.end(),
+                               [&](const auto& item) { return item.first == (v.IsComponent() ? v.Source() : &v); });
+          },
+          py::arg("variable"), "Whether a non-historical value of the variable is set.");
 }
 
 /// Is and Set of the flags of a node, entity, model part or process info.
 template <class Class>
 Class& BindFlags(Class& cls) {
   using Owner = typename Class::type;
-  return cls.def("Is", [](const Owner& o, const Flag& flag) { return o.Is(flag); }, py::arg("flag"),
-                 "Whether the flag is set.")
-      .def("Set", [](Owner& o, const Flag& flag, bool value) { o.Set(flag, value); }, py::arg("flag"),
-           py::arg("value") = true, "Sets the flag to value.");
+  return cls
+      .def(
+          "Is", [](const Owner& o, const Flag& flag) { return o.Is(flag); }, py::arg("flag"),
+          "Whether the flag is set.")
+      .def(
+          "Set", [](Owner& o, const Flag& flag, bool value) { o.Set(flag, value); }, py::arg("flag"),
+          py::arg("value") = true, "Sets the flag to value.");
 }
 
 template <class Container>
@@ -208,15 +218,19 @@ py::list AsList(const Container& items) {
 
 void AddModelToPython(py::module_& m) {
   py::class_<Dof>(m, "Dof", "One degree of freedom: a double variable of a node, its reaction, fixity and equation id.")
-      .def_property_readonly("variable", [](const Dof& d) { return d.variable; }, py::return_value_policy::reference,
-                             "The unknown, e.g. DISPLACEMENT_X.")
-      .def_property_readonly("reaction", [](const Dof& d) { return d.reaction; }, py::return_value_policy::reference,
-                             "Its reaction variable, e.g. REACTION_X (None without one).")
+      .def_property_readonly(
+          "variable", [](const Dof& d) { return d.variable; }, py::return_value_policy::reference,
+          "The unknown, e.g. DISPLACEMENT_X.")
+      .def_property_readonly(
+          "reaction", [](const Dof& d) { return d.reaction; }, py::return_value_policy::reference,
+          "Its reaction variable, e.g. REACTION_X (None without one).")
       .def_readwrite("fixed", &Dof::fixed, "Whether the value is prescribed.")
       .def_readonly("equation_id", &Dof::equation_id, "Row of the global system (-1 before the DoF set-up).")
-      .def_property_readonly("node_id", [](const Dof& d) { return d.node->Id(); }, "Id of its node.")
-      .def("Value", [](const Dof& d, int step) { return d.Value(step); }, py::arg("step") = 0,
-           "Historical value of the variable, step 0 the current one.");
+      .def_property_readonly(
+          "node_id", [](const Dof& d) { return d.node->Id(); }, "Id of its node.")
+      .def(
+          "Value", [](const Dof& d, int step) { return d.Value(step); }, py::arg("step") = 0,
+          "Historical value of the variable, step 0 the current one.");
 
   py::class_<Node> node(m, "Node",
                         "A mesh node (Kratos Node): initial and current coordinates, historical values of the last "
@@ -225,36 +239,54 @@ void AddModelToPython(py::module_& m) {
       .def_property_readonly("X", &Node::X, "Current x coordinate.")
       .def_property_readonly("Y", &Node::Y, "Current y coordinate.")
       .def_property_readonly("Z", &Node::Z, "Current z coordinate.")
-      .def_property_readonly("X0", [](const Node& n) { return n.X0()[0]; }, "Initial x coordinate.")
-      .def_property_readonly("Y0", [](const Node& n) { return n.X0()[1]; }, "Initial y coordinate.")
-      .def_property_readonly("Z0", [](const Node& n) { return n.X0()[2]; }, "Initial z coordinate.")
-      .def("Coordinates", [](const Node& n) { return Array3(n.Coordinates()); }, "Current coordinates (x, y, z).")
-      .def("InitialCoordinates", [](const Node& n) { return Array3(n.X0()); }, "Initial coordinates (X0, Y0, Z0).")
+      .def_property_readonly(
+          "X0", [](const Node& n) { return n.X0()[0]; }, "Initial x coordinate.")
+      .def_property_readonly(
+          "Y0", [](const Node& n) { return n.X0()[1]; }, "Initial y coordinate.")
+      .def_property_readonly(
+          "Z0", [](const Node& n) { return n.X0()[2]; }, "Initial z coordinate.")
+      .def(
+          "Coordinates", [](const Node& n) { return Array3(n.Coordinates()); }, "Current coordinates (x, y, z).")
+      .def(
+          "InitialCoordinates", [](const Node& n) { return Array3(n.X0()); }, "Initial coordinates (X0, Y0, Z0).")
       .def("GetSolutionStepValue", &GetHistorical, py::arg("variable"), py::arg("step") = 0,
            "Historical value of a double or Array3 variable, step 0 the current one.")
-      .def("SetSolutionStepValue", [](Node& n, const VariableData& v, const py::object& value) { SetHistorical(n, v, value, 0); },
-           py::arg("variable"), py::arg("value"), "Sets the current historical value of a variable.")
-      .def("SetSolutionStepValue", [](Node& n, const VariableData& v, int step, const py::object& value) { SetHistorical(n, v, value, step); },
-           py::arg("variable"), py::arg("step"), py::arg("value"), "Sets the historical value of a variable at a step.")
+      .def(
+          "SetSolutionStepValue",
+          [](Node& n, const VariableData& v, const py::object& value) { SetHistorical(n, v, value, 0); },
+          py::arg("variable"), py::arg("value"), "Sets the current historical value of a variable.")
+      .def(
+          "SetSolutionStepValue",
+          [](Node& n, const VariableData& v, int step, const py::object& value) { SetHistorical(n, v, value, step); },
+          py::arg("variable"), py::arg("step"), py::arg("value"), "Sets the historical value of a variable at a step.")
       .def("HasSolutionStepValue", &Node::HasSolutionStepValue, py::arg("variable"),
            "Whether the variable is historical in this node's model part.");
   BindFlags(BindValues(node))
-      .def("AddDof", [](Node& n, const VariableData& v, const VariableData* r) -> Dof& {
-             return n.AddDof(AsDouble(v), r ? &AsDouble(*r) : nullptr);
-           }, py::arg("variable"), py::arg("reaction") = nullptr, py::return_value_policy::reference_internal,
-           "Adds (or returns the existing) DoF of a double variable, with an optional reaction variable.")
-      .def("HasDofFor", [](const Node& n, const VariableData& v) { return n.HasDofFor(AsDouble(v)); },
-           py::arg("variable"), "Whether the node has a DoF of the variable.")
-      .def("GetDof", [](const Node& n, const VariableData& v) -> Dof& { return n.GetDof(AsDouble(v)); },
-           py::arg("variable"), py::return_value_policy::reference_internal,
-           "The DoF of the variable (InputError naming node and variable otherwise).")
-      .def("Fix", [](Node& n, const VariableData& v) { n.Fix(AsDouble(v)); }, py::arg("variable"),
-           "Prescribes the DoF of the variable.")
-      .def("Free", [](Node& n, const VariableData& v) { n.Free(AsDouble(v)); }, py::arg("variable"),
-           "Releases the DoF of the variable.")
-      .def("IsFixed", [](const Node& n, const VariableData& v) { return n.IsFixed(AsDouble(v)); }, py::arg("variable"),
-           "Whether the node has a fixed DoF of the variable.")
-      .def("__repr__", [](const Node& n) { return Concat("<Node ", n.Id(), " (", n.X(), ", ", n.Y(), ", ", n.Z(), ")>"); });
+      .def(
+          "AddDof",
+          [](Node& n, const VariableData& v, const VariableData* r) -> Dof& {
+            return n.AddDof(AsDouble(v), r ? &AsDouble(*r) : nullptr);
+          },
+          py::arg("variable"), py::arg("reaction") = nullptr, py::return_value_policy::reference_internal,
+          "Adds (or returns the existing) DoF of a double variable, with an optional reaction variable.")
+      .def(
+          "HasDofFor", [](const Node& n, const VariableData& v) { return n.HasDofFor(AsDouble(v)); },
+          py::arg("variable"), "Whether the node has a DoF of the variable.")
+      .def(
+          "GetDof", [](const Node& n, const VariableData& v) -> Dof& { return n.GetDof(AsDouble(v)); },
+          py::arg("variable"), py::return_value_policy::reference_internal,
+          "The DoF of the variable (InputError naming node and variable otherwise).")
+      .def(
+          "Fix", [](Node& n, const VariableData& v) { n.Fix(AsDouble(v)); }, py::arg("variable"),
+          "Prescribes the DoF of the variable.")
+      .def(
+          "Free", [](Node& n, const VariableData& v) { n.Free(AsDouble(v)); }, py::arg("variable"),
+          "Releases the DoF of the variable.")
+      .def(
+          "IsFixed", [](const Node& n, const VariableData& v) { return n.IsFixed(AsDouble(v)); }, py::arg("variable"),
+          "Whether the node has a fixed DoF of the variable.")
+      .def("__repr__",
+           [](const Node& n) { return Concat("<Node ", n.Id(), " (", n.X(), ", ", n.Y(), ", ", n.Z(), ")>"); });
 
   py::class_<Properties> properties(m, "Properties",
                                     "Material and numerical properties shared by elements and conditions (Kratos "
@@ -262,8 +294,10 @@ void AddModelToPython(py::module_& m) {
   properties.def_property_readonly("Id", &Properties::Id, "The properties' id.");
   BindValues(properties)
       .def("HasConstitutiveLaw", &Properties::HasConstitutiveLaw, "Whether a constitutive law is assigned.")
-      .def("ConstitutiveLawName", [](const Properties& p) { return p.HasConstitutiveLaw() ? p.GetConstitutiveLaw()->Name() : std::string(); },
-           "Registered name of the constitutive law ('' without one).");
+      .def(
+          "ConstitutiveLawName",
+          [](const Properties& p) { return p.HasConstitutiveLaw() ? p.GetConstitutiveLaw()->Name() : std::string(); },
+          "Registered name of the constitutive law ('' without one).");
 
   py::class_<ProcessInfo> process_info(m, "ProcessInfo",
                                        "Global state shared by all parts of a model (Kratos ProcessInfo): TIME, "
@@ -277,33 +311,59 @@ void AddModelToPython(py::module_& m) {
       .def("Info", &Entity::Info, "Registered name of its class, e.g. 'SmallDisplacementElement'.")
       .def("GetGeometry", py::overload_cast<>(&Entity::GetGeometry), py::return_value_policy::reference_internal,
            "Its Geometry.")
-      .def("GetNodes", [](Entity& e) { return AsList(e.GetGeometry().Nodes()); }, "Its nodes, in local order.")
-      .def("NodeIds", [](const Entity& e) {
-        std::vector<IndexType> ids;
-        for (const Node* n : e.GetGeometry().Nodes()) ids.push_back(n->Id());
-        return ids;
-      }, "Ids of its nodes, in local order.")
+      .def(
+          "GetNodes", [](Entity& e) { return AsList(e.GetGeometry().Nodes()); }, "Its nodes, in local order.")
+      .def(
+          "NodeIds",
+          [](const Entity& e) {
+            std::vector<IndexType> ids;
+            for (const Node* n : e.GetGeometry().Nodes()) ids.push_back(n->Id());
+            return ids;
+          },
+          "Ids of its nodes, in local order.")
       .def("GetProperties", &Entity::GetProperties, py::return_value_policy::reference, "Its Properties.")
       .def("IsActive", &Entity::IsActive, "False only when ACTIVE is explicitly reset; builders skip inactive ones.")
       .def("NumberOfIntegrationPoints", &Entity::NumberOfIntegrationPoints,
            "Number of integration points CalculateOnIntegrationPoints returns values for.")
-      .def("CalculateOnIntegrationPoints", [](Entity& e, const VariableData& v, const ProcessInfo& info) -> py::object {
-        switch (v.Type()) {
-          case ValueType::Double: { std::vector<double> out; e.CalculateOnIntegrationPoints(static_cast<const Variable<double>&>(v), out, info); return py::cast(out); }
-          case ValueType::Array3: { std::vector<Array3> out; e.CalculateOnIntegrationPoints(static_cast<const Variable<Array3>&>(v), out, info); return py::cast(out); }
-          case ValueType::Vector: { std::vector<Vector> out; e.CalculateOnIntegrationPoints(static_cast<const Variable<Vector>&>(v), out, info); return py::cast(out); }
-          case ValueType::Matrix: { std::vector<Matrix> out; e.CalculateOnIntegrationPoints(static_cast<const Variable<Matrix>&>(v), out, info); return py::cast(out); }
-          default: throw InputError(Concat(v.Name(), " cannot be computed on integration points"));
-        }
-      }, py::arg("variable"), py::arg("process_info"),
-         "The values of a result variable (stress, strain, ...) at each integration point.")
-      .def("CalculateLocalSystem", [](Entity& e, const ProcessInfo& info) {
-        Matrix lhs;
-        Vector rhs;
-        e.CalculateLocalSystem(lhs, rhs, info);
-        return py::make_tuple(lhs, rhs);
-      }, py::arg("process_info"),
-         "(LHS, RHS): LHS = d(residual)/d(unknowns), RHS = external - internal forces, in GetDofList order.")
+      .def(
+          "CalculateOnIntegrationPoints",
+          [](Entity& e, const VariableData& v, const ProcessInfo& info) -> py::object {
+            switch (v.Type()) {
+              case ValueType::Double: {
+                std::vector<double> out;
+                e.CalculateOnIntegrationPoints(static_cast<const Variable<double>&>(v), out, info);
+                return py::cast(out);
+              }
+              case ValueType::Array3: {
+                std::vector<Array3> out;
+                e.CalculateOnIntegrationPoints(static_cast<const Variable<Array3>&>(v), out, info);
+                return py::cast(out);
+              }
+              case ValueType::Vector: {
+                std::vector<Vector> out;
+                e.CalculateOnIntegrationPoints(static_cast<const Variable<Vector>&>(v), out, info);
+                return py::cast(out);
+              }
+              case ValueType::Matrix: {
+                std::vector<Matrix> out;
+                e.CalculateOnIntegrationPoints(static_cast<const Variable<Matrix>&>(v), out, info);
+                return py::cast(out);
+              }
+              default: throw InputError(Concat(v.Name(), " cannot be computed on integration points"));
+            }
+          },
+          py::arg("variable"), py::arg("process_info"),
+          "The values of a result variable (stress, strain, ...) at each integration point.")
+      .def(
+          "CalculateLocalSystem",
+          [](Entity& e, const ProcessInfo& info) {
+            Matrix lhs;
+            Vector rhs;
+            e.CalculateLocalSystem(lhs, rhs, info);
+            return py::make_tuple(lhs, rhs);
+          },
+          py::arg("process_info"),
+          "(LHS, RHS): LHS = d(residual)/d(unknowns), RHS = external - internal forces, in GetDofList order.")
       .def("__repr__", [](const Entity& e) { return Concat("<", e.Info(), " ", e.Id(), ">"); });
   BindFlags(BindValues(entity));
   py::class_<Element, Entity>(m, "Element", "A finite element of the domain, created by its registered name.");
@@ -328,10 +388,10 @@ void AddModelToPython(py::module_& m) {
       .def("GetBufferSize", &ModelPart::GetBufferSize, "Number of steps of nodal history kept.")
       .def("SetBufferSize", &ModelPart::SetBufferSize, py::arg("buffer_size"),
            "Resizes the history of every node of the tree.")
-      .def_property_readonly("ProcessInfo", py::overload_cast<>(&ModelPart::GetProcessInfo), py::return_value_policy::reference_internal,
-                             "The ProcessInfo of its tree.")
-      .def("GetProcessInfo", py::overload_cast<>(&ModelPart::GetProcessInfo), py::return_value_policy::reference_internal,
-           "The ProcessInfo of its tree.")
+      .def_property_readonly("ProcessInfo", py::overload_cast<>(&ModelPart::GetProcessInfo),
+                             py::return_value_policy::reference_internal, "The ProcessInfo of its tree.")
+      .def("GetProcessInfo", py::overload_cast<>(&ModelPart::GetProcessInfo),
+           py::return_value_policy::reference_internal, "The ProcessInfo of its tree.")
       .def("CloneTimeStep", &ModelPart::CloneTimeStep, py::arg("time"),
            "Advances TIME (and STEP) and shifts the history of every node.")
       .def("CreateNewNode", &ModelPart::CreateNewNode, py::arg("id"), py::arg("x"), py::arg("y"), py::arg("z"),
@@ -341,33 +401,40 @@ void AddModelToPython(py::module_& m) {
       .def("GetNode", &ModelPart::GetNode, py::arg("id"), py::return_value_policy::reference,
            "The node of this id (InputError otherwise).")
       .def("HasNode", &ModelPart::HasNode, py::arg("id"), "Whether it holds the node of this id.")
-      .def_property_readonly("Nodes", [](const ModelPart& p) { return AsList(p.Nodes()); }, "Its nodes, in id order.")
+      .def_property_readonly(
+          "Nodes", [](const ModelPart& p) { return AsList(p.Nodes()); }, "Its nodes, in id order.")
       .def("NumberOfNodes", &ModelPart::NumberOfNodes, "Number of its nodes.")
-      .def("CreateNewElement", [](ModelPart& p, const std::string& name, IndexType id, const std::vector<IndexType>& nodes, Properties& props) -> Element& {
-        return p.CreateNewElement(name, id, nodes, &props);
-      }, py::arg("name"), py::arg("id"), py::arg("node_ids"), py::arg("properties"), py::return_value_policy::reference,
-         "Creates an element of a registered name (e.g. 'SmallDisplacementElement2D4N') on the nodes of these ids.")
-      .def("CreateNewCondition", [](ModelPart& p, const std::string& name, IndexType id, const std::vector<IndexType>& nodes, Properties& props) -> Condition& {
-        return p.CreateNewCondition(name, id, nodes, &props);
-      }, py::arg("name"), py::arg("id"), py::arg("node_ids"), py::arg("properties"), py::return_value_policy::reference,
-         "Creates a condition of a registered name (e.g. 'LineLoadCondition2D2N') on the nodes of these ids.")
+      .def(
+          "CreateNewElement",
+          [](ModelPart& p, const std::string& name, IndexType id, const std::vector<IndexType>& nodes,
+             Properties& props) -> Element& { return p.CreateNewElement(name, id, nodes, &props); },
+          py::arg("name"), py::arg("id"), py::arg("node_ids"), py::arg("properties"),
+          py::return_value_policy::reference,
+          "Creates an element of a registered name (e.g. 'SmallDisplacementElement2D4N') on the nodes of these ids.")
+      .def(
+          "CreateNewCondition",
+          [](ModelPart& p, const std::string& name, IndexType id, const std::vector<IndexType>& nodes,
+             Properties& props) -> Condition& { return p.CreateNewCondition(name, id, nodes, &props); },
+          py::arg("name"), py::arg("id"), py::arg("node_ids"), py::arg("properties"),
+          py::return_value_policy::reference,
+          "Creates a condition of a registered name (e.g. 'LineLoadCondition2D2N') on the nodes of these ids.")
       .def("AddElements", &ModelPart::AddElements, py::arg("ids"), "Adds existing elements of the root by id.")
       .def("AddConditions", &ModelPart::AddConditions, py::arg("ids"), "Adds existing conditions of the root by id.")
       .def("GetElement", &ModelPart::GetElement, py::arg("id"), py::return_value_policy::reference,
            "The element of this id (InputError otherwise).")
       .def("GetCondition", &ModelPart::GetCondition, py::arg("id"), py::return_value_policy::reference,
            "The condition of this id (InputError otherwise).")
-      .def_property_readonly("Elements", [](const ModelPart& p) { return AsList(p.Elements()); },
-                             "Its elements, in id order.")
-      .def_property_readonly("Conditions", [](const ModelPart& p) { return AsList(p.Conditions()); },
-                             "Its conditions, in id order.")
+      .def_property_readonly(
+          "Elements", [](const ModelPart& p) { return AsList(p.Elements()); }, "Its elements, in id order.")
+      .def_property_readonly(
+          "Conditions", [](const ModelPart& p) { return AsList(p.Conditions()); }, "Its conditions, in id order.")
       .def("NumberOfElements", &ModelPart::NumberOfElements, "Number of its elements.")
       .def("NumberOfConditions", &ModelPart::NumberOfConditions, "Number of its conditions.")
       .def("GetProperties", &ModelPart::GetOrCreateProperties, py::arg("id"), py::return_value_policy::reference,
            "The properties of this id, created in the root when missing, and listed here.")
       .def("HasProperties", &ModelPart::HasProperties, py::arg("id"), "Whether it lists the properties of this id.")
-      .def_property_readonly("Properties", [](const ModelPart& p) { return AsList(p.PropertiesList()); },
-                             "Its properties.")
+      .def_property_readonly(
+          "Properties", [](const ModelPart& p) { return AsList(p.PropertiesList()); }, "Its properties.")
       .def("CreateSubModelPart", &ModelPart::CreateSubModelPart, py::arg("name"), py::return_value_policy::reference,
            "Creates a sub-model part of this name.")
       .def("HasSubModelPart", &ModelPart::HasSubModelPart, py::arg("name"),
@@ -375,63 +442,78 @@ void AddModelToPython(py::module_& m) {
       .def("GetSubModelPart", &ModelPart::GetSubModelPart, py::arg("name"), py::return_value_policy::reference,
            "The sub-model part of this name or dotted path (InputError with suggestions otherwise).")
       .def("RemoveSubModelPart", &ModelPart::RemoveSubModelPart, py::arg("name"), "Removes a sub-model part.")
-      .def_property_readonly("SubModelParts", [](const ModelPart& p) { return AsList(p.SubModelParts()); },
-                             "Its direct sub-model parts.")
+      .def_property_readonly(
+          "SubModelParts", [](const ModelPart& p) { return AsList(p.SubModelParts()); }, "Its direct sub-model parts.")
       .def("SubModelPartNames", &ModelPart::SubModelPartNames, "Names of its direct sub-model parts.")
       // numpy bulk access (copies, in node-id order)
-      .def("NodeIds", [](const ModelPart& p) {
-        py::array_t<std::int64_t> ids(py::ssize_t(p.NumberOfNodes()));
-        auto* d = ids.mutable_data();
-        std::size_t i = 0;
-        for (const Node* n : p.Nodes()) d[i++] = static_cast<std::int64_t>(n->Id());
-        return ids;
-      }, "Node ids as an int64 array (n,), in id order.")
-      .def("NodeCoordinates", [](const ModelPart& p, bool initial) {
-        py::array_t<double> x({py::ssize_t(p.NumberOfNodes()), py::ssize_t(3)});
-        auto* d = x.mutable_data();
-        std::size_t i = 0;
-        for (const Node* n : p.Nodes()) {
-          const Array3& c = initial ? n->X0() : n->Coordinates();
-          for (int k = 0; k < 3; ++k) d[3 * i + k] = c[k];
-          ++i;
-        }
-        return x;
-      }, py::arg("initial") = false, "Current (or initial) coordinates of every node, shape (n, 3), in node-id order.")
+      .def(
+          "NodeIds",
+          [](const ModelPart& p) {
+            py::array_t<std::int64_t> ids(py::ssize_t(p.NumberOfNodes()));
+            auto* d = ids.mutable_data();
+            std::size_t i = 0;
+            for (const Node* n : p.Nodes()) d[i++] = static_cast<std::int64_t>(n->Id());
+            return ids;
+          },
+          "Node ids as an int64 array (n,), in id order.")
+      .def(
+          "NodeCoordinates",
+          [](const ModelPart& p, bool initial) {
+            py::array_t<double> x({py::ssize_t(p.NumberOfNodes()), py::ssize_t(3)});
+            auto* d = x.mutable_data();
+            std::size_t i = 0;
+            for (const Node* n : p.Nodes()) {
+              const Array3& c = initial ? n->X0() : n->Coordinates();
+              for (int k = 0; k < 3; ++k) d[3 * i + k] = c[k];
+              ++i;
+            }
+            return x;
+          },
+          py::arg("initial") = false, "Current (or initial) coordinates of every node, shape (n, 3), in node-id order.")
       .def("GetNodalValues", &NodalValues, py::arg("variable"), py::arg("step") = 0,
            "Historical values of every node, shape (n,) or (n, 3), in node-id order.")
       .def("SetNodalValues", &SetNodalValues, py::arg("variable"), py::arg("values"), py::arg("step") = 0,
            "Sets the historical values of every node from an array (n,) or (n, 3) in node-id order.")
       .def("GetNodalNonHistoricalValues", &NodalNonHistoricalValues, py::arg("variable"),
            "Non-historical values of every node, shape (n,) or (n, 3), in node-id order.")
-      .def("GetNodalFlags", [](const ModelPart& p, const Flag& flag) {
-        py::array_t<bool> out(py::ssize_t(p.NumberOfNodes()));
-        auto* d = out.mutable_data();
-        std::size_t i = 0;
-        for (const Node* n : p.Nodes()) d[i++] = n->Is(flag);
-        return out;
-      }, py::arg("flag"), "Whether each node has the flag set, shape (n,), in node-id order.")
-      .def("EntityConnectivity", [](const ModelPart& p, bool conditions) {
-        return conditions ? Connectivity(p.Conditions()) : Connectivity(p.Elements());
-      }, py::arg("conditions") = false,
-         "{geometry name: (entity ids (m,), node ids (m, k))} of the elements (or conditions).")
-      .def("IntegrationPointMeans", [](const ModelPart& p, const VariableData& v, const std::vector<IndexType>& ids,
-                                       bool conditions) {
-        switch (v.Type()) {
-          case ValueType::Double: return IntegrationPointMeans<double>(p, v, ids, conditions);
-          case ValueType::Array3: return IntegrationPointMeans<Array3>(p, v, ids, conditions);
-          case ValueType::Vector: return IntegrationPointMeans<Vector>(p, v, ids, conditions);
-          case ValueType::Matrix: return IntegrationPointMeans<Matrix>(p, v, ids, conditions);
-          default: throw InputError(Concat(v.Name(), " cannot be computed on integration points"));
-        }
-      }, py::arg("variable"), py::arg("entity_ids"), py::arg("conditions") = false,
-         "Mean over the integration points of each listed entity (see the writers).")
+      .def(
+          "GetNodalFlags",
+          [](const ModelPart& p, const Flag& flag) {
+            py::array_t<bool> out(py::ssize_t(p.NumberOfNodes()));
+            auto* d = out.mutable_data();
+            std::size_t i = 0;
+            for (const Node* n : p.Nodes()) d[i++] = n->Is(flag);
+            return out;
+          },
+          py::arg("flag"), "Whether each node has the flag set, shape (n,), in node-id order.")
+      .def(
+          "EntityConnectivity",
+          [](const ModelPart& p, bool conditions) {
+            return conditions ? Connectivity(p.Conditions()) : Connectivity(p.Elements());
+          },
+          py::arg("conditions") = false,
+          "{geometry name: (entity ids (m,), node ids (m, k))} of the elements (or conditions).")
+      .def(
+          "IntegrationPointMeans",
+          [](const ModelPart& p, const VariableData& v, const std::vector<IndexType>& ids, bool conditions) {
+            switch (v.Type()) {
+              case ValueType::Double: return IntegrationPointMeans<double>(p, v, ids, conditions);
+              case ValueType::Array3: return IntegrationPointMeans<Array3>(p, v, ids, conditions);
+              case ValueType::Vector: return IntegrationPointMeans<Vector>(p, v, ids, conditions);
+              case ValueType::Matrix: return IntegrationPointMeans<Matrix>(p, v, ids, conditions);
+              default: throw InputError(Concat(v.Name(), " cannot be computed on integration points"));
+            }
+          },
+          py::arg("variable"), py::arg("entity_ids"), py::arg("conditions") = false,
+          "Mean over the integration points of each listed entity (see the writers).")
       .def("__repr__", [](const ModelPart& p) {
         return Concat("<ModelPart ", p.FullName(), ": ", p.NumberOfNodes(), " nodes, ", p.NumberOfElements(),
                       " elements, ", p.NumberOfConditions(), " conditions>");
       });
   BindFlags(model_part);
 
-  py::class_<Model>(m, "Model", "Owner of the root model parts of a simulation, addressed by dotted names (Kratos Model).")
+  py::class_<Model>(m, "Model",
+                    "Owner of the root model parts of a simulation, addressed by dotted names (Kratos Model).")
       .def(py::init<>(), "An empty model.")
       .def("CreateModelPart", &Model::CreateModelPart, py::arg("name"), py::arg("buffer_size") = 1,
            py::return_value_policy::reference_internal,
@@ -444,10 +526,13 @@ void AddModelToPython(py::module_& m) {
       .def("DeleteModelPart", &Model::DeleteModelPart, py::arg("name"), "Deletes a root model part.")
       .def("ModelPartNames", &Model::ModelPartNames, "Names of the root model parts.");
 
-  m.def("ElementNames", [] { return Registry<Element>::Instance().Names(); }, "Names of all registered elements.");
-  m.def("ConditionNames", [] { return Registry<Condition>::Instance().Names(); }, "Names of all registered conditions.");
-  m.def("ConstitutiveLawNames", [] { return Registry<ConstitutiveLaw>::Instance().Names(); },
-        "Names of all registered constitutive laws.");
+  m.def(
+      "ElementNames", [] { return Registry<Element>::Instance().Names(); }, "Names of all registered elements.");
+  m.def(
+      "ConditionNames", [] { return Registry<Condition>::Instance().Names(); }, "Names of all registered conditions.");
+  m.def(
+      "ConstitutiveLawNames", [] { return Registry<ConstitutiveLaw>::Instance().Names(); },
+      "Names of all registered constitutive laws.");
 }
 
 }  // namespace mc::python

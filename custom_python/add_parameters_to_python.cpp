@@ -22,34 +22,42 @@ void AddParametersToPython(py::module_& m) {
       .def("size", &Parameters::size, "Number of keys of an object, or items of an array.")
       .def("keys", &Parameters::Keys, "The keys of an object, in order.")
       .def("Keys", &Parameters::Keys, "The keys of an object, in order.")
-      .def("values", [](const Parameters& p) {
-        std::vector<Parameters> out;
-        if (p.IsArray()) {
-          for (std::size_t i = 0; i < p.size(); ++i) out.push_back(p[i]);
-        } else {
-          for (const auto& k : p.Keys()) out.push_back(p[k]);
-        }
-        return out;
-      }, "Sub-views of the values of an object, or of the items of an array.")
-      .def("items", [](const Parameters& p) {
-        std::vector<std::pair<std::string, Parameters>> out;
-        for (const auto& k : p.Keys()) out.emplace_back(k, p[k]);
-        return out;
-      }, "(key, sub-view) pairs of an object.")
-      .def("__iter__", [](const Parameters& p) {
-        py::list items;
-        if (p.IsArray()) {
-          for (std::size_t i = 0; i < p.size(); ++i) items.append(p[i]);
-        } else {
-          for (const auto& k : p.Keys()) items.append(k);
-        }
-        return py::iter(items);
-      })
+      .def(
+          "values",
+          [](const Parameters& p) {
+            std::vector<Parameters> out;
+            if (p.IsArray()) {
+              for (std::size_t i = 0; i < p.size(); ++i) out.push_back(p[i]);
+            } else {
+              for (const auto& k : p.Keys()) out.push_back(p[k]);
+            }
+            return out;
+          },
+          "Sub-views of the values of an object, or of the items of an array.")
+      .def(
+          "items",
+          [](const Parameters& p) {
+            std::vector<std::pair<std::string, Parameters>> out;
+            for (const auto& k : p.Keys()) out.emplace_back(k, p[k]);
+            return out;
+          },
+          "(key, sub-view) pairs of an object.")
+      .def("__iter__",
+           [](const Parameters& p) {
+             py::list items;
+             if (p.IsArray()) {
+               for (std::size_t i = 0; i < p.size(); ++i) items.append(p[i]);
+             } else {
+               for (const auto& k : p.Keys()) items.append(k);
+             }
+             return py::iter(items);
+           })
       .def("Path", &Parameters::Path, "Dotted path of this view inside its document ('' for the root).")
       .def("Where", &Parameters::Where, "The 'file: path' prefix of error messages about this view.")
       .def("IsNull", &Parameters::IsNull, "Whether the value is null.")
       .def("IsNumber", &Parameters::IsNumber, "Whether the value is a number (int or float).")
-      .def("IsDouble", &Parameters::IsDouble, "Whether the value is a floating-point number (written with a decimal point or exponent).")
+      .def("IsDouble", &Parameters::IsDouble,
+           "Whether the value is a floating-point number (written with a decimal point or exponent).")
       .def("IsInt", &Parameters::IsInt, "Whether the value is an integer.")
       .def("IsBool", &Parameters::IsBool, "Whether the value is a boolean.")
       .def("IsString", &Parameters::IsString, "Whether the value is a string.")
@@ -71,11 +79,12 @@ void AddParametersToPython(py::module_& m) {
       .def("SetString", &Parameters::SetString, py::arg("value"), "Replaces the value by a string.")
       .def("SetVector", &Parameters::SetVector, py::arg("value"), "Replaces the value by an array of numbers.")
       .def("SetMatrix", &Parameters::SetMatrix, py::arg("value"), "Replaces the value by an array of arrays.")
-      .def("SetStringArray", &Parameters::SetStringArray, py::arg("value"), "Replaces the value by an array of strings.")
+      .def("SetStringArray", &Parameters::SetStringArray, py::arg("value"),
+           "Replaces the value by an array of strings.")
       .def("SetValue", py::overload_cast<const Parameters&>(&Parameters::SetValue), py::arg("value"),
            "Replaces the value by a deep copy of another's.")
-      .def("SetValue", py::overload_cast<const std::string&, const Parameters&>(&Parameters::SetValue),
-           py::arg("key"), py::arg("value"), "Replaces the value of an existing key (InputError if absent).")
+      .def("SetValue", py::overload_cast<const std::string&, const Parameters&>(&Parameters::SetValue), py::arg("key"),
+           py::arg("value"), "Replaces the value of an existing key (InputError if absent).")
       .def("AddValue", &Parameters::AddValue, py::arg("key"), py::arg("value"),
            "Adds a deep copy of value under key (overwrites an existing one).")
       .def("AddEmptyValue", &Parameters::AddEmptyValue, py::arg("key"),

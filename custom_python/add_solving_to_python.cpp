@@ -22,13 +22,17 @@ namespace mc::python {
 
 void AddSolvingToPython(py::module_& m) {
   py::class_<Scheme, std::shared_ptr<Scheme>>(
-      m, "Scheme", "Time integration of the unknowns: what is assembled per entity and how DoFs move with an increment.")
+      m, "Scheme",
+      "Time integration of the unknowns: what is assembled per entity and how DoFs move with an increment.")
       .def("Name", &Scheme::Name, "The settings name, e.g. 'static', 'bossak', 'newmark'.");
-  py::class_<ResidualBasedIncrementalUpdateStaticScheme, Scheme, std::shared_ptr<ResidualBasedIncrementalUpdateStaticScheme>>(
-      m, "StaticScheme", "Incremental update u += du (static problems; Kratos ResidualBasedIncrementalUpdateStaticScheme).")
+  py::class_<ResidualBasedIncrementalUpdateStaticScheme, Scheme,
+             std::shared_ptr<ResidualBasedIncrementalUpdateStaticScheme>>(
+      m, "StaticScheme",
+      "Incremental update u += du (static problems; Kratos ResidualBasedIncrementalUpdateStaticScheme).")
       .def(py::init<>(), "The static scheme.");
   py::class_<ResidualBasedBossakDisplacementScheme, Scheme, std::shared_ptr<ResidualBasedBossakDisplacementScheme>>(
-      m, "BossakScheme", "Bossak (alpha_m) implicit dynamics; Newmark for alpha_m = 0 (Kratos "
+      m, "BossakScheme",
+      "Bossak (alpha_m) implicit dynamics; Newmark for alpha_m = 0 (Kratos "
       "ResidualBasedBossakDisplacementScheme).")
       .def(py::init<double, std::optional<double>>(), py::arg("alpha_m") = -0.3, py::arg("newmark_beta") = py::none(),
            "alpha_m: damp_factor_m; newmark_beta: beta, (1 - alpha_m)^2 / 4 when None; gamma = 1/2 - alpha_m.")
@@ -46,11 +50,13 @@ void AddSolvingToPython(py::module_& m) {
       .def_readonly("name", &CriterionValue::name, "What is measured, e.g. '|du|/|u|'.")
       .def_readonly("value", &CriterionValue::value, "The measured value.")
       .def_readonly("tolerance", &CriterionValue::tolerance, "Its tolerance.")
-      .def("__repr__", [](const CriterionValue& v) { return Concat(v.name, " = ", v.value, " (tol ", v.tolerance, ")"); });
+      .def("__repr__",
+           [](const CriterionValue& v) { return Concat(v.name, " = ", v.value, " (tol ", v.tolerance, ")"); });
   py::class_<ConvergenceCriteria, std::shared_ptr<ConvergenceCriteria>>(
       m, "ConvergenceCriteria", "Decides when a Newton loop has converged (Kratos ConvergenceCriteria).")
       .def("Name", &ConvergenceCriteria::Name, "The settings name, e.g. 'displacement_criterion'.")
-      .def("SetEchoLevel", &ConvergenceCriteria::SetEchoLevel, py::arg("level"), "Verbosity: 0 silent, higher prints more.")
+      .def("SetEchoLevel", &ConvergenceCriteria::SetEchoLevel, py::arg("level"),
+           "Verbosity: 0 silent, higher prints more.")
       .def("LastValues", &ConvergenceCriteria::LastValues, "The CriterionValue measures of the last check.");
   py::class_<DisplacementCriteria, ConvergenceCriteria, std::shared_ptr<DisplacementCriteria>>(
       m, "DisplacementCriteria",
@@ -86,17 +92,23 @@ void AddSolvingToPython(py::module_& m) {
       .def("NumberOfDofs", &BuilderAndSolver::NumberOfDofs, "Number of DoFs of the DoF set (fixed ones included).")
       .def("SystemSize", &BuilderAndSolver::SystemSize, "Number of unknowns of the linear system solved.")
       .def("GetTimings", &BuilderAndSolver::GetTimings, py::return_value_policy::copy, "Its BuilderTimings so far.")
-      .def("SystemMatrixNonZeros", [](const BuilderAndSolver& b) { return b.SystemMatrix().nonZeros(); },
-           "Non-zeros of the last system matrix.")
-      .def("AddConstraint", [](BuilderAndSolver& b, std::shared_ptr<MasterSlaveConstraint> c) { b.AddConstraint(std::move(c)); },
-           py::arg("constraint"), "Adds a MasterSlaveConstraint; the DoF set and numbering are redone at the next build.")
+      .def(
+          "SystemMatrixNonZeros", [](const BuilderAndSolver& b) { return b.SystemMatrix().nonZeros(); },
+          "Non-zeros of the last system matrix.")
+      .def(
+          "AddConstraint",
+          [](BuilderAndSolver& b, std::shared_ptr<MasterSlaveConstraint> c) { b.AddConstraint(std::move(c)); },
+          py::arg("constraint"),
+          "Adds a MasterSlaveConstraint; the DoF set and numbering are redone at the next build.")
       .def("ClearConstraints", &BuilderAndSolver::ClearConstraints, "Removes every constraint.");
 
   py::class_<MasterSlaveConstraint, std::shared_ptr<MasterSlaveConstraint>>(
       m, "MasterSlaveConstraint", "Linear constraint slave = sum_i weight_i * master_i + constant.")
-      .def(py::init([](IndexType id, Dof& slave, std::vector<Dof*> masters, std::vector<double> weights, double constant) {
-             return std::make_shared<MasterSlaveConstraint>(id, slave, std::move(masters), std::move(weights), constant);
-           }),
+      .def(py::init(
+               [](IndexType id, Dof& slave, std::vector<Dof*> masters, std::vector<double> weights, double constant) {
+                 return std::make_shared<MasterSlaveConstraint>(id, slave, std::move(masters), std::move(weights),
+                                                                constant);
+               }),
            py::arg("id"), py::arg("slave"), py::arg("masters"), py::arg("weights"), py::arg("constant") = 0.0,
            "InputError when masters and weights differ in size or the slave is also a master.")
       .def("Id", &MasterSlaveConstraint::Id, "The constraint's id.");
@@ -104,7 +116,9 @@ void AddSolvingToPython(py::module_& m) {
       m, "BlockBuilderAndSolver",
       "block: every DoF is an unknown; fixed rows and columns are zeroed with a positive diagonal (Kratos "
       "ResidualBasedBlockBuilderAndSolver).")
-      .def(py::init([](std::shared_ptr<LinearSolver> solver) { return std::make_shared<BlockBuilderAndSolver>(std::move(solver)); }),
+      .def(py::init([](std::shared_ptr<LinearSolver> solver) {
+             return std::make_shared<BlockBuilderAndSolver>(std::move(solver));
+           }),
            py::arg("linear_solver"), "Solves with linear_solver.");
   py::class_<EliminationBuilderAndSolver, BuilderAndSolver, std::shared_ptr<EliminationBuilderAndSolver>>(
       m, "EliminationBuilderAndSolver",
@@ -116,7 +130,8 @@ void AddSolvingToPython(py::module_& m) {
       .def_readonly("residual_norm", &IterationRecord::residual_norm,
                     "|f_ext - f_int| over the free DoFs at the start of the iteration.")
       .def_readonly("increment_norm", &IterationRecord::increment_norm, "|du| applied in the iteration.")
-      .def_readonly("step_length", &IterationRecord::step_length, "Line-search factor applied to the increment (1: Newton).")
+      .def_readonly("step_length", &IterationRecord::step_length,
+                    "Line-search factor applied to the increment (1: Newton).")
       .def_readonly("criteria", &IterationRecord::criteria, "The CriterionValue measures of the criteria.")
       .def_readonly("converged", &IterationRecord::converged, "Whether the criteria were met.")
       .def("__repr__", [](const IterationRecord& r) {
@@ -126,33 +141,47 @@ void AddSolvingToPython(py::module_& m) {
   py::class_<SolvingStrategy, std::shared_ptr<SolvingStrategy>>(
       m, "SolvingStrategy", "Advances one model part by one time or load step (Kratos SolvingStrategy).")
       .def("Name", &SolvingStrategy::Name, "The settings name: 'linear', 'newton_raphson', 'line_search', 'explicit'.")
-      .def("Initialize", [](SolvingStrategy& s) { WithoutGil([&] { s.Initialize(); }); }, "Once, before the first step.")
-      .def("InitializeSolutionStep", [](SolvingStrategy& s) { WithoutGil([&] { s.InitializeSolutionStep(); }); },
-           "At the start of a step (DoF set-up on the first one).")
-      .def("Predict", [](SolvingStrategy& s) { WithoutGil([&] { s.Predict(); }); }, "First guess of the step.")
-      .def("SolveSolutionStep", [](SolvingStrategy& s) { return WithoutGil([&] { return s.SolveSolutionStep(); }); },
-           "Solves the step; False when it did not converge (the model keeps the last iterate).")
-      .def("FinalizeSolutionStep", [](SolvingStrategy& s) { WithoutGil([&] { s.FinalizeSolutionStep(); }); },
-           "At the end of a step (reactions, entities' finalization).")
-      .def("Solve", [](SolvingStrategy& s) { return WithoutGil([&] { return s.Solve(); }); },
-           "Initialize (first time), InitializeSolutionStep, Predict, SolveSolutionStep, FinalizeSolutionStep; "
-           "whether the step converged.")
+      .def(
+          "Initialize", [](SolvingStrategy& s) { WithoutGil([&] { s.Initialize(); }); }, "Once, before the first step.")
+      .def(
+          "InitializeSolutionStep", [](SolvingStrategy& s) { WithoutGil([&] { s.InitializeSolutionStep(); }); },
+          "At the start of a step (DoF set-up on the first one).")
+      .def(
+          "Predict", [](SolvingStrategy& s) { WithoutGil([&] { s.Predict(); }); }, "First guess of the step.")
+      .def(
+          "SolveSolutionStep", [](SolvingStrategy& s) { return WithoutGil([&] { return s.SolveSolutionStep(); }); },
+          "Solves the step; False when it did not converge (the model keeps the last iterate).")
+      .def(
+          "FinalizeSolutionStep", [](SolvingStrategy& s) { WithoutGil([&] { s.FinalizeSolutionStep(); }); },
+          "At the end of a step (reactions, entities' finalization).")
+      .def(
+          "Solve", [](SolvingStrategy& s) { return WithoutGil([&] { return s.Solve(); }); },
+          "Initialize (first time), InitializeSolutionStep, Predict, SolveSolutionStep, FinalizeSolutionStep; "
+          "whether the step converged.")
       .def("Clear", &SolvingStrategy::Clear, "Frees the system and the DoF set; the next step sets them up again.")
       .def("Check", &SolvingStrategy::Check, "Validates the model (entities, variables) before the first step.")
       .def("SetEchoLevel", &SolvingStrategy::SetEchoLevel, py::arg("level"), "Verbosity: 0 silent, higher prints more.")
-      .def("GetIterationNumber", [](const SolvingStrategy& s) -> int {
-        if (const auto* newton = dynamic_cast<const NewtonRaphsonStrategy*>(&s))
-          return static_cast<int>(newton->IterationHistory().size());
-        return 1;
-      }, "Iterations of the last step (1 for non-Newton strategies).")
-      .def("GetIterationHistory", [](const SolvingStrategy& s) {
-        if (const auto* newton = dynamic_cast<const NewtonRaphsonStrategy*>(&s)) return newton->IterationHistory();
-        return std::vector<IterationRecord>{};
-      }, "The IterationRecord of each iteration of the last step (empty for non-Newton strategies).");
+      .def(
+          "GetIterationNumber",
+          [](const SolvingStrategy& s) -> int {
+            if (const auto* newton = dynamic_cast<const NewtonRaphsonStrategy*>(&s))
+              return static_cast<int>(newton->IterationHistory().size());
+            return 1;
+          },
+          "Iterations of the last step (1 for non-Newton strategies).")
+      .def(
+          "GetIterationHistory",
+          [](const SolvingStrategy& s) {
+            if (const auto* newton = dynamic_cast<const NewtonRaphsonStrategy*>(&s)) return newton->IterationHistory();
+            return std::vector<IterationRecord>{};
+          },
+          "The IterationRecord of each iteration of the last step (empty for non-Newton strategies).");
   py::class_<ImplicitSolvingStrategy, SolvingStrategy, std::shared_ptr<ImplicitSolvingStrategy>>(
       m, "ImplicitSolvingStrategy", "A strategy with a scheme, a builder-and-solver and a DoF set.")
-      .def("GetBuilderAndSolver", [](const ImplicitSolvingStrategy& s) -> BuilderAndSolver& { return s.GetBuilderAndSolver(); },
-           py::return_value_policy::reference_internal, "Its BuilderAndSolver.");
+      .def(
+          "GetBuilderAndSolver",
+          [](const ImplicitSolvingStrategy& s) -> BuilderAndSolver& { return s.GetBuilderAndSolver(); },
+          py::return_value_policy::reference_internal, "Its BuilderAndSolver.");
   py::class_<LinearStrategy, ImplicitSolvingStrategy, std::shared_ptr<LinearStrategy>>(
       m, "LinearStrategy", "analysis_type linear: one build and solve per step (Kratos ResidualBasedLinearStrategy).")
       .def(py::init([](ModelPart& part, std::shared_ptr<Scheme> scheme, std::shared_ptr<BuilderAndSolver> builder,
@@ -166,7 +195,8 @@ void AddSolvingToPython(py::module_& m) {
            py::arg("reform_dofs_at_each_step") = false, py::arg("move_mesh") = false, py::arg("echo_level") = 0,
            py::keep_alive<1, 2>(), "Kratos' solver_settings of the same names (move_mesh: move_mesh_flag).");
   py::class_<NewtonRaphsonStrategy, ImplicitSolvingStrategy, std::shared_ptr<NewtonRaphsonStrategy>>(
-      m, "NewtonRaphsonStrategy", "analysis_type non_linear: Newton-Raphson on the residual (Kratos "
+      m, "NewtonRaphsonStrategy",
+      "analysis_type non_linear: Newton-Raphson on the residual (Kratos "
       "ResidualBasedNewtonRaphsonStrategy).")
       .def(py::init([](ModelPart& part, std::shared_ptr<Scheme> scheme, std::shared_ptr<ConvergenceCriteria> criteria,
                        std::shared_ptr<BuilderAndSolver> builder, int max_iteration, bool compute_reactions,
@@ -194,25 +224,27 @@ void AddSolvingToPython(py::module_& m) {
       .def_readwrite("line_search_tolerance", &LineSearchSettings::line_search_tolerance,
                      "Stop when |phi(s)| <= tolerance |phi(0)| (0.5).");
   py::class_<LineSearchStrategy, NewtonRaphsonStrategy, std::shared_ptr<LineSearchStrategy>>(
-      m, "LineSearchStrategy", "analysis_type line_search: Newton with the step length zeroing du . r(u + s du) "
+      m, "LineSearchStrategy",
+      "analysis_type line_search: Newton with the step length zeroing du . r(u + s du) "
       "(Kratos LineSearchStrategy).")
       .def(py::init([](ModelPart& part, std::shared_ptr<Scheme> scheme, std::shared_ptr<ConvergenceCriteria> criteria,
                        std::shared_ptr<BuilderAndSolver> builder, LineSearchSettings settings, int max_iteration,
                        bool compute_reactions, bool reform_dofs_at_each_step, bool move_mesh, int echo_level) {
-             auto s = std::make_shared<LineSearchStrategy>(part, std::move(scheme), std::move(criteria), std::move(builder),
-                                                           settings, max_iteration, compute_reactions,
-                                                           reform_dofs_at_each_step, move_mesh);
+             auto s = std::make_shared<LineSearchStrategy>(part, std::move(scheme), std::move(criteria),
+                                                           std::move(builder), settings, max_iteration,
+                                                           compute_reactions, reform_dofs_at_each_step, move_mesh);
              s->SetEchoLevel(echo_level);
              return s;
            }),
            py::arg("model_part"), py::arg("scheme"), py::arg("criteria"), py::arg("builder_and_solver"),
-           py::arg("settings") = LineSearchSettings{}, py::arg("max_iteration") = 10, py::arg("compute_reactions") = true,
-           py::arg("reform_dofs_at_each_step") = false, py::arg("move_mesh") = true, py::arg("echo_level") = 0,
-           py::keep_alive<1, 2>(), "Kratos' solver_settings of the same names (move_mesh: move_mesh_flag).");
+           py::arg("settings") = LineSearchSettings{}, py::arg("max_iteration") = 10,
+           py::arg("compute_reactions") = true, py::arg("reform_dofs_at_each_step") = false,
+           py::arg("move_mesh") = true, py::arg("echo_level") = 0, py::keep_alive<1, 2>(),
+           "Kratos' solver_settings of the same names (move_mesh: move_mesh_flag).");
   py::class_<ExplicitStrategy, SolvingStrategy, std::shared_ptr<ExplicitStrategy>>(
       m, "ExplicitStrategy", "Explicit dynamics: one residual assembly and a lumped-mass nodal update per step.")
-      .def(py::init([](ModelPart& part, std::shared_ptr<ExplicitCentralDifferencesScheme> scheme, bool compute_reactions,
-                       bool reform_dofs_at_each_step, bool move_mesh, int echo_level) {
+      .def(py::init([](ModelPart& part, std::shared_ptr<ExplicitCentralDifferencesScheme> scheme,
+                       bool compute_reactions, bool reform_dofs_at_each_step, bool move_mesh, int echo_level) {
              auto s = std::make_shared<ExplicitStrategy>(part, std::move(scheme), compute_reactions,
                                                          reform_dofs_at_each_step, move_mesh);
              s->SetEchoLevel(echo_level);

@@ -29,33 +29,45 @@ void AddUtilitiesToPython(py::module_& m) {
   py::class_<VariableUtils>(m, "VariableUtils",
                             "Bulk operations on the nodes and conditions of a model part (Kratos VariableUtils), for "
                             "the assignment processes.")
-      .def_static("AssignNodalScalar",
-                  [](ModelPart& p, const VariableData& v, const FunctionExpression& e, double t, bool fix) {
-                    VariableUtils::AssignNodalScalar(p, AsDouble(v), e, t, fix);
-                  }, py::arg("model_part"), py::arg("variable"), py::arg("expression"), py::arg("time"), py::arg("fix"),
-                  "Sets a historical double (or component) on every node to the expression at (x, y, z, time); "
-                  "with fix, fixes its DoF.")
-      .def_static("AssignNodalScalar",
-                  [](ModelPart& p, const VariableData& v, double value, bool fix) {
-                    VariableUtils::AssignNodalScalar(p, AsDouble(v), value, fix);
-                  }, py::arg("model_part"), py::arg("variable"), py::arg("value"), py::arg("fix"),
-                  "Sets a historical double (or component) on every node to value; with fix, fixes its DoF.")
-      .def_static("FreeDof", [](ModelPart& p, const VariableData& v) { VariableUtils::FreeDof(p, AsDouble(v)); },
-                  py::arg("model_part"), py::arg("variable"), "Frees the DoF of the variable on every node having it.")
-      .def_static("AssignConditionScalar",
-                  [](ModelPart& p, const VariableData& v, const FunctionExpression& e, double t) {
-                    VariableUtils::AssignConditionScalar(p, AsDouble(v), e, t);
-                  }, py::arg("model_part"), py::arg("variable"), py::arg("expression"), py::arg("time"),
-                  "Sets a non-historical double (or component) on every condition to the expression at its centre.")
-      .def_static("AssignConditionScalar",
-                  [](ModelPart& p, const VariableData& v, double value) {
-                    VariableUtils::AssignConditionScalar(p, AsDouble(v), value);
-                  }, py::arg("model_part"), py::arg("variable"), py::arg("value"),
-                  "Sets a non-historical double (or component) on every condition to value.")
-      .def_static("AddDof", [](ModelPart& p, const VariableData& v, const VariableData* r) {
-        VariableUtils::AddDof(p, AsDouble(v), r ? &AsDouble(*r) : nullptr);
-      }, py::arg("model_part"), py::arg("variable"), py::arg("reaction") = nullptr,
-         "Adds the DoF of the variable (with its reaction) to every node.")
+      .def_static(
+          "AssignNodalScalar",
+          [](ModelPart& p, const VariableData& v, const FunctionExpression& e, double t, bool fix) {
+            VariableUtils::AssignNodalScalar(p, AsDouble(v), e, t, fix);
+          },
+          py::arg("model_part"), py::arg("variable"), py::arg("expression"), py::arg("time"), py::arg("fix"),
+          "Sets a historical double (or component) on every node to the expression at (x, y, z, time); "
+          "with fix, fixes its DoF.")
+      .def_static(
+          "AssignNodalScalar",
+          [](ModelPart& p, const VariableData& v, double value, bool fix) {
+            VariableUtils::AssignNodalScalar(p, AsDouble(v), value, fix);
+          },
+          py::arg("model_part"), py::arg("variable"), py::arg("value"), py::arg("fix"),
+          "Sets a historical double (or component) on every node to value; with fix, fixes its DoF.")
+      .def_static(
+          "FreeDof", [](ModelPart& p, const VariableData& v) { VariableUtils::FreeDof(p, AsDouble(v)); },
+          py::arg("model_part"), py::arg("variable"), "Frees the DoF of the variable on every node having it.")
+      .def_static(
+          "AssignConditionScalar",
+          [](ModelPart& p, const VariableData& v, const FunctionExpression& e, double t) {
+            VariableUtils::AssignConditionScalar(p, AsDouble(v), e, t);
+          },
+          py::arg("model_part"), py::arg("variable"), py::arg("expression"), py::arg("time"),
+          "Sets a non-historical double (or component) on every condition to the expression at its centre.")
+      .def_static(
+          "AssignConditionScalar",
+          [](ModelPart& p, const VariableData& v, double value) {
+            VariableUtils::AssignConditionScalar(p, AsDouble(v), value);
+          },
+          py::arg("model_part"), py::arg("variable"), py::arg("value"),
+          "Sets a non-historical double (or component) on every condition to value.")
+      .def_static(
+          "AddDof",
+          [](ModelPart& p, const VariableData& v, const VariableData* r) {
+            VariableUtils::AddDof(p, AsDouble(v), r ? &AsDouble(*r) : nullptr);
+          },
+          py::arg("model_part"), py::arg("variable"), py::arg("reaction") = nullptr,
+          "Adds the DoF of the variable (with its reaction) to every node.")
       .def_static("UpdateCurrentPosition", &VariableUtils::UpdateCurrentPosition, py::arg("model_part"),
                   "Sets every node's current coordinates to X0 + DISPLACEMENT.");
 
@@ -63,12 +75,15 @@ void AddUtilitiesToPython(py::module_& m) {
       .value("Info", Logger::Level::Info, "progress and results")
       .value("Warning", Logger::Level::Warning, "something the user should look at")
       .value("Detail", Logger::Level::Detail, "verbose output (echo levels above 1)");
-  m.def("SetLogSink", [](py::function sink) {
-    Logger::SetSink([sink](Logger::Level level, const std::string& message) {
-      py::gil_scoped_acquire gil;
-      sink(level, message);
-    });
-  }, py::arg("sink"), "Routes C++ log messages to a Python callable(level, message).");
+  m.def(
+      "SetLogSink",
+      [](py::function sink) {
+        Logger::SetSink([sink](Logger::Level level, const std::string& message) {
+          py::gil_scoped_acquire gil;
+          sink(level, message);
+        });
+      },
+      py::arg("sink"), "Routes C++ log messages to a Python callable(level, message).");
   m.def("ResetLogSink", &Logger::ResetSink, "Routes C++ log messages to stdout / stderr again.");
 }
 

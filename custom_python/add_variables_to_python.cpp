@@ -38,10 +38,12 @@ void AddVariablesToPython(py::module_& m) {
            "Whether it is a component of an Array3 variable (DISPLACEMENT_X of DISPLACEMENT).")
       .def("Source", &VariableData::Source, py::return_value_policy::reference,
            "The Array3 variable a component belongs to (None for a variable).")
-      .def("ComponentIndex", &VariableData::ComponentIndex, "Index 0, 1 or 2 of a component in its source; -1 otherwise.")
+      .def("ComponentIndex", &VariableData::ComponentIndex,
+           "Index 0, 1 or 2 of a component in its source; -1 otherwise.")
       .def("__repr__", [](const VariableData& v) { return "<Variable " + v.Name() + ">"; })
       .def("__hash__", &VariableData::Key)
-      .def("__eq__", [](const VariableData& a, const VariableData& b) { return &a == &b; }, py::arg("other"));
+      .def(
+          "__eq__", [](const VariableData& a, const VariableData& b) { return &a == &b; }, py::arg("other"));
   BindVariable<double>(m, "DoubleVariable", "A variable of floats, or a component of an Array3 variable.");
   BindVariable<int>(m, "IntVariable", "A variable of integers.");
   BindVariable<bool>(m, "BoolVariable", "A variable of booleans.");
@@ -51,13 +53,16 @@ void AddVariablesToPython(py::module_& m) {
   BindVariable<Matrix>(m, "MatrixVariable", "A variable of dense matrices.");
 
   m.def(
-      "GetVariable", [](const std::string& name) -> const VariableData& { return VariableRegistry::Instance().Get(name); },
+      "GetVariable",
+      [](const std::string& name) -> const VariableData& { return VariableRegistry::Instance().Get(name); },
       py::arg("name"), py::return_value_policy::reference,
       "The registered variable of this name (InputError with the nearest names otherwise).");
-  m.def("HasVariable", [](const std::string& name) { return VariableRegistry::Instance().Has(name); },
-        py::arg("name"), "Whether a variable of this name is registered.");
-  m.def("VariableNames", [] { return VariableRegistry::Instance().Names(); },
-        "Names of all registered variables (kernel, structural, contact and plugins').");
+  m.def(
+      "HasVariable", [](const std::string& name) { return VariableRegistry::Instance().Has(name); }, py::arg("name"),
+      "Whether a variable of this name is registered.");
+  m.def(
+      "VariableNames", [] { return VariableRegistry::Instance().Names(); },
+      "Names of all registered variables (kernel, structural, contact and plugins').");
 
   py::class_<Flag>(m, "Flag",
                    "A named boolean property of nodes, elements, conditions and model parts (ACTIVE, SLAVE, ...); "
@@ -71,11 +76,14 @@ void AddVariablesToPython(py::module_& m) {
       .def("Reset", &Flags::Reset, py::arg("flag"), "Makes the flag undefined again (and false).");
   m.def("GetFlag", &Flag::Get, py::arg("name"), py::return_value_policy::reference,
         "The registered flag of this name (InputError with the nearest names otherwise).");
-  m.def("FlagNames", [] {
-    std::vector<std::string> names;
-    for (const Flag* f : Flag::All()) names.push_back(f->Name());
-    return names;
-  }, "Names of all registered flags.");
+  m.def(
+      "FlagNames",
+      [] {
+        std::vector<std::string> names;
+        for (const Flag* f : Flag::All()) names.push_back(f->Name());
+        return names;
+      },
+      "Names of all registered flags.");
 }
 
 /// Exposes every registered variable and flag as a module attribute (mc.DISPLACEMENT, mc.ACTIVE).

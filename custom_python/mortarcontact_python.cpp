@@ -104,8 +104,10 @@ PYBIND11_MODULE(_core, m) {
       {"contact_conditions", "Mortar contact pair conditions (custom_conditions).", &AddContactConditionsToPython},
       {"contact_processes", "Contact interface set-up, search, ALM parameters and outputs (custom_processes).",
        &AddContactProcessesToPython},
-      {"contact_strategies", "Contact convergence criteria, the contact mortar updater and contact strategies "
-       "(custom_strategies).", &AddContactStrategiesToPython},
+      {"contact_strategies",
+       "Contact convergence criteria, the contact mortar updater and contact strategies "
+       "(custom_strategies).",
+       &AddContactStrategiesToPython},
       {"contact_linear_solvers", "The mixed ULM linear solver: condensed dual multipliers (custom_linear_solvers).",
        &AddContactLinearSolversToPython},
       {"contact_formulations", "The registry of contact formulations by mortar_type (custom_formulations).",

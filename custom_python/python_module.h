@@ -76,8 +76,7 @@ inline DataValueContainer::Value FromPython(const VariableData& var, const py::h
       case ValueType::Matrix: return obj.cast<Matrix>();
     }
   } catch (const py::cast_error&) {
-    throw InputError(Concat(var.Name(), " expects a ", ValueTypeName(var.Type()), ", got ",
-                            std::string(py::str(obj))));
+    throw InputError(Concat(var.Name(), " expects a ", ValueTypeName(var.Type()), ", got ", std::string(py::str(obj))));
   }
   throw InputError(Concat("unsupported type of ", var.Name()));
 }

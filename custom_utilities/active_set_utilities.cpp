@@ -56,8 +56,8 @@ std::size_t ComputeALMFrictionlessComponentsActiveSet(ModelPart& contact_part, C
   return UpdateActiveSet(
       contact_part, changed,
       [](Node& node, double k, double eps) {
-        const double normal_pressure = node.FastGetSolutionStepValue(NORMAL).dot(
-            node.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER));
+        const double normal_pressure =
+            node.FastGetSolutionStepValue(NORMAL).dot(node.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER));
         return AugmentedNormalPressure(k, normal_pressure, eps, node.FastGetSolutionStepValue(WEIGHTED_GAP));
       },
       [](Node& node, double k, double augmented) {

@@ -24,8 +24,8 @@ bool DualLagrangeMultiplier<TDim, TNumNodes>::FromIntegrals(const Values<T>& d, 
   return true;
 }
 
-#define MC_INSTANTIATE_DUAL(D, N, T)                                                                            \
-  template bool DualLagrangeMultiplier<D, N>::FromIntegrals<T>(const DualLagrangeMultiplier<D, N>::Values<T>&, \
+#define MC_INSTANTIATE_DUAL(D, N, T)                                                                                 \
+  template bool DualLagrangeMultiplier<D, N>::FromIntegrals<T>(const DualLagrangeMultiplier<D, N>::Values<T>&,       \
                                                                const DualLagrangeMultiplier<D, N>::SquareMatrix<T>&, \
                                                                DualLagrangeMultiplier<D, N>::SquareMatrix<T>&);
 

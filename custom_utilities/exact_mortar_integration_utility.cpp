@@ -29,9 +29,8 @@ T Cross2(const Eigen::Matrix<T, 2, 1>& a, const Eigen::Matrix<T, 2, 1>& b) {
 /// (line in 2D, triangle or quadrilateral in 3D). Newton on (xi, t); linear geometries
 /// converge in one step. One extra step after convergence settles the AutoDiff derivatives.
 template <class T, int TDim, int TNodes>
-Eigen::Matrix<T, TDim - 1, 1> ProjectAlong(const Eigen::Matrix<T, TNodes, TDim>& x,
-                                          const Eigen::Matrix<T, TDim, 1>& p,
-                                          const Eigen::Matrix<T, TDim, 1>& d) {
+Eigen::Matrix<T, TDim - 1, 1> ProjectAlong(const Eigen::Matrix<T, TNodes, TDim>& x, const Eigen::Matrix<T, TDim, 1>& p,
+                                           const Eigen::Matrix<T, TDim, 1>& d) {
   using SF = MortarShapeFunctions<TNodes>;
   using Local = Eigen::Matrix<T, TDim - 1, 1>;
   if constexpr (TDim == 2) {
@@ -138,19 +137,17 @@ void CheckSettings(const MortarIntegrationSettings& settings) {
     throw NotImplementedError(
         "mortar integration: consider_tessellation = true (Delaunay tessellation of the clipped "
         "polygons) is not implemented; use false (fan triangulation)");
-  if (settings.integration_order < Quadrature::kMinOrder ||
-      settings.integration_order > Quadrature::kMaxOrder)
+  if (settings.integration_order < Quadrature::kMinOrder || settings.integration_order > Quadrature::kMaxOrder)
     throw InputError(Concat("mortar integration: integration_order = ", settings.integration_order,
-                            " is outside the supported range ", Quadrature::kMinOrder, "..",
-                            Quadrature::kMaxOrder));
+                            " is outside the supported range ", Quadrature::kMinOrder, "..", Quadrature::kMaxOrder));
 }
 
 }  // namespace
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
 template <class T>
-Eigen::Matrix<T, TDim, 1> ExactMortarIntegrationUtility<TDim, TNumNodes, TNumNodesMaster>::
-    SlaveConditionNormal(const SlaveMatrix<T>& x) {
+Eigen::Matrix<T, TDim, 1> ExactMortarIntegrationUtility<TDim, TNumNodes, TNumNodesMaster>::SlaveConditionNormal(
+    const SlaveMatrix<T>& x) {
   using std::sqrt;
   if constexpr (TDim == 2) {
     const Eigen::Matrix<T, 2, 1> t = (x.row(1) - x.row(0)).transpose();
@@ -168,9 +165,11 @@ Eigen::Matrix<T, TDim, 1> ExactMortarIntegrationUtility<TDim, TNumNodes, TNumNod
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
 template <class T>
-bool ExactMortarIntegrationUtility<TDim, TNumNodes, TNumNodesMaster>::Compute(
-    const SlaveMatrix<T>& x1, const MasterMatrix<T>& x2, const SlaveMatrix<T>& normals,
-    const MortarIntegrationSettings& settings, Points<T>& result) {
+bool ExactMortarIntegrationUtility<TDim, TNumNodes, TNumNodesMaster>::Compute(const SlaveMatrix<T>& x1,
+                                                                              const MasterMatrix<T>& x2,
+                                                                              const SlaveMatrix<T>& normals,
+                                                                              const MortarIntegrationSettings& settings,
+                                                                              Points<T>& result) {
   using std::sqrt;
   using SF1 = MortarShapeFunctions<TNumNodes>;
   using Vec = Eigen::Matrix<T, TDim, 1>;
@@ -214,8 +213,7 @@ bool ExactMortarIntegrationUtility<TDim, TNumNodes, TNumNodesMaster>::Compute(
     const T lo = ValueOf(s_lo) > -1.0 ? s_lo : T(-1.0);
     const T hi = ValueOf(s_hi) < 1.0 ? s_hi : T(1.0);
     if (!(ValueOf(hi - lo) > 2.0 * eps)) return false;
-    const auto& rule = ReferenceElement::Get(GeometryType::Line2D2)
-                           .IntegrationPoints(settings.integration_order);
+    const auto& rule = ReferenceElement::Get(GeometryType::Line2D2).IntegrationPoints(settings.integration_order);
     const T half = 0.5 * (hi - lo);
     const T mid = 0.5 * (hi + lo);
     for (const auto& gp : rule) {
@@ -342,8 +340,7 @@ bool ExactMortarIntegrationUtility<TDim, TNumNodes, TNumNodesMaster>::Compute(
           if (std::abs(den) <= 1e-300) continue;
           const double t = cross(D2(m2[l] - s2[i]), q) / den;
           const double u = cross(D2(m2[l] - s2[i]), r) / den;
-          if (t >= -1e-12 && t <= 1.0 + 1e-12 && u >= -1e-12 && u <= 1.0 + 1e-12)
-            first = s2[i] + t * r, found = true;
+          if (t >= -1e-12 && t <= 1.0 + 1e-12 && u >= -1e-12 && u <= 1.0 + 1e-12) first = s2[i] + t * r, found = true;
         }
       if (found) {
         double best = std::numeric_limits<double>::infinity();
@@ -354,8 +351,7 @@ bool ExactMortarIntegrationUtility<TDim, TNumNodes, TNumNodesMaster>::Compute(
       }
     }
 
-    const auto& rule = ReferenceElement::Get(GeometryType::Triangle2D3)
-                           .IntegrationPoints(settings.integration_order);
+    const auto& rule = ReferenceElement::Get(GeometryType::Triangle2D3).IntegrationPoints(settings.integration_order);
     auto to_slave = [&](const P2& q) { return ProjectAlong<T, 3, TNumNodes>(x1, Vec(c + q(0) * t1 + q(1) * t2), n); };
     const P2& v0 = poly[start];
     for (int k = 1; k + 1 < n_poly; ++k) {
@@ -391,18 +387,18 @@ bool ExactMortarIntegrationUtility<TDim, TNumNodes, TNumNodesMaster>::Compute(
   }
 }
 
-#define MC_INSTANTIATE_EXACT(D, N1, N2, T)                                                    \
-  template bool ExactMortarIntegrationUtility<D, N1, N2>::Compute<T>(                         \
-      const ExactMortarIntegrationUtility<D, N1, N2>::SlaveMatrix<T>&,                        \
-      const ExactMortarIntegrationUtility<D, N1, N2>::MasterMatrix<T>&,                       \
-      const ExactMortarIntegrationUtility<D, N1, N2>::SlaveMatrix<T>&,                        \
-      const MortarIntegrationSettings&, ExactMortarIntegrationUtility<D, N1, N2>::Points<T>&); \
-  template Eigen::Matrix<T, D, 1> ExactMortarIntegrationUtility<D, N1, N2>::SlaveConditionNormal<T>( \
+#define MC_INSTANTIATE_EXACT(D, N1, N2, T)                                                               \
+  template bool ExactMortarIntegrationUtility<D, N1, N2>::Compute<T>(                                    \
+      const ExactMortarIntegrationUtility<D, N1, N2>::SlaveMatrix<T>&,                                   \
+      const ExactMortarIntegrationUtility<D, N1, N2>::MasterMatrix<T>&,                                  \
+      const ExactMortarIntegrationUtility<D, N1, N2>::SlaveMatrix<T>&, const MortarIntegrationSettings&, \
+      ExactMortarIntegrationUtility<D, N1, N2>::Points<T>&);                                             \
+  template Eigen::Matrix<T, D, 1> ExactMortarIntegrationUtility<D, N1, N2>::SlaveConditionNormal<T>(     \
       const ExactMortarIntegrationUtility<D, N1, N2>::SlaveMatrix<T>&);
 
-#define MC_INSTANTIATE_EXACT_BOTH(D, N1, N2)                           \
+#define MC_INSTANTIATE_EXACT_BOTH(D, N1, N2)                          \
   using AutoDiff##D##N1##N2 = mortar_detail::PairAutoDiff<D, N1, N2>; \
-  MC_INSTANTIATE_EXACT(D, N1, N2, double)                              \
+  MC_INSTANTIATE_EXACT(D, N1, N2, double)                             \
   MC_INSTANTIATE_EXACT(D, N1, N2, AutoDiff##D##N1##N2)
 
 MC_INSTANTIATE_EXACT_BOTH(2, 2, 2)

@@ -92,10 +92,9 @@ class ExactMortarIntegrationUtility {
   /// is empty or below the tolerance. Throws NotImplementedError for consider_tessellation
   /// and InputError for an integration order outside 1..5.
   template <class T>
-  static bool Compute(const SlaveMatrix<T>& slave_coordinates,
-                      const MasterMatrix<T>& master_coordinates,
-                      const SlaveMatrix<T>& slave_normals,
-                      const MortarIntegrationSettings& settings, Points<T>& result);
+  static bool Compute(const SlaveMatrix<T>& slave_coordinates, const MasterMatrix<T>& master_coordinates,
+                      const SlaveMatrix<T>& slave_normals, const MortarIntegrationSettings& settings,
+                      Points<T>& result);
 
   /// Geometric unit normal of the slave condition at its centre (see above).
   template <class T>

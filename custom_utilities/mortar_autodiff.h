@@ -12,13 +12,10 @@
 namespace mc::mortar_detail {
 
 /// Number of independent variables of a pair: master u, slave u, slave nodal normals.
-constexpr int NumDerivatives(int dim, int num_slave, int num_master) {
-  return dim * (num_master + 2 * num_slave);
-}
+constexpr int NumDerivatives(int dim, int num_slave, int num_master) { return dim * (num_master + 2 * num_slave); }
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
-using PairAutoDiff = Eigen::AutoDiffScalar<
-    Eigen::Matrix<double, NumDerivatives(TDim, TNumNodes, TNumNodesMaster), 1>>;
+using PairAutoDiff = Eigen::AutoDiffScalar<Eigen::Matrix<double, NumDerivatives(TDim, TNumNodes, TNumNodesMaster), 1>>;
 
 inline double ValueOf(double x) { return x; }
 template <class D>

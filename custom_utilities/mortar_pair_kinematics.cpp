@@ -48,10 +48,8 @@ bool PairDualBasis(const MortarIntegrationPoints<T, TDim, TNumNodes, TNumNodesMa
 }
 
 template <class T, int TDim, int TNumNodes, int TNumNodesMaster>
-bool ComputePair(const Eigen::Matrix<T, TNumNodes, TDim>& x1,
-                 const Eigen::Matrix<T, TNumNodesMaster, TDim>& x2,
-                 const Eigen::Matrix<T, TNumNodes, TDim>& n1,
-                 const MortarIntegrationSettings& settings,
+bool ComputePair(const Eigen::Matrix<T, TNumNodes, TDim>& x1, const Eigen::Matrix<T, TNumNodesMaster, TDim>& x2,
+                 const Eigen::Matrix<T, TNumNodes, TDim>& n1, const MortarIntegrationSettings& settings,
                  PairValues<T, TDim, TNumNodes, TNumNodesMaster>& out) {
   using Exact = ExactMortarIntegrationUtility<TDim, TNumNodes, TNumNodesMaster>;
   using SF1 = MortarShapeFunctions<TNumNodes>;
@@ -118,9 +116,10 @@ void MortarPairKinematics<TDim, TNumNodes, TNumNodesMaster>::SkipIntegration(con
 }
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
-bool MortarPairKinematics<TDim, TNumNodes, TNumNodesMaster>::ComputeValues(
-    const SlaveMatrix& x1, const MasterMatrix& x2, const SlaveMatrix& n1,
-    const MortarIntegrationSettings& settings) {
+bool MortarPairKinematics<TDim, TNumNodes, TNumNodesMaster>::ComputeValues(const SlaveMatrix& x1,
+                                                                           const MasterMatrix& x2,
+                                                                           const SlaveMatrix& n1,
+                                                                           const MortarIntegrationSettings& settings) {
   slave_coordinates = x1;
   master_coordinates = x2;
   slave_normals = n1;
@@ -143,9 +142,9 @@ bool MortarPairKinematics<TDim, TNumNodes, TNumNodesMaster>::ComputeValues(
 }
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
-bool MortarPairKinematics<TDim, TNumNodes, TNumNodesMaster>::Compute(
-    const SlaveMatrix& x1, const MasterMatrix& x2, const SlaveMatrix& n1,
-    const MortarIntegrationSettings& settings) {
+bool MortarPairKinematics<TDim, TNumNodes, TNumNodesMaster>::Compute(const SlaveMatrix& x1, const MasterMatrix& x2,
+                                                                     const SlaveMatrix& n1,
+                                                                     const MortarIntegrationSettings& settings) {
   using AD = mortar_detail::PairAutoDiff<TDim, TNumNodes, TNumNodesMaster>;
   static_assert(mortar_detail::NumDerivatives(TDim, TNumNodes, TNumNodesMaster) == kNumDerivatives);
   slave_coordinates = x1;
@@ -164,8 +163,7 @@ bool MortarPairKinematics<TDim, TNumNodes, TNumNodesMaster>::Compute(
 
   // Large (AutoDiff through every point); thread_local keeps it off the stack and reused.
   thread_local PairValues<AD, TDim, TNumNodes, TNumNodesMaster> v;
-  has_overlap =
-      ComputePair<AD, TDim, TNumNodes, TNumNodesMaster>(x1_ad, x2_ad, n1_ad, settings, v);
+  has_overlap = ComputePair<AD, TDim, TNumNodes, TNumNodesMaster>(x1_ad, x2_ad, n1_ad, settings, v);
 
   for (auto& m : dD) m.setZero();
   for (auto& m : dM) m.setZero();

@@ -44,9 +44,7 @@ struct MortarPairKinematics {
   static constexpr int kNumDerivatives = kNumDisplacementDofs + kNumSlaveDofs;
 
   static constexpr int MasterDof(int node, int component) { return node * TDim + component; }
-  static constexpr int SlaveDof(int node, int component) {
-    return kNumMasterDofs + node * TDim + component;
-  }
+  static constexpr int SlaveDof(int node, int component) { return kNumMasterDofs + node * TDim + component; }
   static constexpr int SlaveNormalIndex(int node, int component) {
     return kNumDisplacementDofs + node * TDim + component;
   }

@@ -90,8 +90,7 @@ Array3 NodalNormalSupport::CornerVector(const Geometry& face, int j) {
       const int n = static_cast<int>(face.PointsNumber());
       return (X(face, (j + 1) % n) - X(face, j)).cross(X(face, (j + n - 1) % n) - X(face, j));
     }
-    default:
-      return face.UnitNormal(face.Reference().NodesLocalCoordinates()[static_cast<std::size_t>(j)]);
+    default: return face.UnitNormal(face.Reference().NodesLocalCoordinates()[static_cast<std::size_t>(j)]);
   }
 }
 

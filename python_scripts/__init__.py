@@ -11,7 +11,7 @@ import os as _os
 
 from . import _core
 from ._core import *  # noqa: F403  (kernel classes, variables and flags)
-from ._core import InputError, NotImplementedFeatureError, SolutionError, Error  # noqa: F401
+from ._core import Error, InputError, NotImplementedFeatureError, SolutionError  # noqa: F401
 
 __version__ = "0.1.0"
 

@@ -67,7 +67,8 @@ def migrate_project_parameters(params: _core.Parameters) -> None:
     problem_data.ValidateAndAssignDefaults(_core.Parameters(PROBLEM_DATA_DEFAULTS))
     start, end = problem_data["start_time"].GetDouble(), problem_data["end_time"].GetDouble()
     if not end >= start:
-        raise _core.InputError(f"{problem_data.Where()}.end_time: must not be before start_time ({start!r}), got {end!r}")
+        raise _core.InputError(f"{problem_data.Where()}.end_time: must not be before start_time ({start!r}), "
+                               f"got {end!r}")
     solver = params["solver_settings"]
     moves = {"model_part_name": "model_part_name", "domain_size": "domain_size"}
     for old, new in moves.items():

@@ -7,7 +7,6 @@ import sys
 import tempfile
 
 
-
 def warn(message: str) -> None:
     print(f"warning: {message}", file=sys.stderr)
 

@@ -110,11 +110,12 @@ def _extract(model, get_variable, dim: int, flag_active, all_nodes: bool = False
 
 def run_kratos(parameters_text: str, dim: int, record: dict, all_nodes: bool = False):
     import KratosMultiphysics as KM
+    import KratosMultiphysics.ConstitutiveLawsApplication  # registers the hyperelastic laws (not always pulled in)
     import KratosMultiphysics.ContactStructuralMechanicsApplication  # registers the contact solver
     import KratosMultiphysics.LinearSolversApplication  # registers sparse_lu
-    import KratosMultiphysics.ConstitutiveLawsApplication  # registers the hyperelastic laws (not always pulled in)
     from KratosMultiphysics.StructuralMechanicsApplication.structural_mechanics_analysis import (
-        StructuralMechanicsAnalysis)
+        StructuralMechanicsAnalysis,
+    )
 
     KM.Logger.GetDefaultOutput().SetSeverity(KM.Logger.Severity.WARNING)
 

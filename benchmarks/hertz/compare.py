@@ -31,8 +31,9 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-import harness  # noqa: E402
-from mortarcontact.cases.hertz import all_case_names, load_reference  # noqa: E402
+from mortarcontact.cases.hertz import all_case_names, load_reference
+
+import harness
 
 CODES = ("mortarcontact", "kratos")
 

@@ -37,8 +37,9 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 
-import harness  # noqa: E402
 from mortarcontact.cases.hertz import load_reference  # noqa: E402
+
+import harness  # noqa: E402
 
 DEFAULT_CASES = "hertz2d_2k,hertz2d_8k,hertz2d_30k,hertz2d_100k,hertz2d_250k,hertz3d_15k,hertz3d_50k"
 
@@ -75,7 +76,8 @@ def measure(case_dir: str, repeat: int, linear_solver: str | None) -> dict:
         started = time.perf_counter()
         updater.ComputeWeightedGap(part)
         gap_seconds.append(time.perf_counter() - started)
-    return {"pairs": pairs, "slave_conditions": slaves, "search": statistics.median(search_seconds), "weighted_gap": statistics.median(gap_seconds),
+    return {"pairs": pairs, "slave_conditions": slaves, "search": statistics.median(search_seconds),
+            "weighted_gap": statistics.median(gap_seconds),
             "dofs": load_reference(case_dir)["counts"]["dofs"]}
 
 

@@ -44,7 +44,8 @@ def kratos_python(install: bool = True) -> str:
     venv = kratos_venv_dir()
     python = os.path.join(venv, "bin", "python")
     probe = [python, "-c", "import KratosMultiphysics.ContactStructuralMechanicsApplication, "
-                           "KratosMultiphysics.LinearSolversApplication, KratosMultiphysics.ConstitutiveLawsApplication"]
+                           "KratosMultiphysics.LinearSolversApplication, "
+                           "KratosMultiphysics.ConstitutiveLawsApplication"]
     if os.path.exists(python) and subprocess.run(probe, capture_output=True).returncode == 0:
         return python
     if not install:

@@ -50,7 +50,8 @@ class Code:
             import KratosMultiphysics.ContactStructuralMechanicsApplication  # registers the contact classes
             import KratosMultiphysics.LinearSolversApplication  # registers sparse_lu
             from KratosMultiphysics.StructuralMechanicsApplication.structural_mechanics_analysis import (
-                StructuralMechanicsAnalysis)
+                StructuralMechanicsAnalysis,
+            )
 
             KM.Logger.GetDefaultOutput().SetSeverity(KM.Logger.Severity.WARNING)
             self.module, self.Analysis = KM, StructuralMechanicsAnalysis

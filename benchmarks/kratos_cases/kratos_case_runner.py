@@ -16,8 +16,7 @@ import KratosMultiphysics as KM
 import KratosMultiphysics.ConstitutiveLawsApplication  # registers HyperElastic3DLaw
 import KratosMultiphysics.ContactStructuralMechanicsApplication  # registers the contact classes
 import KratosMultiphysics.LinearSolversApplication  # registers sparse_lu
-from KratosMultiphysics.StructuralMechanicsApplication.structural_mechanics_analysis import (
-    StructuralMechanicsAnalysis)
+from KratosMultiphysics.StructuralMechanicsApplication.structural_mechanics_analysis import StructuralMechanicsAnalysis
 
 NON_HISTORICAL = {"AUGMENTED_NORMAL_CONTACT_PRESSURE"}
 

@@ -240,7 +240,8 @@ def _difference(x) -> str:
 def verdict(s: dict) -> dict:
     k, m = s["kratos"], s["mortarcontact"]
     tight = s.get("tight") or {}
-    within = all(tight.get(key) is not None and tight[key] <= TOLERANCE for key in ("displacement", "pressure", "reaction"))
+    within = all(tight.get(key) is not None and tight[key] <= TOLERANCE
+                 for key in ("displacement", "pressure", "reaction"))
     fewer = (m["status"] == "ok" and len(m["iterations"]) == len(k["iterations"])
              and all(a <= b for a, b in zip(m["iterations"], k["iterations"])))
     return {"kratos_converges": k["status"] == "ok", "we_converge": m["status"] == "ok",
@@ -327,7 +328,8 @@ def report(path: str) -> None:
         seconds = [f"{c['seconds']:.2f}" if c.get("seconds") is not None else "-" for c in (k, m)]
         symmetry = " / ".join(_difference(c.get("asymmetry")) for c in (kt, mt)) if "asymmetry" in kt else "-"
         as_written = _difference(max(written.values())) if written else "-"
-        lines.append(f"| {s['case']} | {k.get('nodes') or m.get('nodes') or '-'} | {SHORT.get(k['status'], k['status'])} "
+        lines.append(f"| {s['case']} | {k.get('nodes') or m.get('nodes') or '-'} "
+                     f"| {SHORT.get(k['status'], k['status'])} "
                      f"| {SHORT.get(m['status'], m['status'])} | {_iterations(k['iterations'])} "
                      f"| {_iterations(m['iterations'])} | {as_written} | {_run_cell(kt)} | {_run_cell(mt)} "
                      f"| {_difference(tight.get('displacement'))} | {_difference(tight.get('pressure'))} "

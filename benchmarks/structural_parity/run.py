@@ -33,8 +33,8 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(ROOT, "benchmarks", "hertz"))
 
-import parity_cases  # noqa: E402
 import harness  # noqa: E402
+import parity_cases  # noqa: E402
 
 RUNNER = os.path.join(HERE, "runner.py")
 TOLERANCE = 1e-8

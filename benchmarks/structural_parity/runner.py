@@ -28,7 +28,8 @@ def _kratos():
     import KratosMultiphysics.ConstitutiveLawsApplication  # registers HyperElastic3DLaw, KirchhoffSaintVenant3DLaw
     import KratosMultiphysics.LinearSolversApplication  # registers sparse_lu
     from KratosMultiphysics.StructuralMechanicsApplication.structural_mechanics_analysis import (
-        StructuralMechanicsAnalysis)
+        StructuralMechanicsAnalysis,
+    )
 
     KM.Logger.GetDefaultOutput().SetSeverity(KM.Logger.Severity.WARNING)
 

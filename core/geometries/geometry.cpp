@@ -31,15 +31,10 @@ Eigen::Matrix3d Jacobian3(const Geometry& geometry, const double* dN, Configurat
 // Length, area or volume density of the map: |det J| for solids, sqrt(det(J^T J)) otherwise.
 double Measure(const Eigen::Matrix3d& J, int local_dim, int working_dim) {
   switch (local_dim) {
-    case 1:
-      return J.col(0).norm();
-    case 2:
-      return working_dim == 2 ? std::abs(J(0, 0) * J(1, 1) - J(0, 1) * J(1, 0))
-                              : J.col(0).cross(J.col(1)).norm();
-    case 3:
-      return std::abs(J.determinant());
-    default:
-      return 0.0;
+    case 1: return J.col(0).norm();
+    case 2: return working_dim == 2 ? std::abs(J(0, 0) * J(1, 1) - J(0, 1) * J(1, 0)) : J.col(0).cross(J.col(1)).norm();
+    case 3: return std::abs(J.determinant());
+    default: return 0.0;
   }
 }
 
@@ -54,8 +49,8 @@ Geometry::Geometry(GeometryType type, NodesArray nodes)
       if (!ids.empty()) ids += ' ';
       ids += node ? std::to_string(node->Id()) : std::string("null");
     }
-    throw InputError(Concat("geometry ", Name(), " needs ", expected, " nodes, got ", nodes_.size(),
-                            " (node ids ", ids, ")"));
+    throw InputError(
+        Concat("geometry ", Name(), " needs ", expected, " nodes, got ", nodes_.size(), " (node ids ", ids, ")"));
   }
   for (const Node* node : nodes_)
     if (!node) throw InputError(Concat("geometry ", Name(), ": null node pointer"));
@@ -145,8 +140,7 @@ double Geometry::DomainSize(Configuration c) const {
   double size = 0.0;
   for (std::size_t g = 0; g < points.size(); ++g) {
     Eigen::Matrix3d J = Eigen::Matrix3d::Zero();
-    for (std::size_t n = 0; n < nodes_.size(); ++n)
-      J.leftCols(ld) += Coordinates(*nodes_[n], c) * gradients[g].row(n);
+    for (std::size_t n = 0; n < nodes_.size(); ++n) J.leftCols(ld) += Coordinates(*nodes_[n], c) * gradients[g].row(n);
     size += points[g].weight * Measure(J, ld, wd);
   }
   return size;
@@ -164,14 +158,9 @@ Array3 Geometry::UnitNormal(const Array3& local, Configuration c) const {
   const Eigen::Matrix3d J = Jacobian3(*this, dN, c);
   Array3 normal;
   switch (LocalSpaceDimension()) {
-    case 1:
-      normal = Array3(J(1, 0), -J(0, 0), 0.0);
-      break;
-    case 2:
-      normal = J.col(0).cross(J.col(1));
-      break;
-    default:
-      throw Error(Concat("UnitNormal is defined for lines and surfaces, not for geometry ", Name()));
+    case 1: normal = Array3(J(1, 0), -J(0, 0), 0.0); break;
+    case 2: normal = J.col(0).cross(J.col(1)); break;
+    default: throw Error(Concat("UnitNormal is defined for lines and surfaces, not for geometry ", Name()));
   }
   const double norm = normal.norm();
   if (!(norm > 0.0)) throw SolutionError(Concat("degenerate ", Name(), ": zero normal"));

@@ -62,8 +62,7 @@ class Geometry {
   /// Local to global coordinates.
   Array3 GlobalCoordinates(const Array3& local, Configuration c = Configuration::Current) const;
   /// Newton inversion of the map; returns false when it does not converge.
-  bool PointLocalCoordinates(const Array3& global, Array3& local,
-                             Configuration c = Configuration::Current) const;
+  bool PointLocalCoordinates(const Array3& global, Array3& local, Configuration c = Configuration::Current) const;
   /// Whether a local point lies inside the reference element (with tolerance).
   bool IsInsideLocal(const Array3& local, double tolerance = 1e-12) const;
 

@@ -13,12 +13,10 @@ namespace {
 
 // Indexed by the enum value; the order must follow the enum declaration.
 constexpr std::array<const char*, 22> kNames = {
-    "Point2D",          "Point3D",          "Line2D2",          "Line2D3",
-    "Line3D2",          "Line3D3",          "Triangle2D3",      "Triangle2D6",
-    "Quadrilateral2D4", "Quadrilateral2D8", "Quadrilateral2D9", "Triangle3D3",
-    "Triangle3D6",      "Quadrilateral3D4", "Quadrilateral3D8", "Quadrilateral3D9",
-    "Tetrahedra3D4",    "Tetrahedra3D10",   "Hexahedra3D8",     "Hexahedra3D20",
-    "Hexahedra3D27",    "Prism3D6",
+    "Point2D",      "Point3D",          "Line2D2",          "Line2D3",          "Line3D2",          "Line3D3",
+    "Triangle2D3",  "Triangle2D6",      "Quadrilateral2D4", "Quadrilateral2D8", "Quadrilateral2D9", "Triangle3D3",
+    "Triangle3D6",  "Quadrilateral3D4", "Quadrilateral3D8", "Quadrilateral3D9", "Tetrahedra3D4",    "Tetrahedra3D10",
+    "Hexahedra3D8", "Hexahedra3D20",    "Hexahedra3D27",    "Prism3D6",
 };
 static_assert(static_cast<std::size_t>(GeometryType::Prism3D6) + 1 == kNames.size());
 

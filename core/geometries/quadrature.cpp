@@ -25,12 +25,8 @@ void TriangleOrbit3(PointList& rule, double a, double w) {
 PointList TriangleRule(int order) {
   PointList rule;
   switch (order) {
-    case 1:
-      TriangleCentroid(rule, 0.5);
-      break;
-    case 2:
-      TriangleOrbit3(rule, 1.0 / 6.0, 1.0 / 6.0);
-      break;
+    case 1: TriangleCentroid(rule, 0.5); break;
+    case 2: TriangleOrbit3(rule, 1.0 / 6.0, 1.0 / 6.0); break;
     case 3:
     case 4:  // 6 points, degree 4 (Strang-Fix / Dunavant)
       TriangleOrbit3(rule, 0.44594849091596488632, 0.5 * 0.22338158967801146570);
@@ -68,9 +64,7 @@ void TetOrbit6(PointList& rule, double a, double w) {
 PointList TetrahedronRule(int order) {
   PointList rule;
   switch (order) {
-    case 1:
-      Add(rule, 0.25, 0.25, 0.25, 1.0 / 6.0);
-      break;
+    case 1: Add(rule, 0.25, 0.25, 0.25, 1.0 / 6.0); break;
     case 2: {
       const double a = (5.0 - std::sqrt(5.0)) / 20.0;
       TetOrbit4(rule, a, 1.0 / 24.0);
@@ -118,18 +112,13 @@ void Quadrature::GaussLegendre(int n, std::vector<double>& points, std::vector<d
 
 int Quadrature::ExactDegree(GeometryFamily family, int order) {
   switch (family) {
-    case GeometryFamily::Point:
-      return 0;
+    case GeometryFamily::Point: return 0;
     case GeometryFamily::Line:
     case GeometryFamily::Quadrilateral:
-    case GeometryFamily::Hexahedron:
-      return 2 * order - 1;
-    case GeometryFamily::Triangle:
-      return order == 3 ? 4 : order;
-    case GeometryFamily::Tetrahedron:
-      return order >= 3 ? 5 : order;
-    case GeometryFamily::Prism:
-      return ExactDegree(GeometryFamily::Triangle, order);
+    case GeometryFamily::Hexahedron: return 2 * order - 1;
+    case GeometryFamily::Triangle: return order == 3 ? 4 : order;
+    case GeometryFamily::Tetrahedron: return order >= 3 ? 5 : order;
+    case GeometryFamily::Prism: return ExactDegree(GeometryFamily::Triangle, order);
   }
   return 0;
 }
@@ -141,9 +130,7 @@ std::vector<IntegrationPoint> Quadrature::Rule(GeometryFamily family, int order)
   const int n = order;
   PointList rule;
   switch (family) {
-    case GeometryFamily::Point:
-      Add(rule, 0.0, 0.0, 0.0, 1.0);
-      break;
+    case GeometryFamily::Point: Add(rule, 0.0, 0.0, 0.0, 1.0); break;
     case GeometryFamily::Line:
       for (int i = 0; i < n; ++i) Add(rule, x[i], 0.0, 0.0, w[i]);
       break;
@@ -156,12 +143,8 @@ std::vector<IntegrationPoint> Quadrature::Rule(GeometryFamily family, int order)
         for (int j = 0; j < n; ++j)
           for (int i = 0; i < n; ++i) Add(rule, x[i], x[j], x[k], w[i] * w[j] * w[k]);
       break;
-    case GeometryFamily::Triangle:
-      rule = TriangleRule(order);
-      break;
-    case GeometryFamily::Tetrahedron:
-      rule = TetrahedronRule(order);
-      break;
+    case GeometryFamily::Triangle: rule = TriangleRule(order); break;
+    case GeometryFamily::Tetrahedron: rule = TetrahedronRule(order); break;
     case GeometryFamily::Prism: {
       const PointList tri = TriangleRule(order);
       for (int k = 0; k < n; ++k)

@@ -21,9 +21,8 @@ std::vector<Array3> LineNodes(int n) {
 }
 
 std::vector<Array3> QuadrilateralNodes(int n) {
-  std::vector<Array3> x = {Array3(-1, -1, 0), Array3(1, -1, 0), Array3(1, 1, 0), Array3(-1, 1, 0),
-                           Array3(0, -1, 0),  Array3(1, 0, 0),  Array3(0, 1, 0), Array3(-1, 0, 0),
-                           Array3(0, 0, 0)};
+  std::vector<Array3> x = {Array3(-1, -1, 0), Array3(1, -1, 0), Array3(1, 1, 0),  Array3(-1, 1, 0), Array3(0, -1, 0),
+                           Array3(1, 0, 0),   Array3(0, 1, 0),  Array3(-1, 0, 0), Array3(0, 0, 0)};
   x.resize(n);
   return x;
 }
@@ -32,12 +31,10 @@ std::vector<Array3> QuadrilateralNodes(int n) {
 // right x=1, back y=1, left x=-1, top), the body centre.
 std::vector<Array3> HexahedronNodes(int n) {
   std::vector<Array3> x = {
-      Array3(-1, -1, -1), Array3(1, -1, -1), Array3(1, 1, -1), Array3(-1, 1, -1),
-      Array3(-1, -1, 1),  Array3(1, -1, 1),  Array3(1, 1, 1),  Array3(-1, 1, 1),
-      Array3(0, -1, -1),  Array3(1, 0, -1),  Array3(0, 1, -1), Array3(-1, 0, -1),
-      Array3(-1, -1, 0),  Array3(1, -1, 0),  Array3(1, 1, 0),  Array3(-1, 1, 0),
-      Array3(0, -1, 1),   Array3(1, 0, 1),   Array3(0, 1, 1),  Array3(-1, 0, 1),
-      Array3(0, 0, -1),   Array3(0, -1, 0),  Array3(1, 0, 0),  Array3(0, 1, 0),
+      Array3(-1, -1, -1), Array3(1, -1, -1), Array3(1, 1, -1),  Array3(-1, 1, -1), Array3(-1, -1, 1), Array3(1, -1, 1),
+      Array3(1, 1, 1),    Array3(-1, 1, 1),  Array3(0, -1, -1), Array3(1, 0, -1),  Array3(0, 1, -1),  Array3(-1, 0, -1),
+      Array3(-1, -1, 0),  Array3(1, -1, 0),  Array3(1, 1, 0),   Array3(-1, 1, 0),  Array3(0, -1, 1),  Array3(1, 0, 1),
+      Array3(0, 1, 1),    Array3(-1, 0, 1),  Array3(0, 0, -1),  Array3(0, -1, 0),  Array3(1, 0, 0),   Array3(0, 1, 0),
       Array3(-1, 0, 0),   Array3(0, 0, 1),   Array3(0, 0, 0)};
   x.resize(n);
   return x;
@@ -61,8 +58,7 @@ Faces TriangleFaces(GT line, bool quadratic) {
 }
 
 Faces QuadrilateralFaces(GT line, bool quadratic) {
-  if (quadratic)
-    return {{line, {0, 1, 4}}, {line, {1, 2, 5}}, {line, {2, 3, 6}}, {line, {3, 0, 7}}};
+  if (quadratic) return {{line, {0, 1, 4}}, {line, {1, 2, 5}}, {line, {2, 3, 6}}, {line, {3, 0, 7}}};
   return {{line, {0, 1}}, {line, {1, 2}}, {line, {2, 3}}, {line, {3, 0}}};
 }
 
@@ -81,13 +77,10 @@ Faces TetrahedronFaces(bool quadratic) {
 
 // Bottom, front, right, back, left, top; corners, then mid-edges, then the face centre.
 Faces HexahedronFaces(int nodes) {
-  const std::vector<std::vector<int>> full = {
-      {3, 2, 1, 0, 10, 9, 8, 11, 20},  {0, 1, 5, 4, 8, 13, 16, 12, 21},
-      {2, 6, 5, 1, 14, 17, 13, 9, 22}, {7, 6, 2, 3, 18, 14, 10, 15, 23},
-      {7, 3, 0, 4, 15, 11, 12, 19, 24}, {4, 5, 6, 7, 16, 17, 18, 19, 25}};
-  const GT type = nodes == 8 ? GT::Quadrilateral3D4
-                  : nodes == 20 ? GT::Quadrilateral3D8
-                                : GT::Quadrilateral3D9;
+  const std::vector<std::vector<int>> full = {{3, 2, 1, 0, 10, 9, 8, 11, 20},   {0, 1, 5, 4, 8, 13, 16, 12, 21},
+                                              {2, 6, 5, 1, 14, 17, 13, 9, 22},  {7, 6, 2, 3, 18, 14, 10, 15, 23},
+                                              {7, 3, 0, 4, 15, 11, 12, 19, 24}, {4, 5, 6, 7, 16, 17, 18, 19, 25}};
+  const GT type = nodes == 8 ? GT::Quadrilateral3D4 : nodes == 20 ? GT::Quadrilateral3D8 : GT::Quadrilateral3D9;
   const std::size_t face_nodes = nodes == 8 ? 4 : nodes == 20 ? 8 : 9;
   Faces faces;
   for (const auto& f : full) faces.push_back({type, std::vector<int>(f.begin(), f.begin() + face_nodes)});
@@ -167,8 +160,8 @@ ReferenceElement::ReferenceElement(GeometryType type) : type_(type) {
       default_order_ = quadratic ? 2 : 1;
       if (quadratic) simplex_edges_ = tri_edges;
       nodes_local_ = SimplexNodes(2, simplex_edges_);
-      const GT line = working_dim_ == 2 ? (quadratic ? GT::Line2D3 : GT::Line2D2)
-                                        : (quadratic ? GT::Line3D3 : GT::Line3D2);
+      const GT line =
+          working_dim_ == 2 ? (quadratic ? GT::Line2D3 : GT::Line2D2) : (quadratic ? GT::Line3D3 : GT::Line3D2);
       faces_ = TriangleFaces(line, quadratic);
       break;
     }
@@ -188,8 +181,7 @@ ReferenceElement::ReferenceElement(GeometryType type) : type_(type) {
       degree_ = n == 4 ? 1 : 2;
       default_order_ = n == 4 ? 2 : 3;
       nodes_local_ = QuadrilateralNodes(n);
-      const GT line = working_dim_ == 2 ? (n == 4 ? GT::Line2D2 : GT::Line2D3)
-                                        : (n == 4 ? GT::Line3D2 : GT::Line3D3);
+      const GT line = working_dim_ == 2 ? (n == 4 ? GT::Line2D2 : GT::Line2D3) : (n == 4 ? GT::Line3D2 : GT::Line3D3);
       faces_ = QuadrilateralFaces(line, n > 4);
       break;
     }
@@ -257,34 +249,27 @@ const char* ReferenceElement::Name() const noexcept { return GeometryTypeName(ty
 
 Array3 ReferenceElement::LocalCenter() const noexcept {
   switch (family_) {
-    case GeometryFamily::Triangle:
-      return Array3(1.0 / 3.0, 1.0 / 3.0, 0.0);
-    case GeometryFamily::Tetrahedron:
-      return Array3(0.25, 0.25, 0.25);
-    case GeometryFamily::Prism:
-      return Array3(1.0 / 3.0, 1.0 / 3.0, 0.5);
-    default:
-      return Array3::Zero();
+    case GeometryFamily::Triangle: return Array3(1.0 / 3.0, 1.0 / 3.0, 0.0);
+    case GeometryFamily::Tetrahedron: return Array3(0.25, 0.25, 0.25);
+    case GeometryFamily::Prism: return Array3(1.0 / 3.0, 1.0 / 3.0, 0.5);
+    default: return Array3::Zero();
   }
 }
 
 bool ReferenceElement::IsInside(const Array3& x, double tol) const noexcept {
   switch (family_) {
-    case GeometryFamily::Point:
-      return true;
+    case GeometryFamily::Point: return true;
     case GeometryFamily::Line:
     case GeometryFamily::Quadrilateral:
     case GeometryFamily::Hexahedron:
       for (int d = 0; d < local_dim_; ++d)
         if (std::abs(x[d]) > 1.0 + tol) return false;
       return true;
-    case GeometryFamily::Triangle:
-      return x[0] >= -tol && x[1] >= -tol && x[0] + x[1] <= 1.0 + tol;
+    case GeometryFamily::Triangle: return x[0] >= -tol && x[1] >= -tol && x[0] + x[1] <= 1.0 + tol;
     case GeometryFamily::Tetrahedron:
       return x[0] >= -tol && x[1] >= -tol && x[2] >= -tol && x[0] + x[1] + x[2] <= 1.0 + tol;
     case GeometryFamily::Prism:
-      return x[0] >= -tol && x[1] >= -tol && x[0] + x[1] <= 1.0 + tol && x[2] >= -tol &&
-             x[2] <= 1.0 + tol;
+      return x[0] >= -tol && x[1] >= -tol && x[0] + x[1] <= 1.0 + tol && x[2] >= -tol && x[2] <= 1.0 + tol;
   }
   return false;
 }
@@ -293,9 +278,7 @@ void ReferenceElement::Evaluate(const Array3& x, double* N, double* dN) const no
   const int n = NodesNumber();
   for (int i = 0; i < 3 * n; ++i) dN[i] = 0.0;
   switch (basis_) {
-    case Basis::Point:
-      N[0] = 1.0;
-      return;
+    case Basis::Point: N[0] = 1.0; return;
     case Basis::Lagrange: {
       double l[3][3], dl[3][3];
       for (int d = 0; d < local_dim_; ++d) Lagrange1D(degree_, x[d], l[d], dl[d]);

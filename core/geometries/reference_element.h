@@ -84,7 +84,7 @@ class ReferenceElement {
   int default_order_ = 1;
   int measure_order_ = 1;
   Basis basis_ = Basis::Point;
-  int degree_ = 1;                               // polynomial degree of the basis
+  int degree_ = 1;  // polynomial degree of the basis
   std::vector<Array3> nodes_local_;
   std::vector<std::array<int, 2>> simplex_edges_;  // corner pairs of quadratic simplex mid-nodes
   std::vector<Face> faces_;

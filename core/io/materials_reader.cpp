@@ -149,7 +149,8 @@ class MaterialsReader {
     Table result(input, output);
     for (Eigen::Index r = 0; r < points.rows(); ++r) {
       if (r > 0 && points(r, 0) <= points(r - 1, 0))
-        Fail(path + ".data", "expected x values in increasing order", Concat(points(r, 0), " after ", points(r - 1, 0)));
+        Fail(path + ".data", "expected x values in increasing order",
+             Concat(points(r, 0), " after ", points(r - 1, 0)));
       result.PushBack(points(r, 0), points(r, 1));
     }
     properties.SetTable(input, output, std::move(result));

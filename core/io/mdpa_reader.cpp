@@ -114,7 +114,11 @@ class Reader {
  public:
   Reader(std::string_view text, const std::string& origin, ModelPart& target, const MdpaReaderOptions& options,
          std::vector<FixityRequest>& fixities)
-      : cursor_(text), origin_(origin), target_(target), root_(target.GetRootModelPart()), options_(options),
+      : cursor_(text),
+        origin_(origin),
+        target_(target),
+        root_(target.GetRootModelPart()),
+        options_(options),
         fixities_(fixities) {}
 
   void Run() {
@@ -146,9 +150,9 @@ class Reader {
       } else if (keyword == "SubModelPart") {
         ReadSubModelPart(line, rest, target_);
       } else {
-        static const std::vector<std::string> blocks = {
-            "ModelPartData", "Properties", "Table", "Nodes", "Elements", "Conditions",
-            "NodalData", "ElementalData", "ConditionalData", "SubModelPart"};
+        static const std::vector<std::string> blocks = {"ModelPartData",   "Properties",  "Table",     "Nodes",
+                                                        "Elements",        "Conditions",  "NodalData", "ElementalData",
+                                                        "ConditionalData", "SubModelPart"};
         Fail(line.number,
              Concat("expected a block name (ModelPartData, Properties, Table, Nodes, Elements, Conditions, "
                     "NodalData, ElementalData, ConditionalData or SubModelPart)",
@@ -197,8 +201,10 @@ class Reader {
     IndexType id = 0;
     if (!ToInteger(token, id)) {
       std::string expected;
-      if constexpr (std::is_invocable_v<What>) expected = what();
-      else expected = std::string(what);
+      if constexpr (std::is_invocable_v<What>)
+        expected = what();
+      else
+        expected = std::string(what);
       Fail(line.number, Concat("expected ", expected, " (a non-negative integer)"), token.empty() ? line.text : token);
     }
     return id;
@@ -223,7 +229,8 @@ class Reader {
   DataValueContainer::Value ParseValue(const Line& line, const VariableData& var, std::string_view text) const {
     DataValueContainer::Value value;
     if (!mdpa::ParseValue(var, text, value))
-      Fail(line.number, Concat("expected ", mdpa::ExpectedValue(var), " for ", var.Name()), text.empty() ? line.text : text);
+      Fail(line.number, Concat("expected ", mdpa::ExpectedValue(var), " for ", var.Name()),
+           text.empty() ? line.text : text);
     return value;
   }
 
@@ -284,7 +291,8 @@ class Reader {
   /// Pairs "x y" (any number per line) with increasing x, up to `End Table`.
   Table ReadTablePoints(const Line& begin, std::string_view input, std::string_view output) {
     for (const std::string_view name : {input, output}) {
-      if (name.empty()) Fail(begin.number, "expected 'Begin Table <id> <input variable> <output variable>'", begin.text);
+      if (name.empty())
+        Fail(begin.number, "expected 'Begin Table <id> <input variable> <output variable>'", begin.text);
       LookupVariable(begin, name, false);
     }
     Table table{std::string(input), std::string(output)};
@@ -299,7 +307,9 @@ class Reader {
         if (!ToDouble(token, v)) Fail(line.number, "expected a table value (a finite number)", token);
         if (!have_x) {
           if (!table.Data().empty() && v <= table.Data().back().first)
-            Fail(line.number, Concat("expected table x values in increasing order (previous x ", table.Data().back().first, ")"), token);
+            Fail(line.number,
+                 Concat("expected table x values in increasing order (previous x ", table.Data().back().first, ")"),
+                 token);
           x = v;
         } else {
           table.PushBack(x, v);
@@ -327,8 +337,7 @@ class Reader {
       Entry e{};
       e.line = line.number;
       const std::string_view id_token = NextToken(rest);
-      if (!ToInteger(id_token, e.id))
-        Fail(line.number, "expected a node line 'id x y z' or 'End Nodes'", line.text);
+      if (!ToInteger(id_token, e.id)) Fail(line.number, "expected a node line 'id x y z' or 'End Nodes'", line.text);
       for (int k = 0; k < 3; ++k) {
         const std::string_view token = NextToken(rest);
         if (!ToDouble(token, e.x[k]))
@@ -345,7 +354,8 @@ class Reader {
       if (entries[i].id == entries[i - 1].id)
         Fail(std::max(entries[i].line, entries[i - 1].line),
              Concat("expected a unique node id, node ", entries[i].id, " is defined at lines ",
-                    std::min(entries[i].line, entries[i - 1].line), " and ", std::max(entries[i].line, entries[i - 1].line)),
+                    std::min(entries[i].line, entries[i - 1].line), " and ",
+                    std::max(entries[i].line, entries[i - 1].line)),
              std::to_string(entries[i].id));
     for (const Entry& e : entries) {
       try {
@@ -362,24 +372,31 @@ class Reader {
   // Elements and conditions -------------------------------------------------------------------
   template <class T>
   IdIndex<T>& IndexOf() {
-    if constexpr (std::is_same_v<T, Element>) return elements_;
-    else return conditions_;
+    if constexpr (std::is_same_v<T, Element>)
+      return elements_;
+    else
+      return conditions_;
   }
   template <class T>
   const EntityContainer<T>& EntitiesOf() const {
-    if constexpr (std::is_same_v<T, Element>) return root_.Elements();
-    else return root_.Conditions();
+    if constexpr (std::is_same_v<T, Element>)
+      return root_.Elements();
+    else
+      return root_.Conditions();
   }
   template <class T>
   T* FindEntity(IndexType id) {
-    if constexpr (std::is_same_v<T, Element>) return elements_.Find(id, root_.Elements());
-    else return conditions_.Find(id, root_.Conditions());
+    if constexpr (std::is_same_v<T, Element>)
+      return elements_.Find(id, root_.Elements());
+    else
+      return conditions_.Find(id, root_.Conditions());
   }
 
   template <class T>
   void ReadEntities(const Line& begin, std::string_view rest, const char* kind, const char* keyword) {
     const std::string_view name_view = NextToken(rest);
-    if (name_view.empty()) Fail(begin.number, Concat("expected the ", kind, " name after 'Begin ", keyword, "'"), begin.text);
+    if (name_view.empty())
+      Fail(begin.number, Concat("expected the ", kind, " name after 'Begin ", keyword, "'"), begin.text);
     ExpectEnd(begin, rest);
     const std::string name(name_view);
     const T* prototype = nullptr;
@@ -400,19 +417,23 @@ class Reader {
     Line line;
     while (NextInBlock(line, begin, keyword)) {
       std::string_view tail = line.text;
-      const IndexType id = ParseId(line, NextToken(tail), [&] { return Concat("an ", kind, " line 'id property_id node_ids...'"); });
-      const IndexType pid = ParseId(line, NextToken(tail), [&] { return Concat("the property id of ", kind, " ", id); });
+      const IndexType id =
+          ParseId(line, NextToken(tail), [&] { return Concat("an ", kind, " line 'id property_id node_ids...'"); });
+      const IndexType pid =
+          ParseId(line, NextToken(tail), [&] { return Concat("the property id of ", kind, " ", id); });
       node_ids.clear();
       for (std::string_view token = NextToken(tail); !token.empty(); token = NextToken(tail))
         node_ids.push_back(ParseId(line, token, [&] { return Concat("a node id of ", kind, " ", id); }));
       if (node_ids.size() != expected)
-        Fail(line.number, Concat("expected ", expected, " node ids for ", name, " ", id, " (found ", node_ids.size(), ")"),
+        Fail(line.number,
+             Concat("expected ", expected, " node ids for ", name, " ", id, " (found ", node_ids.size(), ")"),
              line.text);
       Geometry::NodesArray nodes;
       nodes.reserve(node_ids.size());
       for (IndexType nid : node_ids) {
         Node* node = FindNode(nid);
-        if (!node) FailIn(line.number, Concat(kind, " ", id, " refers to node ", nid, ", which does not exist"), line.text);
+        if (!node)
+          FailIn(line.number, Concat(kind, " ", id, " refers to node ", nid, ", which does not exist"), line.text);
         nodes.push_back(node);
       }
       if (pid != properties_id) {
@@ -431,8 +452,10 @@ class Reader {
         FailIn(line.number, error.what(), line.text);
       }
       entity->SetRegisteredName(registered_name);
-      if constexpr (std::is_same_v<T, Element>) target_.AddElement(std::move(entity));
-      else target_.AddCondition(std::move(entity));
+      if constexpr (std::is_same_v<T, Element>)
+        target_.AddElement(std::move(entity));
+      else
+        target_.AddCondition(std::move(entity));
     }
     IndexOf<T>().Invalidate();
   }
@@ -444,8 +467,8 @@ class Reader {
     const VariableData* var = LookupVariable(begin, name, true);
     if (!var) return SkipBlock(begin, "NodalData");
     const bool scalar = var->IsComponent() || var->Type() == ValueType::Double;
-    const bool historical = (scalar || var->Type() == ValueType::Array3) &&
-                            root_.GetNodalSolutionStepVariablesList().Has(*var);
+    const bool historical =
+        (scalar || var->Type() == ValueType::Array3) && root_.GetNodalSolutionStepVariablesList().Has(*var);
     // A fixity flag on an Array3 variable fixes its three components.
     std::vector<const Variable<double>*> fixable;
     if (scalar) {
@@ -467,11 +490,13 @@ class Reader {
       const std::string_view fix_token = NextToken(tail);
       int fixed = 0;
       if (!ToInteger(fix_token, fixed) || (fixed != 0 && fixed != 1))
-        Fail(line.number, Concat("expected the fixity flag (0 or 1) of node ", id), fix_token.empty() ? line.text : fix_token);
+        Fail(line.number, Concat("expected the fixity flag (0 or 1) of node ", id),
+             fix_token.empty() ? line.text : fix_token);
       const std::string_view text = TrimView(tail);
       if (historical && scalar) {
         double v = 0.0;
-        if (!ToDouble(text, v)) Fail(line.number, Concat("expected a finite number for ", var->Name()), text.empty() ? line.text : text);
+        if (!ToDouble(text, v))
+          Fail(line.number, Concat("expected a finite number for ", var->Name()), text.empty() ? line.text : text);
         node->FastGetSolutionStepValue(*static_cast<const Variable<double>*>(var)) = v;
       } else {
         const DataValueContainer::Value value = ParseValue(line, *var, text);
@@ -482,7 +507,8 @@ class Reader {
       }
       if (fixed == 1) {
         if (fixable.empty())
-          Fail(line.number, Concat("expected fixity 0: ", var->Name(), " is a ", ValueTypeName(var->Type()), " and has no DoF"),
+          Fail(line.number,
+               Concat("expected fixity 0: ", var->Name(), " is a ", ValueTypeName(var->Type()), " and has no DoF"),
                fix_token);
         for (const Variable<double>* component : fixable) fixities_.push_back({node, component});
       }
@@ -500,7 +526,8 @@ class Reader {
       std::string_view tail = line.text;
       const IndexType id = ParseId(line, NextToken(tail), [&] { return Concat("a data line '", kind, "_id value'"); });
       T* entity = FindEntity<T>(id);
-      if (!entity) FailIn(line.number, Concat(keyword, " ", var->Name(), ": ", kind, " ", id, " does not exist"), line.text);
+      if (!entity)
+        FailIn(line.number, Concat(keyword, " ", var->Name(), ": ", kind, " ", id, " does not exist"), line.text);
       entity->Data().SetGeneric(*var, ParseValue(line, *var, TrimView(tail)));
     }
   }
@@ -531,9 +558,13 @@ class Reader {
         ReadSubModelPart(line, tail, sub);
         continue;
       }
-      static const std::vector<std::string> blocks = {"SubModelPartNodes", "SubModelPartElements",
-                                                      "SubModelPartConditions", "SubModelPartProperties",
-                                                      "SubModelPartTables", "SubModelPartData", "SubModelPart"};
+      static const std::vector<std::string> blocks = {"SubModelPartNodes",
+                                                      "SubModelPartElements",
+                                                      "SubModelPartConditions",
+                                                      "SubModelPartProperties",
+                                                      "SubModelPartTables",
+                                                      "SubModelPartData",
+                                                      "SubModelPart"};
       if (word != "Begin" || std::find(blocks.begin(), blocks.end(), keyword) == blocks.end())
         Fail(line.number,
              Concat("expected 'Begin <block>' with one of SubModelPartNodes, SubModelPartElements, "
@@ -552,7 +583,8 @@ class Reader {
       } else if (keyword == "SubModelPartElements") {
         ReadIds(line, keyword, [&](IndexType id, const Line& at) {
           Element* element = FindEntity<Element>(id);
-          if (!element) FailIn(at.number, Concat("sub model part ", where, ": element ", id, " does not exist"), at.text);
+          if (!element)
+            FailIn(at.number, Concat("sub model part ", where, ": element ", id, " does not exist"), at.text);
           sub.AddElement(element);
         });
       } else if (keyword == "SubModelPartConditions") {

@@ -61,16 +61,16 @@ void CholmodSolver::Analyze(const SparseMatrix& M) {
   cholmod_sparse view = View(M);
   handles_->factor = cholmod_analyze(&view, &handles_->common);
   if (handles_->factor == nullptr) {
-    throw SolutionError(Concat("CHOLMOD analysis of a ", M.rows(), "-equation matrix failed (status ",
-                               handles_->common.status, ")"));
+    throw SolutionError(
+        Concat("CHOLMOD analysis of a ", M.rows(), "-equation matrix failed (status ", handles_->common.status, ")"));
   }
 }
 
 void CholmodSolver::Factorize(const SparseMatrix& M) {
   const double asymmetry = Asymmetry(M);
   if (asymmetry > 1e-12) {
-    throw SolutionError(Concat("CHOLMOD needs a symmetric matrix; largest |a_ij - a_ji| is ", asymmetry,
-                               " of the largest entry"));
+    throw SolutionError(
+        Concat("CHOLMOD needs a symmetric matrix; largest |a_ij - a_ji| is ", asymmetry, " of the largest entry"));
   }
   cholmod_common& common = handles_->common;
   cholmod_sparse view = View(M);
@@ -78,12 +78,14 @@ void CholmodSolver::Factorize(const SparseMatrix& M) {
   if (common.status == CHOLMOD_NOT_POSDEF) {
     cholmod_factor* factor = handles_->factor;
     const long minor = static_cast<long>(factor->minor);
-    const long equation = (minor < M.rows() && factor->Perm != nullptr) ? static_cast<int*>(factor->Perm)[minor] : minor;
+    const long equation =
+        (minor < M.rows() && factor->Perm != nullptr) ? static_cast<int*>(factor->Perm)[minor] : minor;
     throw SingularMatrixError(Concat("CHOLMOD: matrix not positive definite, factorization failed at equation ",
                                      equation, " (pivot ", minor, " of the fill-reducing order)"),
                               equation);
   }
-  if (common.status != CHOLMOD_OK) throw SolutionError(Concat("CHOLMOD factorization failed (status ", common.status, ")"));
+  if (common.status != CHOLMOD_OK)
+    throw SolutionError(Concat("CHOLMOD factorization failed (status ", common.status, ")"));
 }
 
 void CholmodSolver::Substitute(const SparseMatrix& M, Vector& x, const Vector& b) {

@@ -77,19 +77,28 @@ void IterativeSolver::Initialize(const SparseMatrix& A) {
   const bool ilu = p == Preconditioner::kIlu0 || p == Preconditioner::kIlu;
   switch (options_.method) {
     case Method::kCg:
-      if (p == Preconditioner::kNone) backend_ = std::make_unique<BackendFor<Eigen::ConjugateGradient<SparseMatrix, kFull, Identity>>>(options_);
-      else if (ilu) backend_ = std::make_unique<BackendFor<Eigen::ConjugateGradient<SparseMatrix, kFull, Ichol>>>(options_);
-      else backend_ = std::make_unique<BackendFor<Eigen::ConjugateGradient<SparseMatrix, kFull, Jacobi>>>(options_);
+      if (p == Preconditioner::kNone)
+        backend_ = std::make_unique<BackendFor<Eigen::ConjugateGradient<SparseMatrix, kFull, Identity>>>(options_);
+      else if (ilu)
+        backend_ = std::make_unique<BackendFor<Eigen::ConjugateGradient<SparseMatrix, kFull, Ichol>>>(options_);
+      else
+        backend_ = std::make_unique<BackendFor<Eigen::ConjugateGradient<SparseMatrix, kFull, Jacobi>>>(options_);
       break;
     case Method::kBicgstab:
-      if (p == Preconditioner::kNone) backend_ = std::make_unique<BackendFor<Eigen::BiCGSTAB<SparseMatrix, Identity>>>(options_);
-      else if (ilu) backend_ = std::make_unique<BackendFor<Eigen::BiCGSTAB<SparseMatrix, Ilu>>>(options_);
-      else backend_ = std::make_unique<BackendFor<Eigen::BiCGSTAB<SparseMatrix, Jacobi>>>(options_);
+      if (p == Preconditioner::kNone)
+        backend_ = std::make_unique<BackendFor<Eigen::BiCGSTAB<SparseMatrix, Identity>>>(options_);
+      else if (ilu)
+        backend_ = std::make_unique<BackendFor<Eigen::BiCGSTAB<SparseMatrix, Ilu>>>(options_);
+      else
+        backend_ = std::make_unique<BackendFor<Eigen::BiCGSTAB<SparseMatrix, Jacobi>>>(options_);
       break;
     case Method::kGmres:
-      if (p == Preconditioner::kNone) backend_ = std::make_unique<BackendFor<Eigen::GMRES<SparseMatrix, Identity>>>(options_);
-      else if (ilu) backend_ = std::make_unique<BackendFor<Eigen::GMRES<SparseMatrix, Ilu>>>(options_);
-      else backend_ = std::make_unique<BackendFor<Eigen::GMRES<SparseMatrix, Jacobi>>>(options_);
+      if (p == Preconditioner::kNone)
+        backend_ = std::make_unique<BackendFor<Eigen::GMRES<SparseMatrix, Identity>>>(options_);
+      else if (ilu)
+        backend_ = std::make_unique<BackendFor<Eigen::GMRES<SparseMatrix, Ilu>>>(options_);
+      else
+        backend_ = std::make_unique<BackendFor<Eigen::GMRES<SparseMatrix, Jacobi>>>(options_);
       break;
   }
   backend_->Analyze(A);
@@ -110,8 +119,8 @@ void IterativeSolver::Solve(const SparseMatrix& A, Vector& x, const Vector& b) {
                                " iterations (tolerance ", options_.tolerance, ", max_iteration ",
                                options_.max_iteration, ")"));
   }
-  throw SolutionError(Concat(what, " broke down (numerical issue) after ", iterations_, " iterations, relative residual ",
-                             residual_));
+  throw SolutionError(
+      Concat(what, " broke down (numerical issue) after ", iterations_, " iterations, relative residual ", residual_));
 }
 
 void IterativeSolver::Clear() {

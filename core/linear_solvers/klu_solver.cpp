@@ -26,8 +26,8 @@ KluSolver::~KluSolver() { Release(); }
 void KluSolver::Analyze(const SparseMatrix& M) {
   handles_->symbolic = klu_analyze(static_cast<int>(M.rows()), Pointers(M), Indices(M), &handles_->common);
   if (handles_->symbolic == nullptr) {
-    throw SolutionError(Concat("KLU analysis of a ", M.rows(), "-equation matrix failed (status ",
-                               handles_->common.status, ")"));
+    throw SolutionError(
+        Concat("KLU analysis of a ", M.rows(), "-equation matrix failed (status ", handles_->common.status, ")"));
   }
 }
 

@@ -59,7 +59,19 @@ const std::map<std::string, std::string>& DeprecatedSolverNames() {
   return names;
 }
 
-enum class Backend { kUmfpack, kKlu, kCholmod, kEigenSparseLU, kCg, kBicgstab, kGmres, kAmgcl, kScaling, kSparseQr, kPetsc };
+enum class Backend {
+  kUmfpack,
+  kKlu,
+  kCholmod,
+  kEigenSparseLU,
+  kCg,
+  kBicgstab,
+  kGmres,
+  kAmgcl,
+  kScaling,
+  kSparseQr,
+  kPetsc
+};
 
 /// Every accepted normalised name and what runs for it (spec 7.2).
 const std::map<std::string, Backend>& SolverBackends() {
@@ -176,8 +188,8 @@ IterativeSolver::Options ReadIterativeOptions(const Parameters& settings, Iterat
   const std::string preconditioner = NormalizePreconditionerName(given);
   const auto found = Preconditioners().find(preconditioner);
   if (found == Preconditioners().end()) {
-    std::vector<std::string> valid = {"none", "diagonal", "ilu0", "ilu", "None", "DiagonalPreconditioner",
-                                      "ILU0Preconditioner", "ILUPreconditioner"};
+    std::vector<std::string> valid = {
+        "none", "diagonal", "ilu0", "ilu", "None", "DiagonalPreconditioner", "ILU0Preconditioner", "ILUPreconditioner"};
     throw InputError(Concat(settings.Where(), ".preconditioner_type: unknown preconditioner '", given, "'",
                             DidYouMean(given, valid)));
   }
@@ -225,7 +237,8 @@ std::string NormalizeLinearSolverName(const std::string& name) {
   constexpr std::string_view kKratos = "KratosMultiphysics.";
   if (view.starts_with(kKratos)) view.remove_prefix(kKratos.size());
   constexpr std::string_view kApplication = "Application.";
-  if (const auto at = view.find(kApplication); at != std::string_view::npos) view.remove_prefix(at + kApplication.size());
+  if (const auto at = view.find(kApplication); at != std::string_view::npos)
+    view.remove_prefix(at + kApplication.size());
   const std::string stripped(view);
   const auto found = DeprecatedSolverNames().find(stripped);
   return found == DeprecatedSolverNames().end() ? stripped : found->second;
@@ -237,7 +250,8 @@ void RegisterLinearSolver(const std::string& name, LinearSolverCreator create) {
 
 std::unique_ptr<LinearSolver> CreateLinearSolver(const Parameters& user_settings) {
   if (user_settings.Has("solver_type") && user_settings["solver_type"].IsString()) {
-    const auto registered = RegisteredSolvers().find(NormalizeLinearSolverName(user_settings["solver_type"].GetString()));
+    const auto registered =
+        RegisteredSolvers().find(NormalizeLinearSolverName(user_settings["solver_type"].GetString()));
     if (registered != RegisteredSolvers().end()) return registered->second(user_settings);
   }
   Parameters settings = user_settings.Clone();
@@ -258,12 +272,8 @@ std::unique_ptr<LinearSolver> CreateLinearSolver(const Parameters& user_settings
 
   std::unique_ptr<LinearSolver> solver;
   switch (found->second) {
-    case Backend::kUmfpack:
-      solver = std::make_unique<UmfpackSolver>();
-      break;
-    case Backend::kKlu:
-      solver = std::make_unique<KluSolver>();
-      break;
+    case Backend::kUmfpack: solver = std::make_unique<UmfpackSolver>(); break;
+    case Backend::kKlu: solver = std::make_unique<KluSolver>(); break;
     case Backend::kCholmod:
       // CHOLMOD needs SPD; an indefinite or non-symmetric system switches to UMFPACK for good.
       solver = std::make_unique<FallbackSolver>(std::make_unique<CholmodSolver>(), std::make_unique<UmfpackSolver>());
@@ -275,7 +285,7 @@ std::unique_ptr<LinearSolver> CreateLinearSolver(const Parameters& user_settings
                                 DidYouMean(ordering, {"colamd", "metis"})));
       }
       solver = std::make_unique<EigenSparseLUSolver>(ordering == "metis" ? EigenSparseLUSolver::Ordering::kMetis
-                                                                          : EigenSparseLUSolver::Ordering::kColamd);
+                                                                         : EigenSparseLUSolver::Ordering::kColamd);
       break;
     }
     case Backend::kCg:
@@ -298,11 +308,10 @@ std::unique_ptr<LinearSolver> CreateLinearSolver(const Parameters& user_settings
       // Kratos' ScalingSolver wraps another solver; as a solver_type of its own it wraps UMFPACK.
       return std::make_unique<ScalingSolver>(std::make_unique<UmfpackSolver>());
     case Backend::kSparseQr:
-      throw NotImplementedError(Concat(settings.Where(), ".solver_type: '", given,
-                                       "' (sparse QR) is not implemented; use 'umfpack' or 'skyline_lu_factorization'"));
-    case Backend::kPetsc:
-      solver = CreatePetscSolver(settings);
-      break;
+      throw NotImplementedError(
+          Concat(settings.Where(), ".solver_type: '", given,
+                 "' (sparse QR) is not implemented; use 'umfpack' or 'skyline_lu_factorization'"));
+    case Backend::kPetsc: solver = CreatePetscSolver(settings); break;
   }
   if (settings["scaling"].GetBool()) solver = std::make_unique<ScalingSolver>(std::move(solver));
   return solver;

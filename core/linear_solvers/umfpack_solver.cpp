@@ -66,16 +66,16 @@ void UmfpackSolver::Analyze(const SparseMatrix& M) {
   }
   if (status != UMFPACK_OK) {
     symbolic_ = nullptr;
-    throw SolutionError(Concat("UMFPACK symbolic analysis of a ", M.rows(), "-equation matrix failed: ",
-                               UmfpackStatusText(status)));
+    throw SolutionError(
+        Concat("UMFPACK symbolic analysis of a ", M.rows(), "-equation matrix failed: ", UmfpackStatusText(status)));
   }
 }
 
 void UmfpackSolver::Factorize(const SparseMatrix& M) {
   FreeNumeric();
   double info[UMFPACK_INFO];
-  const auto status = umfpack_dl_numeric(outer_.data(), inner_.data(), M.valuePtr(), symbolic_, &numeric_, control_,
-                                         info);
+  const auto status =
+      umfpack_dl_numeric(outer_.data(), inner_.data(), M.valuePtr(), symbolic_, &numeric_, control_, info);
   if (status == UMFPACK_WARNING_singular_matrix) {
     const long column = SmallestPivotColumn();
     FreeNumeric();
@@ -98,9 +98,10 @@ void UmfpackSolver::Factorize(const SparseMatrix& M) {
 
 void UmfpackSolver::Substitute(const SparseMatrix& M, Vector& x, const Vector& b) {
   x.resize(M.cols());
-  const auto solve_status = umfpack_dl_solve(UMFPACK_A, outer_.data(), inner_.data(), M.valuePtr(), x.data(),
-                                             b.data(), numeric_, control_, nullptr);
-  if (solve_status != UMFPACK_OK) throw SolutionError(Concat("UMFPACK solve failed: ", UmfpackStatusText(solve_status)));
+  const auto solve_status = umfpack_dl_solve(UMFPACK_A, outer_.data(), inner_.data(), M.valuePtr(), x.data(), b.data(),
+                                             numeric_, control_, nullptr);
+  if (solve_status != UMFPACK_OK)
+    throw SolutionError(Concat("UMFPACK solve failed: ", UmfpackStatusText(solve_status)));
 }
 
 // The diagonal of U in pivot order, with the column permutation Q, gives the original column of

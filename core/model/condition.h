@@ -12,8 +12,7 @@ namespace mc {
 class Condition : public Entity {
  public:
   using Entity::Entity;
-  virtual std::unique_ptr<Condition> Create(IndexType id, Geometry::NodesArray nodes,
-                                            Properties* properties) const = 0;
+  virtual std::unique_ptr<Condition> Create(IndexType id, Geometry::NodesArray nodes, Properties* properties) const = 0;
 };
 
 }  // namespace mc

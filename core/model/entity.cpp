@@ -76,9 +76,7 @@ void Entity::GetValuesVector(Vector& values, int step) const {
 
 void Entity::GetFirstDerivativesVector(Vector& values, int step) const { GatherDerivatives(*this, 1, step, values); }
 
-void Entity::GetSecondDerivativesVector(Vector& values, int step) const {
-  GatherDerivatives(*this, 2, step, values);
-}
+void Entity::GetSecondDerivativesVector(Vector& values, int step) const { GatherDerivatives(*this, 2, step, values); }
 
 void Entity::CalculateOnIntegrationPoints(const Variable<double>& var, std::vector<double>& out,
                                           const ProcessInfo& info) {

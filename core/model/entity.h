@@ -59,11 +59,17 @@ class Entity {
   DataValueContainer& Data() noexcept { return values_; }
   const DataValueContainer& Data() const noexcept { return values_; }
   template <class T>
-  T GetValue(const Variable<T>& var) const { return values_.GetValue(var); }
+  T GetValue(const Variable<T>& var) const {
+    return values_.GetValue(var);
+  }
   template <class T, class U>
-  void SetValue(const Variable<T>& var, U&& value) { values_.SetValue(var, std::forward<U>(value)); }
+  void SetValue(const Variable<T>& var, U&& value) {
+    values_.SetValue(var, std::forward<U>(value));
+  }
   template <class T>
-  bool Has(const Variable<T>& var) const noexcept { return values_.Has(var); }
+  bool Has(const Variable<T>& var) const noexcept {
+    return values_.Has(var);
+  }
 
   // Degrees of freedom --------------------------------------------------------------------
   virtual void GetDofList(DofsVectorType& dofs, const ProcessInfo& info) const = 0;

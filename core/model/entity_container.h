@@ -22,8 +22,8 @@ class EntityContainer {
   }
   T* Find(IndexType id) const {
     Sort();
-    auto it = std::lower_bound(items_.begin(), items_.end(), id,
-                               [](const T* a, IndexType value) { return a->Id() < value; });
+    auto it =
+        std::lower_bound(items_.begin(), items_.end(), id, [](const T* a, IndexType value) { return a->Id() < value; });
     return (it != items_.end() && (*it)->Id() == id) ? *it : nullptr;
   }
   bool Contains(IndexType id) const { return Find(id) != nullptr; }

@@ -10,8 +10,8 @@ MasterSlaveConstraint::MasterSlaveConstraint(IndexType id, Dof& slave, std::vect
                                              std::vector<double> weights, double constant)
     : id_(id), slave_(&slave), masters_(std::move(masters)), weights_(std::move(weights)), constant_(constant) {
   if (masters_.size() != weights_.size())
-    throw InputError(Concat("master-slave constraint ", id_, ": ", masters_.size(), " masters but ",
-                            weights_.size(), " weights"));
+    throw InputError(
+        Concat("master-slave constraint ", id_, ": ", masters_.size(), " masters but ", weights_.size(), " weights"));
   for (const Dof* m : masters_) {
     if (m == nullptr) throw InputError(Concat("master-slave constraint ", id_, ": null master DoF"));
     if (m == slave_)

@@ -51,7 +51,9 @@ bool ModelPart::HasNodalSolutionStepVariable(const VariableData& var) const {
   return GetRootModelPart().root_->variables.Has(var);
 }
 
-const VariablesList& ModelPart::GetNodalSolutionStepVariablesList() const { return GetRootModelPart().root_->variables; }
+const VariablesList& ModelPart::GetNodalSolutionStepVariablesList() const {
+  return GetRootModelPart().root_->variables;
+}
 
 int ModelPart::GetBufferSize() const { return GetRootModelPart().root_->buffer_size; }
 
@@ -140,13 +142,12 @@ T* ModelPart::CreateEntity(const std::string& name, IndexType id, const std::vec
   nodes.reserve(node_ids.size());
   for (IndexType nid : node_ids) {
     Node* node = root.FindNode(nid);
-    if (!node)
-      throw InputError(Concat(name, " ", id, " refers to node ", nid, ", which does not exist"));
+    if (!node) throw InputError(Concat(name, " ", id, " refers to node ", nid, ", which does not exist"));
     nodes.push_back(node);
   }
   if (nodes.size() != prototype.GetGeometry().PointsNumber() && prototype.GetGeometry().PointsNumber() != 0)
-    throw InputError(Concat(name, " ", id, " has ", nodes.size(), " nodes, expected ",
-                            prototype.GetGeometry().PointsNumber()));
+    throw InputError(
+        Concat(name, " ", id, " has ", nodes.size(), " nodes, expected ", prototype.GetGeometry().PointsNumber()));
   T* entity = prototype.Create(id, std::move(nodes), properties).release();
   entity->SetRegisteredName(InternName(name));
   return entity;
@@ -159,8 +160,8 @@ Element& ModelPart::CreateNewElement(const std::string& name, IndexType id, cons
   return AddElement(std::unique_ptr<Element>(CreateEntity<Element>(name, id, node_ids, properties)));
 }
 
-Condition& ModelPart::CreateNewCondition(const std::string& name, IndexType id,
-                                         const std::vector<IndexType>& node_ids, Properties* properties) {
+Condition& ModelPart::CreateNewCondition(const std::string& name, IndexType id, const std::vector<IndexType>& node_ids,
+                                         Properties* properties) {
   if (GetRootModelPart().conditions_.Contains(id))
     throw InputError(Concat("condition ", id, " (", name, ") is defined twice"));
   return AddCondition(std::unique_ptr<Condition>(CreateEntity<Condition>(name, id, node_ids, properties)));
@@ -248,8 +249,7 @@ Properties& ModelPart::GetOrCreateProperties(IndexType id) {
 
 Properties& ModelPart::GetProperties(IndexType id) const {
   const auto it = properties_.find(id);
-  if (it == properties_.end())
-    throw InputError(Concat("model part ", FullName(), " has no properties ", id));
+  if (it == properties_.end()) throw InputError(Concat("model part ", FullName(), " has no properties ", id));
   return *it->second;
 }
 

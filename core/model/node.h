@@ -73,13 +73,21 @@ class Node {
   DataValueContainer& Data() noexcept { return values_; }
   const DataValueContainer& Data() const noexcept { return values_; }
   template <class T>
-  T GetValue(const Variable<T>& var) const { return values_.GetValue(var); }
+  T GetValue(const Variable<T>& var) const {
+    return values_.GetValue(var);
+  }
   template <class T>
-  T& GetValueRef(const Variable<T>& var) { return values_.GetValueRef(var); }
+  T& GetValueRef(const Variable<T>& var) {
+    return values_.GetValueRef(var);
+  }
   template <class T, class U>
-  void SetValue(const Variable<T>& var, U&& value) { values_.SetValue(var, std::forward<U>(value)); }
+  void SetValue(const Variable<T>& var, U&& value) {
+    values_.SetValue(var, std::forward<U>(value));
+  }
   template <class T>
-  bool Has(const Variable<T>& var) const noexcept { return values_.Has(var); }
+  bool Has(const Variable<T>& var) const noexcept {
+    return values_.Has(var);
+  }
 
   // Flags -------------------------------------------------------------------------------
   Flags& GetFlags() noexcept { return flags_; }

@@ -12,9 +12,18 @@ namespace mc {
 namespace {
 template <class T>
 const char* KindName();
-template <> const char* KindName<Element>() { return "element"; }
-template <> const char* KindName<Condition>() { return "condition"; }
-template <> const char* KindName<ConstitutiveLaw>() { return "constitutive law"; }
+template <>
+const char* KindName<Element>() {
+  return "element";
+}
+template <>
+const char* KindName<Condition>() {
+  return "condition";
+}
+template <>
+const char* KindName<ConstitutiveLaw>() {
+  return "constitutive law";
+}
 }  // namespace
 
 template <class T>

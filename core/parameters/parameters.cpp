@@ -97,8 +97,7 @@ json FromMatrix(const Matrix& m) {
 }
 
 /// Turns nlohmann's parse error into "origin: line L, column C: <reason>" plus the line itself.
-[[noreturn]] void ThrowParseError(const json::parse_error& error, const std::string& text,
-                                  const std::string& origin) {
+[[noreturn]] void ThrowParseError(const json::parse_error& error, const std::string& text, const std::string& origin) {
   // error.byte is the 1-based offset of the last character read (0 if unknown).
   const std::size_t offset = std::min<std::size_t>(error.byte > 0 ? error.byte - 1 : 0, text.size());
   const std::size_t line_start = offset == 0 ? 0 : text.rfind('\n', offset - 1) + 1;  // npos + 1 == 0
@@ -115,8 +114,8 @@ json FromMatrix(const Matrix& m) {
   if (colon != std::string::npos) reason = reason.substr(colon + 2);
 
   const std::string where = origin.empty() ? std::string("JSON text") : origin;
-  throw InputError(Concat(where, ": line ", line, ", column ", column, ": invalid JSON: ", reason, "\n  ",
-                          line_text, "\n  ", std::string(column > 0 ? column - 1 : 0, ' '), "^"));
+  throw InputError(Concat(where, ": line ", line, ", column ", column, ": invalid JSON: ", reason, "\n  ", line_text,
+                          "\n  ", std::string(column > 0 ? column - 1 : 0, ' '), "^"));
 }
 
 }  // namespace
@@ -154,9 +153,7 @@ Parameters Parameters::FromFile(const std::string& path) {
 
 // Paths and messages --------------------------------------------------------------------------
 
-std::string Parameters::ChildPath(const std::string& key) const {
-  return path_.empty() ? key : path_ + "." + key;
-}
+std::string Parameters::ChildPath(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
 
 std::string Parameters::WhereChild(const std::string& child_path) const {
   const std::string& origin = document_->origin;
@@ -229,8 +226,7 @@ bool Parameters::IsMatrix() const {
 }
 
 bool Parameters::IsStringArray() const {
-  return node_->is_array() &&
-         std::all_of(node_->begin(), node_->end(), [](const json& v) { return v.is_string(); });
+  return node_->is_array() && std::all_of(node_->begin(), node_->end(), [](const json& v) { return v.is_string(); });
 }
 
 // Getters -------------------------------------------------------------------------------------
@@ -285,7 +281,8 @@ Matrix Parameters::GetMatrix() const {
   for (std::size_t i = 0; i < rows; ++i) {
     const Parameters row = (*this)[i];
     if (row.node_->size() != cols)
-      throw InputError(Concat(row.Where(), ": matrix row has ", row.node_->size(), " entries, the first row has ", cols));
+      throw InputError(
+          Concat(row.Where(), ": matrix row has ", row.node_->size(), " entries, the first row has ", cols));
     for (std::size_t j = 0; j < cols; ++j)
       m(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = row[j].GetDouble();
   }
@@ -335,12 +332,30 @@ void Parameters::AddEmptyArray(const std::string& key) {
   (*node_)[key] = json::array();
 }
 
-void Parameters::AddDouble(const std::string& key, double v) { RequireObject(); (*node_)[key] = v; }
-void Parameters::AddInt(const std::string& key, int v) { RequireObject(); (*node_)[key] = v; }
-void Parameters::AddBool(const std::string& key, bool v) { RequireObject(); (*node_)[key] = v; }
-void Parameters::AddString(const std::string& key, const std::string& v) { RequireObject(); (*node_)[key] = v; }
-void Parameters::AddVector(const std::string& key, const Vector& v) { RequireObject(); (*node_)[key] = FromVector(v); }
-void Parameters::AddMatrix(const std::string& key, const Matrix& v) { RequireObject(); (*node_)[key] = FromMatrix(v); }
+void Parameters::AddDouble(const std::string& key, double v) {
+  RequireObject();
+  (*node_)[key] = v;
+}
+void Parameters::AddInt(const std::string& key, int v) {
+  RequireObject();
+  (*node_)[key] = v;
+}
+void Parameters::AddBool(const std::string& key, bool v) {
+  RequireObject();
+  (*node_)[key] = v;
+}
+void Parameters::AddString(const std::string& key, const std::string& v) {
+  RequireObject();
+  (*node_)[key] = v;
+}
+void Parameters::AddVector(const std::string& key, const Vector& v) {
+  RequireObject();
+  (*node_)[key] = FromVector(v);
+}
+void Parameters::AddMatrix(const std::string& key, const Matrix& v) {
+  RequireObject();
+  (*node_)[key] = FromMatrix(v);
+}
 
 void Parameters::AddStringArray(const std::string& key, const std::vector<std::string>& v) {
   RequireObject();
@@ -401,8 +416,7 @@ void Parameters::ValidateImpl(const Parameters& defaults, bool recursive) {
 
 void Parameters::AddMissingImpl(const Parameters& defaults, bool recursive) {
   RequireObject();
-  if (!defaults.node_->is_object())
-    throw Error(Concat(Where(), ": the defaults to add are not an object"));
+  if (!defaults.node_->is_object()) throw Error(Concat(Where(), ": the defaults to add are not an object"));
   for (auto it = defaults.node_->begin(); it != defaults.node_->end(); ++it) {
     const auto mine = node_->find(it.key());
     if (mine == node_->end()) {

@@ -51,8 +51,8 @@ class Parameters {
   bool IsBool() const;
   bool IsString() const;
   bool IsArray() const;
-  bool IsVector() const;  ///< array of numbers
-  bool IsMatrix() const;  ///< array of equally long arrays of numbers
+  bool IsVector() const;        ///< array of numbers
+  bool IsMatrix() const;        ///< array of equally long arrays of numbers
   bool IsSubParameter() const;  ///< JSON object
   bool IsStringArray() const;
 
@@ -79,7 +79,7 @@ class Parameters {
 
   // Object / array editing --------------------------------------------------------------------
   void AddValue(const std::string& key, const Parameters& value);  ///< deep copy; overwrites
-  void AddEmptyValue(const std::string& key);  ///< null value, to be set; keeps an existing one
+  void AddEmptyValue(const std::string& key);                      ///< null value, to be set; keeps an existing one
   void AddEmptyArray(const std::string& key);
   // Add a key, or overwrite it if present.
   void AddDouble(const std::string& key, double v);

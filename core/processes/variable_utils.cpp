@@ -61,8 +61,7 @@ void VariableUtils::AddDof(ModelPart& part, const Variable<double>& var, const V
 
 void VariableUtils::UpdateCurrentPosition(ModelPart& part) {
   if (!part.HasNodalSolutionStepVariable(DISPLACEMENT)) return;
-  for (Node* node : part.Nodes())
-    node->Coordinates() = node->X0() + node->FastGetSolutionStepValue(DISPLACEMENT);
+  for (Node* node : part.Nodes()) node->Coordinates() = node->X0() + node->FastGetSolutionStepValue(DISPLACEMENT);
 }
 
 }  // namespace mc

@@ -22,9 +22,7 @@ namespace {
 class ScopedTimer {
  public:
   explicit ScopedTimer(double& seconds) : seconds_(seconds), start_(std::chrono::steady_clock::now()) {}
-  ~ScopedTimer() {
-    seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  }
+  ~ScopedTimer() { seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
 
  private:
   double& seconds_;
@@ -121,8 +119,8 @@ void BuilderAndSolver::SetUpSystem() {
   constraints_changed_ = false;
   pattern_valid_ = false;
   if (echo_level_ >= 2)
-    Logger::Detail(Concat(Name(), " builder: ", n, " DoFs, ", n_system_, " unknowns, ", slave_of_.size(),
-                          " constrained DoFs"));
+    Logger::Detail(
+        Concat(Name(), " builder: ", n, " DoFs, ", n_system_, " unknowns, ", slave_of_.size(), " constrained DoFs"));
 }
 
 // Constraints -----------------------------------------------------------------------------------
@@ -244,8 +242,8 @@ void BuilderAndSolver::Assemble(Scheme& scheme, ModelPart& model_part, Mode mode
   const bool rhs = mode != Mode::kLhs;
   SparseMatrix& target = constraints_.empty() ? A_ : K_;
   const auto nnz = static_cast<std::size_t>(target.nonZeros());
-  const bool cached = element_matrix_valid_ && element_matrix_pattern_ == pattern_version_ &&
-                      element_matrix_.size() == nnz;
+  const bool cached =
+      element_matrix_valid_ && element_matrix_pattern_ == pattern_version_ && element_matrix_.size() == nnz;
   const bool reuse = lhs && cached;
   const bool affine_rhs = rhs && cached && element_force_valid_;
   if (reuse)
@@ -280,11 +278,12 @@ void BuilderAndSolver::Assemble(Scheme& scheme, ModelPart& model_part, Mode mode
       scheme.CalculateRHSContribution(e, local_rhs, ids, info);
     const auto n = static_cast<Eigen::Index>(ids.size());
     if ((with_lhs && (local_lhs.rows() != n || local_lhs.cols() != n)) || (with_rhs && local_rhs.size() != n))
-      throw Error(Concat(e.Info(), " ", e.Id(), ": local system of size ", with_lhs ? local_lhs.rows() : local_rhs.size(),
-                         " for ", n, " equation ids"));
+      throw Error(Concat(e.Info(), " ", e.Id(), ": local system of size ",
+                         with_lhs ? local_lhs.rows() : local_rhs.size(), " for ", n, " equation ids"));
     for (const auto id : ids)
       if (id < 0 || id >= n_all)
-        throw Error(Concat(e.Info(), " ", e.Id(), " has a DoF outside the DoF set: call SetUpDofSet after "
+        throw Error(Concat(e.Info(), " ", e.Id(),
+                           " has a DoF outside the DoF set: call SetUpDofSet after "
                            "changing elements, conditions or their DoFs"));
     auto add = [](double& target, double value) {
       if constexpr (decltype(concurrent)::value) {
@@ -476,7 +475,8 @@ void BuilderAndSolver::SolveSystem() {
       if (!slave_of_.empty() || n_system_ != n_assembled_)
         throw NotImplementedError(Concat("linear solver ", linear_solver_->Name(),
                                          " with master-slave constraints: its system rows must map one-to-one to "
-                                         "DoFs (", slave_of_.size(), " constrained DoFs here)"));
+                                         "DoFs (",
+                                         slave_of_.size(), " constrained DoFs here)"));
       linear_solver_->ProvideAdditionalData(A_, dofs_by_equation_);
     }
     x_system_.setZero(static_cast<Eigen::Index>(n_system_));
@@ -489,8 +489,8 @@ void BuilderAndSolver::SolveSystem() {
     }
   }
   if (!x_system_.allFinite())
-    throw SolutionError(Concat("linear solver ", linear_solver_->Name(), " returned non-finite values for ",
-                               n_system_, " unknowns"));
+    throw SolutionError(
+        Concat("linear solver ", linear_solver_->Name(), " returned non-finite values for ", n_system_, " unknowns"));
   const auto n_matrix = static_cast<Eigen::Index>(n_assembled_);
   if (constraints_.empty()) {
     dx_.head(n_matrix) = x_system_;

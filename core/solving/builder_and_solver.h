@@ -36,12 +36,12 @@ class BuilderAndSolver {
  public:
   /// Cumulative wall-clock seconds, for benchmarks.
   struct Timings {
-    double dof_setup = 0.0;  ///< SetUpDofSet and numbering
-    double sparsity = 0.0;   ///< pattern (and constraint matrix) construction
-    double build = 0.0;      ///< assembly, constraint reduction and Dirichlet conditions
-    double solve = 0.0;      ///< linear solver (symbolic and numeric)
-    double elements = 0.0;   ///< part of `build`: the element loop of the assembly
-    double conditions = 0.0; ///< part of `build`: the condition loop (loads, contact pairs)
+    double dof_setup = 0.0;   ///< SetUpDofSet and numbering
+    double sparsity = 0.0;    ///< pattern (and constraint matrix) construction
+    double build = 0.0;       ///< assembly, constraint reduction and Dirichlet conditions
+    double solve = 0.0;       ///< linear solver (symbolic and numeric)
+    double elements = 0.0;    ///< part of `build`: the element loop of the assembly
+    double conditions = 0.0;  ///< part of `build`: the condition loop (loads, contact pairs)
   };
 
   /// `linear_solver` may be null for builders that only assemble residuals (explicit).
@@ -73,9 +73,7 @@ class BuilderAndSolver {
   /// build.
   void AddConstraint(std::shared_ptr<const MasterSlaveConstraint> constraint);
   void ClearConstraints();
-  const std::vector<std::shared_ptr<const MasterSlaveConstraint>>& Constraints() const noexcept {
-    return constraints_;
-  }
+  const std::vector<std::shared_ptr<const MasterSlaveConstraint>>& Constraints() const noexcept { return constraints_; }
 
   // Build and solve -----------------------------------------------------------------------------
   void Build(Scheme& scheme, ModelPart& model_part);
@@ -168,11 +166,11 @@ class BuilderAndSolver {
   long pattern_version_ = 0;
   long solver_pattern_version_ = -1;
 
-  SparseMatrix K_;       ///< assembled matrix when constraints are reduced into A_
-  SparseMatrix T_;       ///< n_assembled x n_system constraint map
-  Vector g_;             ///< constraint violations (n_assembled)
-  Vector rhs_raw_;       ///< f_ext - f_int for every DoF
-  Vector rhs_effective_; ///< rhs_raw_ with slave entries moved to the masters
+  SparseMatrix K_;        ///< assembled matrix when constraints are reduced into A_
+  SparseMatrix T_;        ///< n_assembled x n_system constraint map
+  Vector g_;              ///< constraint violations (n_assembled)
+  Vector rhs_raw_;        ///< f_ext - f_int for every DoF
+  Vector rhs_effective_;  ///< rhs_raw_ with slave entries moved to the masters
   Vector residual_;
   Vector x_system_;
   Vector dx_;
@@ -180,9 +178,9 @@ class BuilderAndSolver {
   std::vector<double> element_matrix_;  ///< element part of the assembled matrix values
   long element_matrix_pattern_ = -1;    ///< pattern_version_ it was assembled on
   bool element_matrix_valid_ = false;
-  Vector element_force_;                ///< f of the element residual f - K u (affine: K constant)
+  Vector element_force_;  ///< f of the element residual f - K u (affine: K constant)
   bool element_force_valid_ = false;
-  Vector values_;                       ///< DoF values by equation id (scratch)
+  Vector values_;  ///< DoF values by equation id (scratch)
   int element_matrix_reuses_ = 0;
 };
 

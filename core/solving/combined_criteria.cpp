@@ -34,8 +34,8 @@ void CombinedCriteria::InitializeSolutionStep(ModelPart& model_part, const DofsA
   CallOnBoth(*first_, *second_, &ConvergenceCriteria::InitializeSolutionStep, model_part, dofs, A, dx, b);
 }
 
-void CombinedCriteria::InitializeNonLinearIteration(ModelPart& model_part, const DofsArray& dofs,
-                                                    const SparseMatrix& A, const Vector& dx, const Vector& b) {
+void CombinedCriteria::InitializeNonLinearIteration(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A,
+                                                    const Vector& dx, const Vector& b) {
   CallOnBoth(*first_, *second_, &ConvergenceCriteria::InitializeNonLinearIteration, model_part, dofs, A, dx, b);
 }
 
@@ -53,8 +53,8 @@ bool CombinedCriteria::PostCriteria(ModelPart& model_part, const DofsArray& dofs
   return Combine(a, c);
 }
 
-void CombinedCriteria::FinalizeNonLinearIteration(ModelPart& model_part, const DofsArray& dofs,
-                                                  const SparseMatrix& A, const Vector& dx, const Vector& b) {
+void CombinedCriteria::FinalizeNonLinearIteration(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A,
+                                                  const Vector& dx, const Vector& b) {
   CallOnBoth(*first_, *second_, &ConvergenceCriteria::FinalizeNonLinearIteration, model_part, dofs, A, dx, b);
 }
 

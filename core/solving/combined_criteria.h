@@ -15,16 +15,16 @@ class CombinedCriteria : public ConvergenceCriteria {
   CombinedCriteria(std::shared_ptr<ConvergenceCriteria> first, std::shared_ptr<ConvergenceCriteria> second);
 
   void Initialize(ModelPart& model_part) override;
-  void InitializeSolutionStep(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A,
-                              const Vector& dx, const Vector& b) override;
+  void InitializeSolutionStep(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A, const Vector& dx,
+                              const Vector& b) override;
   void InitializeNonLinearIteration(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A,
                                     const Vector& dx, const Vector& b) override;
   bool PreCriteria(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A, const Vector& dx,
                    const Vector& b) override;
   bool PostCriteria(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A, const Vector& dx,
                     const Vector& b) override;
-  void FinalizeNonLinearIteration(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A,
-                                  const Vector& dx, const Vector& b) override;
+  void FinalizeNonLinearIteration(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A, const Vector& dx,
+                                  const Vector& b) override;
   void FinalizeSolutionStep(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A, const Vector& dx,
                             const Vector& b) override;
   std::vector<CriterionValue> LastValues() const override;

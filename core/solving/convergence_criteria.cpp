@@ -5,8 +5,7 @@
 
 namespace mc {
 
-std::string ConvergenceCriteria::FormatLine(int iteration, const std::vector<CriterionValue>& values,
-                                            bool converged) {
+std::string ConvergenceCriteria::FormatLine(int iteration, const std::vector<CriterionValue>& values, bool converged) {
   char buffer[128];
   std::snprintf(buffer, sizeof buffer, "  it %d", iteration);
   std::string line = buffer;

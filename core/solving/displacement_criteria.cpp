@@ -4,7 +4,6 @@
 
 #include <cmath>
 
-
 namespace mc {
 
 bool DisplacementCriteria::PostCriteria(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A,

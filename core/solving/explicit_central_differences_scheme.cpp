@@ -13,7 +13,8 @@ ExplicitCentralDifferencesScheme::ExplicitCentralDifferencesScheme(double raylei
     throw NotImplementedError(Concat("explicit central differences: rayleigh_beta = ", rayleigh_beta,
                                      " (stiffness-proportional damping) is not implemented; use rayleigh_alpha"));
   if (rayleigh_alpha < 0.0)
-    throw InputError(Concat("explicit central differences: rayleigh_alpha = ", rayleigh_alpha, " must not be negative"));
+    throw InputError(
+        Concat("explicit central differences: rayleigh_alpha = ", rayleigh_alpha, " must not be negative"));
 }
 
 void ExplicitCentralDifferencesScheme::Initialize(ModelPart& model_part) {
@@ -27,8 +28,8 @@ void ExplicitCentralDifferencesScheme::Check(const ModelPart& model_part) const 
   for (const VariableData* v :
        {static_cast<const VariableData*>(&VELOCITY), static_cast<const VariableData*>(&ACCELERATION)})
     if (!model_part.HasNodalSolutionStepVariable(*v))
-      throw InputError(Concat(Name(), " scheme: ", v->Name(), " is not a historical variable of model part ",
-                              model_part.Name()));
+      throw InputError(
+          Concat(Name(), " scheme: ", v->Name(), " is not a historical variable of model part ", model_part.Name()));
 }
 
 void ExplicitCentralDifferencesScheme::Advance(ModelPart& model_part, const DofsArray& dofs, const Vector& residual,
@@ -49,10 +50,10 @@ void ExplicitCentralDifferencesScheme::Advance(ModelPart& model_part, const Dofs
     if (!vel || !(m > 0.0)) {
 #pragma omp critical(mc_explicit_error)
       if (!error)
-        error = std::make_exception_ptr(InputError(Concat(
-            Name(), " scheme: ", d.variable->Name(), " of node ", d.node->Id(),
-            vel ? Concat(" has lumped mass ", m, "; every free DoF needs a positive mass")
-                : std::string(" has no time derivative to integrate"))));
+        error = std::make_exception_ptr(
+            InputError(Concat(Name(), " scheme: ", d.variable->Name(), " of node ", d.node->Id(),
+                              vel ? Concat(" has lumped mass ", m, "; every free DoF needs a positive mass")
+                                  : std::string(" has no time derivative to integrate"))));
       continue;
     }
     Node& node = *d.node;

@@ -10,8 +10,8 @@ namespace mc {
 NewtonRaphsonStrategy::NewtonRaphsonStrategy(ModelPart& model_part, std::shared_ptr<Scheme> scheme,
                                              std::shared_ptr<ConvergenceCriteria> criteria,
                                              std::shared_ptr<BuilderAndSolver> builder_and_solver, int max_iteration,
-                                             bool compute_reactions, bool reform_dofs_at_each_step,
-                                             bool move_mesh_flag, bool use_old_stiffness_in_first_iteration)
+                                             bool compute_reactions, bool reform_dofs_at_each_step, bool move_mesh_flag,
+                                             bool use_old_stiffness_in_first_iteration)
     : ImplicitSolvingStrategy(model_part, std::move(scheme), std::move(builder_and_solver), compute_reactions,
                               reform_dofs_at_each_step, move_mesh_flag),
       criteria_(std::move(criteria)),
@@ -31,8 +31,8 @@ void NewtonRaphsonStrategy::InitializeSolutionStep() {
   ImplicitSolvingStrategy::InitializeSolutionStep();
   if (reform) has_stiffness_ = false;
   history_.clear();
-  criteria_->InitializeSolutionStep(model_part_, builder_->GetDofSet(), builder_->SystemMatrix(),
-                                    builder_->Increment(), builder_->Residual());
+  criteria_->InitializeSolutionStep(model_part_, builder_->GetDofSet(), builder_->SystemMatrix(), builder_->Increment(),
+                                    builder_->Residual());
 }
 
 bool NewtonRaphsonStrategy::SolveSolutionStep() {
@@ -83,8 +83,8 @@ double NewtonRaphsonStrategy::UpdateDatabase(int iteration) {
 }
 
 void NewtonRaphsonStrategy::FinalizeSolutionStep() {
-  criteria_->FinalizeSolutionStep(model_part_, builder_->GetDofSet(), builder_->SystemMatrix(),
-                                  builder_->Increment(), builder_->Residual());
+  criteria_->FinalizeSolutionStep(model_part_, builder_->GetDofSet(), builder_->SystemMatrix(), builder_->Increment(),
+                                  builder_->Residual());
   ImplicitSolvingStrategy::FinalizeSolutionStep();
 }
 

@@ -19,8 +19,7 @@ class NormCriteria : public ConvergenceCriteria {
 
  protected:
   /// `ratio_name` and `absolute_name` head the two values ("|du|/|u|", "|du|").
-  NormCriteria(double relative_tolerance, double absolute_tolerance, std::string ratio_name,
-               std::string absolute_name)
+  NormCriteria(double relative_tolerance, double absolute_tolerance, std::string ratio_name, std::string absolute_name)
       : relative_tolerance_(relative_tolerance),
         absolute_tolerance_(absolute_tolerance),
         ratio_name_(std::move(ratio_name)),

@@ -67,8 +67,7 @@ void ResidualBasedBossakDisplacementScheme::Predict(ModelPart& model_part, const
   UpdateDerivatives(dofs);
 }
 
-void ResidualBasedBossakDisplacementScheme::Update(ModelPart& model_part, const DofsArray& dofs,
-                                                   const Vector& dx) {
+void ResidualBasedBossakDisplacementScheme::Update(ModelPart& model_part, const DofsArray& dofs, const Vector& dx) {
   Scheme::Update(model_part, dofs, dx);
   UpdateDerivatives(dofs);
 }
@@ -76,12 +75,13 @@ void ResidualBasedBossakDisplacementScheme::Update(ModelPart& model_part, const 
 void ResidualBasedBossakDisplacementScheme::Check(const ModelPart& model_part) const {
   Scheme::Check(model_part);
   if (model_part.GetBufferSize() < 2)
-    throw InputError(Concat(Name(), " scheme: buffer_size ", model_part.GetBufferSize(),
-                            " of model part ", model_part.Name(), " must be at least 2"));
-  for (const VariableData* v : {static_cast<const VariableData*>(&VELOCITY), static_cast<const VariableData*>(&ACCELERATION)})
+    throw InputError(Concat(Name(), " scheme: buffer_size ", model_part.GetBufferSize(), " of model part ",
+                            model_part.Name(), " must be at least 2"));
+  for (const VariableData* v :
+       {static_cast<const VariableData*>(&VELOCITY), static_cast<const VariableData*>(&ACCELERATION)})
     if (!model_part.HasNodalSolutionStepVariable(*v))
-      throw InputError(Concat(Name(), " scheme: ", v->Name(), " is not a historical variable of model part ",
-                              model_part.Name()));
+      throw InputError(
+          Concat(Name(), " scheme: ", v->Name(), " is not a historical variable of model part ", model_part.Name()));
 }
 
 void ResidualBasedBossakDisplacementScheme::AddDynamicsToLHS(Matrix& lhs, const Matrix& mass,

@@ -4,7 +4,6 @@
 
 #include <cmath>
 
-
 namespace mc {
 
 void ResidualCriteria::InitializeSolutionStep(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A,

@@ -16,8 +16,8 @@ class ResidualCriteria : public NormCriteria {
       : NormCriteria(relative_tolerance, absolute_tolerance, "|r|/|r0|", "|r|") {}
 
   std::string Name() const override { return "residual_criterion"; }
-  void InitializeSolutionStep(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A,
-                              const Vector& dx, const Vector& b) override;
+  void InitializeSolutionStep(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A, const Vector& dx,
+                              const Vector& b) override;
   bool PostCriteria(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A, const Vector& dx,
                     const Vector& b) override;
   double InitialResidualNorm() const noexcept { return initial_norm_; }

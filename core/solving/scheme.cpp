@@ -58,14 +58,12 @@ void Scheme::CalculateSystemContributions(Entity& entity, Matrix& lhs, Vector& r
   entity.EquationIdVector(ids, info);
 }
 
-void Scheme::CalculateLHSContribution(Entity& entity, Matrix& lhs, EquationIdVectorType& ids,
-                                      const ProcessInfo& info) {
+void Scheme::CalculateLHSContribution(Entity& entity, Matrix& lhs, EquationIdVectorType& ids, const ProcessInfo& info) {
   entity.CalculateLeftHandSide(lhs, info);
   entity.EquationIdVector(ids, info);
 }
 
-void Scheme::CalculateRHSContribution(Entity& entity, Vector& rhs, EquationIdVectorType& ids,
-                                      const ProcessInfo& info) {
+void Scheme::CalculateRHSContribution(Entity& entity, Vector& rhs, EquationIdVectorType& ids, const ProcessInfo& info) {
   entity.CalculateRightHandSide(rhs, info);
   entity.EquationIdVector(ids, info);
 }

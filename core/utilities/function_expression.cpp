@@ -63,7 +63,8 @@ FunctionExpression::FunctionExpression(const std::string& expression) : impl_(st
     for (const auto& [name, address] : used) {
       if (std::find(kVariables.begin(), kVariables.end(), name) == kVariables.end())
         throw InputError(Concat("invalid expression \"", expression, "\": unknown variable '", name, "'",
-                                DidYouMean(name, kVariables), "; the variables are x, y, z (current coordinates), "
+                                DidYouMean(name, kVariables),
+                                "; the variables are x, y, z (current coordinates), "
                                 "X, Y, Z (initial coordinates) and t"));
       if (name == "t")
         d.depends_on_time = true;
@@ -85,7 +86,8 @@ FunctionExpression::FunctionExpression(const std::string& expression) : impl_(st
         message += Concat(" at position ", position);
     }
     std::string text = Concat("invalid expression \"", expression, "\": ", message);
-    if (position >= 0) text += Concat("\n  ", expression, "\n  ", std::string(static_cast<std::size_t>(position), ' '), "^");
+    if (position >= 0)
+      text += Concat("\n  ", expression, "\n  ", std::string(static_cast<std::size_t>(position), ' '), "^");
     throw InputError(text);
   }
 }

@@ -14,8 +14,7 @@ void DataValueContainer::Erase(const VariableData& var) {
 
 void DataValueContainer::SetGeneric(const VariableData& var, const Value& value) {
   if (var.IsComponent()) {
-    if (!std::holds_alternative<double>(value))
-      throw InputError(Concat("variable ", var.Name(), " expects a number"));
+    if (!std::holds_alternative<double>(value)) throw InputError(Concat("variable ", var.Name(), " expects a number"));
     SetValue(static_cast<const Variable<double>&>(var), std::get<double>(value));
     return;
   }
@@ -31,8 +30,7 @@ void DataValueContainer::SetGeneric(const VariableData& var, const Value& value)
     }
     return false;
   };
-  if (!matches(var.Type()))
-    throw InputError(Concat("variable ", var.Name(), " expects a ", ValueTypeName(var.Type())));
+  if (!matches(var.Type())) throw InputError(Concat("variable ", var.Name(), " expects a ", ValueTypeName(var.Type())));
   if (Value* v = Find(&var)) {
     *v = value;
   } else {

@@ -6,17 +6,17 @@
 #include "core/variables/variable.h"
 
 #define MC_DECLARE_VARIABLE(type, NAME) extern const ::mc::Variable<type> NAME
-#define MC_DECLARE_ARRAY3_VARIABLE(NAME)               \
-  extern const ::mc::Variable<::mc::Array3> NAME;      \
-  extern const ::mc::Variable<double> NAME##_X;        \
-  extern const ::mc::Variable<double> NAME##_Y;        \
+#define MC_DECLARE_ARRAY3_VARIABLE(NAME)          \
+  extern const ::mc::Variable<::mc::Array3> NAME; \
+  extern const ::mc::Variable<double> NAME##_X;   \
+  extern const ::mc::Variable<double> NAME##_Y;   \
   extern const ::mc::Variable<double> NAME##_Z
 
 #define MC_DEFINE_VARIABLE(type, NAME) const ::mc::Variable<type> NAME(#NAME)
 #define MC_DEFINE_ARRAY3_VARIABLE(NAME)                                 \
   const ::mc::Variable<::mc::Array3> NAME(#NAME, ::mc::Array3::Zero()); \
-  const ::mc::Variable<double> NAME##_X(#NAME "_X", NAME, 0);          \
-  const ::mc::Variable<double> NAME##_Y(#NAME "_Y", NAME, 1);          \
+  const ::mc::Variable<double> NAME##_X(#NAME "_X", NAME, 0);           \
+  const ::mc::Variable<double> NAME##_Y(#NAME "_Y", NAME, 1);           \
   const ::mc::Variable<double> NAME##_Z(#NAME "_Z", NAME, 2)
 
 namespace mc {

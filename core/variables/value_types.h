@@ -19,12 +19,33 @@ const char* ValueTypeName(ValueType type);
 
 template <class T>
 struct ValueTypeOf;
-template <> struct ValueTypeOf<double> { static constexpr ValueType value = ValueType::Double; };
-template <> struct ValueTypeOf<int> { static constexpr ValueType value = ValueType::Int; };
-template <> struct ValueTypeOf<bool> { static constexpr ValueType value = ValueType::Bool; };
-template <> struct ValueTypeOf<std::string> { static constexpr ValueType value = ValueType::String; };
-template <> struct ValueTypeOf<Array3> { static constexpr ValueType value = ValueType::Array3; };
-template <> struct ValueTypeOf<Vector> { static constexpr ValueType value = ValueType::Vector; };
-template <> struct ValueTypeOf<Matrix> { static constexpr ValueType value = ValueType::Matrix; };
+template <>
+struct ValueTypeOf<double> {
+  static constexpr ValueType value = ValueType::Double;
+};
+template <>
+struct ValueTypeOf<int> {
+  static constexpr ValueType value = ValueType::Int;
+};
+template <>
+struct ValueTypeOf<bool> {
+  static constexpr ValueType value = ValueType::Bool;
+};
+template <>
+struct ValueTypeOf<std::string> {
+  static constexpr ValueType value = ValueType::String;
+};
+template <>
+struct ValueTypeOf<Array3> {
+  static constexpr ValueType value = ValueType::Array3;
+};
+template <>
+struct ValueTypeOf<Vector> {
+  static constexpr ValueType value = ValueType::Vector;
+};
+template <>
+struct ValueTypeOf<Matrix> {
+  static constexpr ValueType value = ValueType::Matrix;
+};
 
 }  // namespace mc

@@ -46,8 +46,7 @@ class Variable : public VariableData {
   explicit Variable(std::string name, T zero = T{})
       : VariableData(std::move(name), ValueTypeOf<T>::value), zero_(std::move(zero)) {}
   /// Component of an Array3 variable.
-  Variable(std::string name, const Variable<Array3>& source, int component)
-    requires std::is_same_v<T, double>
+  Variable(std::string name, const Variable<Array3>& source, int component) requires std::is_same_v<T, double>
       : VariableData(std::move(name), mc::ValueType::Double, &source, component), zero_(0.0) {}
 
   const T& Zero() const noexcept { return zero_; }

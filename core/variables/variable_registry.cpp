@@ -32,8 +32,7 @@ VariableRegistry& VariableRegistry::Instance() {
 }
 
 std::size_t VariableRegistry::Register(VariableData& variable) {
-  if (by_name_.count(variable.Name()))
-    throw Error(Concat("variable ", variable.Name(), " is defined twice"));
+  if (by_name_.count(variable.Name())) throw Error(Concat("variable ", variable.Name(), " is defined twice"));
   by_key_.push_back(&variable);
   by_name_.emplace(variable.Name(), &variable);
   return by_key_.size() - 1;
@@ -43,8 +42,7 @@ bool VariableRegistry::Has(const std::string& name) const { return by_name_.coun
 
 const VariableData& VariableRegistry::Get(const std::string& name) const {
   const auto it = by_name_.find(name);
-  if (it == by_name_.end())
-    throw InputError(Concat("unknown variable '", name, "'", DidYouMean(name, Names())));
+  if (it == by_name_.end()) throw InputError(Concat("unknown variable '", name, "'", DidYouMean(name, Names())));
   return *it->second;
 }
 

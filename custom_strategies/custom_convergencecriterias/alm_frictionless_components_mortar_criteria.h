@@ -5,9 +5,9 @@
 
 namespace mc {
 
-/// "alm_frictionless_components_mortar_criteria": Active set of the vector augmented Lagrangian (VECTOR_LAGRANGE_MULTIPLIER): active when k NORMAL . lambda + eps g < 0.
-/// Converged when no slave node changed state (see BaseMortarConvergenceCriteria for when the
-/// set is evaluated). Settings as the base class.
+/// "alm_frictionless_components_mortar_criteria": Active set of the vector augmented Lagrangian
+/// (VECTOR_LAGRANGE_MULTIPLIER): active when k NORMAL . lambda + eps g < 0. Converged when no slave node changed state
+/// (see BaseMortarConvergenceCriteria for when the set is evaluated). Settings as the base class.
 class ALMFrictionlessComponentsMortarConvergenceCriteria : public BaseMortarConvergenceCriteria {
  public:
   explicit ALMFrictionlessComponentsMortarConvergenceCriteria(Parameters settings = Parameters())

@@ -5,9 +5,9 @@
 
 namespace mc {
 
-/// "alm_frictionless_mortar_criteria": Active set of the scalar augmented Lagrangian (LAGRANGE_MULTIPLIER_CONTACT_PRESSURE): active when k lambda_n + eps g < 0.
-/// Converged when no slave node changed state (see BaseMortarConvergenceCriteria for when the
-/// set is evaluated). Settings as the base class.
+/// "alm_frictionless_mortar_criteria": Active set of the scalar augmented Lagrangian
+/// (LAGRANGE_MULTIPLIER_CONTACT_PRESSURE): active when k lambda_n + eps g < 0. Converged when no slave node changed
+/// state (see BaseMortarConvergenceCriteria for when the set is evaluated). Settings as the base class.
 class ALMFrictionlessMortarConvergenceCriteria : public BaseMortarConvergenceCriteria {
  public:
   explicit ALMFrictionlessMortarConvergenceCriteria(Parameters settings = Parameters())

@@ -76,8 +76,7 @@ bool BaseMortarConvergenceCriteria::PostCriteria(ModelPart& model_part, const Do
   if (model_part.Is(INTERACTION) || info.GetValue(NL_ITERATION_NUMBER) == 1) UpdateActiveSet(*contact, &changed_);
   const bool converged = changed_.empty();
   info.SetValue(ACTIVE_SET_CONVERGED, converged);
-  if (echo_level_ >= 1 && print_)
-    Logger::Info(Concat(Name(), ": ", changed_.size(), " slave node(s) changed state"));
+  if (echo_level_ >= 1 && print_) Logger::Info(Concat(Name(), ": ", changed_.size(), " slave node(s) changed state"));
   return converged;
 }
 

@@ -6,8 +6,8 @@
 
 #include "core/parameters/parameters.h"
 #include "core/solving/convergence_criteria.h"
-#include "custom_utilities/mortar_updater.h"
 #include "custom_utilities/active_set_utilities.h"
+#include "custom_utilities/mortar_updater.h"
 
 namespace mc {
 

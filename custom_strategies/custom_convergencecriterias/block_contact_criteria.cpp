@@ -63,14 +63,14 @@ BlockContactCriteria::Blocks ReadBlocks(BlockCriterion criterion, const Paramete
   for (std::size_t f = 0; f < kDofFamilies; ++f) {
     if (!row.blocks[f]) continue;
     const BlockKeys& keys = *row.blocks[f];
-    const Parameters& source = f == static_cast<std::size_t>(DofFamily::kDisplacement) ? displacement_source
-                                                                                          : other_source;
+    const Parameters& source =
+        f == static_cast<std::size_t>(DofFamily::kDisplacement) ? displacement_source : other_source;
     const std::string relative = RelativeKey(keys);
     const std::string absolute = AbsoluteKey(keys);
     BlockContactCriteria::Block block{keys.measure, source[relative].GetDouble(), source[absolute].GetDouble()};
     if (!(block.relative_tolerance >= 0.0) || !(block.absolute_tolerance >= 0.0))
-      throw InputError(Concat(source.Where(), ": ", relative, " = ", block.relative_tolerance, " and ", absolute,
-                              " = ", block.absolute_tolerance, " must not be negative"));
+      throw InputError(Concat(source.Where(), ": ", relative, " = ", block.relative_tolerance, " and ", absolute, " = ",
+                              block.absolute_tolerance, " must not be negative"));
     blocks[f] = block;
   }
   return blocks;
@@ -167,10 +167,11 @@ bool BlockContactCriteria::PostCriteria(ModelPart& model_part, const DofsArray& 
     const double value_norm = std::sqrt(s.value);
     if (multiplier && value_norm < kTiny) {
       if (ensure_contact_)
-        throw SolutionError(Concat(Name(), ": ensure_contact is true but every Lagrange multiplier is zero at "
+        throw SolutionError(Concat(Name(),
+                                   ": ensure_contact is true but every Lagrange multiplier is zero at "
                                    "iteration ",
-                                   info.GetValue(NL_ITERATION_NUMBER), " of step ", info.GetValue(STEP),
-                                   " (time ", info.GetValue(TIME),
+                                   info.GetValue(NL_ITERATION_NUMBER), " of step ", info.GetValue(STEP), " (time ",
+                                   info.GetValue(TIME),
                                    "): no slave node is in contact. Check the contact pairs (search radius, "
                                    "active_check_factor) or set ensure_contact to false"));
       // No contact: nothing to converge in this family.

@@ -75,8 +75,7 @@ class BlockContactCriteria : public ConvergenceCriteria {
   /// The criterion of a contact solver: the displacement tolerances are the mechanical solver's
   /// keys of `solver_settings`, the other keys are read from `contact_settings` (both already
   /// validated by their owners; see GetContactSettingsDefaults).
-  BlockContactCriteria(BlockCriterion criterion, const Parameters& solver_settings,
-                       const Parameters& contact_settings);
+  BlockContactCriteria(BlockCriterion criterion, const Parameters& solver_settings, const Parameters& contact_settings);
   /// Kratos' defaults of `criterion`, keys in Kratos' order.
   static Parameters GetDefaultParameters(BlockCriterion criterion);
   /// The keys of `contact_settings` that the block criteria read, over every row: `ensure_contact`
@@ -84,8 +83,8 @@ class BlockContactCriteria : public ConvergenceCriteria {
   static Parameters GetContactSettingsDefaults();
 
   std::string Name() const override;
-  void InitializeSolutionStep(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A,
-                              const Vector& dx, const Vector& b) override;
+  void InitializeSolutionStep(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A, const Vector& dx,
+                              const Vector& b) override;
   bool PostCriteria(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A, const Vector& dx,
                     const Vector& b) override;
   /// Ratio and absolute value of each present family, in the order displacement, rotation,

@@ -33,7 +33,8 @@ double DominantModulus(Eigen::Index n, Apply&& apply, int max_iterations, double
 }  // namespace
 
 double ConditionNumberUtility::LargestEigenvalueModulus(const SparseMatrix& A) const {
-  return DominantModulus(A.rows(), [&](const Vector& v, Vector& w) { w = A * v; }, max_iterations, tolerance);
+  return DominantModulus(
+      A.rows(), [&](const Vector& v, Vector& w) { w = A * v; }, max_iterations, tolerance);
 }
 
 double ConditionNumberUtility::SmallestEigenvalueModulus(const SparseMatrix& A) const {

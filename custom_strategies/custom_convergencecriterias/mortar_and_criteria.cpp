@@ -100,8 +100,8 @@ bool MortarAndConvergenceCriteria::PostCriteria(ModelPart& model_part, const Dof
       Logger::Info(FormatRow(last_row_));
       if (converged) Logger::Info(Concat("  converged at iteration ", iteration));
     } else {
-      Logger::Info(Concat(FormatLine(iteration, LastValues(), mechanical_converged_),
-                          ", active set ", YesNo(active_set_converged_, changes)));
+      Logger::Info(Concat(FormatLine(iteration, LastValues(), mechanical_converged_), ", active set ",
+                          YesNo(active_set_converged_, changes)));
     }
     if (print_ && changes > 0) {
       std::string ids;

@@ -34,8 +34,8 @@ class MortarAndConvergenceCriteria : public AndCriteria {
                                bool print_table = true);
 
   std::string Name() const override { return "mortar_and_criteria"; }
-  void InitializeSolutionStep(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A,
-                              const Vector& dx, const Vector& b) override;
+  void InitializeSolutionStep(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A, const Vector& dx,
+                              const Vector& b) override;
   bool PostCriteria(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A, const Vector& dx,
                     const Vector& b) override;
   /// The mechanical values, then {"COND.NUM.", value, 0} when computed.

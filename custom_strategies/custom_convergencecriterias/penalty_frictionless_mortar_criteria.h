@@ -5,9 +5,9 @@
 
 namespace mc {
 
-/// "penalty_frictionless_mortar_criteria": Active set of the penalty formulation: active when the weighted gap is negative.
-/// Converged when no slave node changed state (see BaseMortarConvergenceCriteria for when the
-/// set is evaluated). Settings as the base class.
+/// "penalty_frictionless_mortar_criteria": Active set of the penalty formulation: active when the weighted gap is
+/// negative. Converged when no slave node changed state (see BaseMortarConvergenceCriteria for when the set is
+/// evaluated). Settings as the base class.
 class PenaltyFrictionlessMortarConvergenceCriteria : public BaseMortarConvergenceCriteria {
  public:
   explicit PenaltyFrictionlessMortarConvergenceCriteria(Parameters settings = Parameters())

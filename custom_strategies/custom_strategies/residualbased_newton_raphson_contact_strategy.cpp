@@ -62,7 +62,7 @@ void ResidualBasedNewtonRaphsonContactStrategy::Predict() {
   if (contact && contact->HasNodalSolutionStepVariable(WEIGHTED_GAP)) {
     const bool slip = model_part_.Is(SLIP) && contact->HasNodalSolutionStepVariable(WEIGHTED_SLIP);
     for (Node* p_node : contact->Nodes()) {
-    Node& node = *p_node;
+      Node& node = *p_node;
       node.FastGetSolutionStepValue(WEIGHTED_GAP) = 0.0;
       if (slip) node.FastGetSolutionStepValue(WEIGHTED_SLIP).setZero();
     }
@@ -151,8 +151,9 @@ bool ResidualBasedNewtonRaphsonContactStrategy::RunFullNewtonLoop() {
     frozen = true;
     model_part_.Set(INTERACTION, false);
     if (echo_level_ >= 1)
-      Logger::Info(Concat(Name(), ": the active set of iteration ", it, " is that of iteration ", earlier - seen.begin(),
-                          "; the union of the sets of the cycle (", std::count(states.begin(), states.end(), 1),
+      Logger::Info(Concat(Name(), ": the active set of iteration ", it, " is that of iteration ",
+                          earlier - seen.begin(), "; the union of the sets of the cycle (",
+                          std::count(states.begin(), states.end(), 1),
                           " active slave nodes) is kept until Newton converges on it"));
   }
   return false;
@@ -219,8 +220,9 @@ bool ResidualBasedNewtonRaphsonContactStrategy::AdaptiveStep() {
   const double begin_time = end_time - delta_time;
   std::string last_failure = DescribeFailure();
   if (!callbacks_.initialize_solution_step && echo_level_ >= 1)
-    Logger::Warning(Concat(Name(), ": no process callbacks were given; boundary conditions and loads are not "
-                                   "updated in the sub-steps of the adaptive splitting"));
+    Logger::Warning(Concat(Name(),
+                           ": no process callbacks were given; boundary conditions and loads are not "
+                           "updated in the sub-steps of the adaptive splitting"));
   in_sub_step_ = true;
   for (int level = 1; level <= settings_.max_number_splits; ++level) {
     const double sub_dt = delta_time / std::pow(settings_.split_factor, level);

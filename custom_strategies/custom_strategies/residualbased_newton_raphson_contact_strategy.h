@@ -70,9 +70,8 @@ class ResidualBasedNewtonRaphsonContactStrategy : public NewtonRaphsonStrategy {
                                             std::shared_ptr<ConvergenceCriteria> criteria,
                                             std::shared_ptr<BuilderAndSolver> builder_and_solver,
                                             ContactStrategySettings settings = ReadSettings(Parameters()),
-                                            int max_iteration = 10,
-                                            bool compute_reactions = true, bool reform_dofs_at_each_step = false,
-                                            bool move_mesh_flag = true);
+                                            int max_iteration = 10, bool compute_reactions = true,
+                                            bool reform_dofs_at_each_step = false, bool move_mesh_flag = true);
 
   std::string Name() const override { return "newton_raphson_contact_strategy"; }
   void InitializeSolutionStep() override;

@@ -22,8 +22,8 @@ import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.collections import PolyCollection
 
-import mortarcontact as mc  # noqa: E402
-from mortarcontact.cases import hertz  # noqa: E402
+import mortarcontact as mc
+from mortarcontact.cases import hertz
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 

@@ -19,8 +19,8 @@ class GroundSpringCondition : public mc::Condition {
 
   std::unique_ptr<mc::Condition> Create(mc::IndexType id, mc::Geometry::NodesArray nodes,
                                         mc::Properties* properties) const override {
-    return std::make_unique<GroundSpringCondition>(id, mc::Geometry(GetGeometry().Type(), std::move(nodes)),
-                                                   properties, dimension_);
+    return std::make_unique<GroundSpringCondition>(id, mc::Geometry(GetGeometry().Type(), std::move(nodes)), properties,
+                                                   dimension_);
   }
 
   void GetDofList(mc::DofsVectorType& dofs, const mc::ProcessInfo&) const override {
@@ -62,8 +62,8 @@ class GroundSpringCondition : public mc::Condition {
 extern "C" void mortarcontact_register_plugin() {
   using spring_plugin::GroundSpringCondition;
   auto& registry = mc::Registry<mc::Condition>::Instance();
-  registry.Add("GroundSpringCondition2D1N", std::make_shared<GroundSpringCondition>(
-                                                0, mc::Geometry(mc::GeometryType::Point2D, {}), nullptr, 2));
-  registry.Add("GroundSpringCondition3D1N", std::make_shared<GroundSpringCondition>(
-                                                0, mc::Geometry(mc::GeometryType::Point3D, {}), nullptr, 3));
+  registry.Add("GroundSpringCondition2D1N",
+               std::make_shared<GroundSpringCondition>(0, mc::Geometry(mc::GeometryType::Point2D, {}), nullptr, 2));
+  registry.Add("GroundSpringCondition3D1N",
+               std::make_shared<GroundSpringCondition>(0, mc::Geometry(mc::GeometryType::Point3D, {}), nullptr, 3));
 }

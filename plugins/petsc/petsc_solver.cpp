@@ -70,7 +70,8 @@ void Check(PetscErrorCode code, const char* call) {
   if (code == 0) return;
   const char* text = nullptr;
   PetscErrorMessage(code, &text, nullptr);
-  throw SolutionError(Concat("PETSc: ", call, " failed: ", text ? text : "error", " (code ", static_cast<int>(code), ")"));
+  throw SolutionError(
+      Concat("PETSc: ", call, " failed: ", text ? text : "error", " (code ", static_cast<int>(code), ")"));
 }
 
 // PETSc and MPI are initialized once per process, on first use, and finalized at exit. MPI's
@@ -147,8 +148,10 @@ void PetscSolver::ProvideAdditionalData(const SparseMatrix& A, const std::vector
            primal[end] == primal[end - 1] + 1)
       ++end;
     const int count = static_cast<int>(end - k);
-    if ((block != 0 && count != block) || !seen.insert(node).second) block = -1;
-    else block = count;
+    if ((block != 0 && count != block) || !seen.insert(node).second)
+      block = -1;
+    else
+      block = count;
     k = end;
   }
   block = std::max(block, 1);
@@ -185,8 +188,8 @@ void PetscSolver::Initialize(const SparseMatrix& A) {
   MatInfo info;
   Check(MatGetInfo(handles->matrix, MAT_LOCAL, &info), "MatGetInfo");
   if (static_cast<long>(info.nz_used) != static_cast<long>(handles->rows.nonZeros()))
-    throw SolutionError(Concat("PETSc: the AIJ matrix holds ", info.nz_used, " entries for ",
-                               handles->rows.nonZeros(), " given"));
+    throw SolutionError(
+        Concat("PETSc: the AIJ matrix holds ", info.nz_used, " entries for ", handles->rows.nonZeros(), " given"));
 
   Check(KSPCreate(PETSC_COMM_SELF, &handles->ksp), "KSPCreate");
   Check(KSPSetOptionsPrefix(handles->ksp, prefix_.c_str()), "KSPSetOptionsPrefix");
@@ -279,8 +282,9 @@ void PetscSolver::SetFieldSplits(KSP ksp) {
   auto set = [&](const char* name, const std::vector<int>& rows, int block) {
     const std::vector<PetscInt> indices(rows.begin(), rows.end());
     IS is = nullptr;
-    Check(ISCreateGeneral(PETSC_COMM_SELF, static_cast<PetscInt>(indices.size()), indices.data(), PETSC_COPY_VALUES, &is),
-          "ISCreateGeneral");
+    Check(
+        ISCreateGeneral(PETSC_COMM_SELF, static_cast<PetscInt>(indices.size()), indices.data(), PETSC_COPY_VALUES, &is),
+        "ISCreateGeneral");
     if (block > 1) Check(ISSetBlockSize(is, block), "ISSetBlockSize");
     const PetscErrorCode code = PCFieldSplitSetIS(pc, name, is);
     ISDestroy(&is);
@@ -317,8 +321,6 @@ PetscSolver::Options ReadPetscOptions(const Parameters& settings) {
   }
   return options;
 }
-
-
 
 }  // namespace mc
 

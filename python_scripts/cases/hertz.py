@@ -60,7 +60,6 @@ import sys
 
 import numpy as np
 
-
 RADIUS = 1.0
 YOUNG = 1000.0
 POISSON = 0.3
@@ -684,7 +683,7 @@ def _least_squares_line(xs, ys):
 
 def _integrate_2d(points):
     points = sorted(points)
-    return sum(0.5 * (p0 + p1) * (x1 - x0) for (x0, p0), (x1, p1) in zip(points, points[1:]))
+    return sum(0.5 * (p0 + p1) * (x1 - x0) for (x0, p0), (x1, p1) in itertools.pairwise(points))
 
 
 def _integrate_3d(xs, ys, ps):

@@ -16,5 +16,5 @@ VTK_CELL_TYPES = {
 # Our hexahedra list the vertical mid-edges before the top ones and the face centres as bottom,
 # front, right, back, left, top; VTK lists top edges first and faces as left, right, front, back,
 # bottom, top. Column k of the VTK cell takes our node VTK_NODE_ORDER[k].
-_HEX27_TO_VTK = list(range(12)) + [16, 17, 18, 19, 12, 13, 14, 15, 24, 22, 21, 23, 20, 25, 26]
+_HEX27_TO_VTK = [*range(12), 16, 17, 18, 19, 12, 13, 14, 15, 24, 22, 21, 23, 20, 25, 26]
 VTK_NODE_ORDER = {"hexahedron20": _HEX27_TO_VTK[:20], "hexahedron27": _HEX27_TO_VTK}

@@ -19,11 +19,18 @@ import numpy as np
 
 from .. import _core
 from ..process import OutputProcess
-from ..processes.bulk_data import (UnsetVariableWarning, entity_connectivity, integration_point_means, nodal_flags,
-                               nodal_values, variable_by_name)
+from ..processes.bulk_data import (
+    UnsetVariableWarning,
+    entity_connectivity,
+    integration_point_means,
+    nodal_flags,
+    nodal_values,
+    variable_by_name,
+)
 from ..processes.model_part_resolution import resolve_model_part
 from ..utilities import publish_file, write_text_atomically
-from .vtk_cell_types import VTK_CELL_TYPES, VTK_NODE_ORDER as _VTK_ORDER
+from .vtk_cell_types import VTK_CELL_TYPES
+from .vtk_cell_types import VTK_NODE_ORDER as _VTK_ORDER
 
 LOG = logging.getLogger("mortarcontact")
 

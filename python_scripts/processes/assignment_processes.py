@@ -18,8 +18,17 @@ import json
 
 from .. import _core
 from ..process import Process
-from ._assignment import (Interval, ScalarValue, components_of, current_time, defaults, parse_direction,
-                          require_keys, scalar_variable, to_python)
+from ._assignment import (
+    Interval,
+    ScalarValue,
+    components_of,
+    current_time,
+    defaults,
+    parse_direction,
+    require_keys,
+    scalar_variable,
+    to_python,
+)
 from .model_part_resolution import resolve_model_part
 
 _COMMON_DEFAULTS = ('"help": "", "mesh_id": 0, "model_part_name": null, "variable_name": null, '

@@ -7,8 +7,14 @@ import os
 import numpy as np
 
 from .. import _core
-from ._json_results import (JsonResultsProcess, gauss_point_columns, node_keys, node_mask, results_model_part,
-                            value_columns)
+from ._json_results import (
+    JsonResultsProcess,
+    gauss_point_columns,
+    node_keys,
+    node_mask,
+    results_model_part,
+    value_columns,
+)
 
 
 class CheckResultError(AssertionError):

@@ -5,8 +5,15 @@ from __future__ import annotations
 import numpy as np
 
 from .. import _core
-from ._json_results import (JsonResultsProcess, gauss_point_columns, node_keys, node_mask, results_model_part,
-                            value_columns, write_json_atomically)
+from ._json_results import (
+    JsonResultsProcess,
+    gauss_point_columns,
+    node_keys,
+    node_mask,
+    results_model_part,
+    value_columns,
+    write_json_atomically,
+)
 
 
 class JsonOutputProcess(JsonResultsProcess):

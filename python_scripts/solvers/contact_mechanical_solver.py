@@ -4,8 +4,8 @@ convergence criteria and the semi-smooth Newton contact strategy."""
 from __future__ import annotations
 
 from .. import _core
-from ..utilities import warn
 from ..contact_strategies import CRITERIA_SETTINGS, create_contact_convergence_criteria, create_contact_strategy
+from ..utilities import warn
 from .mechanical_solver import MechanicalSolver
 
 #: The solver's own keys of contact_settings (Kratos' names and defaults). The keys of the classes

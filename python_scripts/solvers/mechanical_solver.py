@@ -5,10 +5,11 @@ from __future__ import annotations
 import os
 
 from .. import _core
-from ..utilities import nearest
 from ..processes.model_part_resolution import resolve_model_part
-from .meshio_import import GROUP_KEYS as MESHIO_KEYS, import_mesh, read_mesh
+from ..utilities import nearest
 from .mesh_checks import check_imported_mesh
+from .meshio_import import GROUP_KEYS as MESHIO_KEYS
+from .meshio_import import import_mesh, read_mesh
 
 BASE_VARIABLES = ["DISPLACEMENT", "REACTION", "POSITIVE_FACE_PRESSURE", "NEGATIVE_FACE_PRESSURE",
                   "POINT_LOAD", "LINE_LOAD", "SURFACE_LOAD", "VOLUME_ACCELERATION"]

@@ -189,7 +189,7 @@ def _group_settings(imports, cell_groups: dict, point_groups: dict, path: str) -
         block = imports[key]
         where = f"{imports.Where()}.{key}"
         values[key] = {}
-        for group in block.keys():
+        for group in block.keys():  # noqa: SIM118 (a Parameters object, not a dict)
             if group not in known:
                 listed = ", ".join(repr(g) for g in known) or "none"
                 raise _core.InputError(f"{where}: no group '{group}' in {path}{nearest(group, known)}; "
@@ -304,9 +304,8 @@ def _create_entities(part, kind, cell_type, connectivity, cell_name, cell_proper
     create = part.CreateNewElement if kind == "element" else part.CreateNewCondition
     properties = {}
     first = counters[kind] + 1
-    for offset, (cell, name, props, node_ids) in enumerate(zip(named.tolist(), cell_name[named].tolist(),
-                                                                cell_properties[named].tolist(),
-                                                                nodes[named].tolist())):
+    for offset, (name, props, node_ids) in enumerate(zip(cell_name[named].tolist(), cell_properties[named].tolist(),
+                                                          nodes[named].tolist())):
         if props not in properties:
             properties[props] = part.GetProperties(props)
         create(name, first + offset, node_ids, properties[props])

@@ -39,10 +39,10 @@ void RegisterAll() {
 
   const std::initializer_list<GT> solids_2d = {GT::Triangle2D3, GT::Triangle2D6, GT::Quadrilateral2D4,
                                                GT::Quadrilateral2D8, GT::Quadrilateral2D9};
-  const std::initializer_list<GT> solids = {GT::Triangle2D3,   GT::Triangle2D6,   GT::Quadrilateral2D4,
+  const std::initializer_list<GT> solids = {GT::Triangle2D3,      GT::Triangle2D6,      GT::Quadrilateral2D4,
                                             GT::Quadrilateral2D8, GT::Quadrilateral2D9, GT::Tetrahedra3D4,
-                                            GT::Tetrahedra3D10, GT::Hexahedra3D8,  GT::Hexahedra3D20,
-                                            GT::Hexahedra3D27,  GT::Prism3D6};
+                                            GT::Tetrahedra3D10,   GT::Hexahedra3D8,     GT::Hexahedra3D20,
+                                            GT::Hexahedra3D27,    GT::Prism3D6};
   AddSolids(solids, false);
   AddSolids(solids_2d, true);
   AddAll<MembraneElement, Element>({GT::Triangle3D3, GT::Quadrilateral3D4});

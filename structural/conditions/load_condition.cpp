@@ -17,10 +17,10 @@ struct LoadCondition::BoundaryPoint {
   double weight;
   Matrix::ConstRowXpr N;
   const Matrix& dN;
-  Array3 dx[2];      ///< current tangents dx/dxi (and dx/deta on a surface)
-  double radius;     ///< current x
-  Array3 load;       ///< the load variable: nodal values interpolated plus the condition's value
-  double pressure;   ///< net face pressure: nodal values interpolated plus the condition's value
+  Array3 dx[2];     ///< current tangents dx/dxi (and dx/deta on a surface)
+  double radius;    ///< current x
+  Array3 load;      ///< the load variable: nodal values interpolated plus the condition's value
+  double pressure;  ///< net face pressure: nodal values interpolated plus the condition's value
 };
 
 namespace {
@@ -60,13 +60,9 @@ void LoadCondition::CalculateLocalSystem(Matrix& lhs, Vector& rhs, const Process
   CalculateAll(&lhs, &rhs, info);
 }
 
-void LoadCondition::CalculateLeftHandSide(Matrix& lhs, const ProcessInfo& info) {
-  CalculateAll(&lhs, nullptr, info);
-}
+void LoadCondition::CalculateLeftHandSide(Matrix& lhs, const ProcessInfo& info) { CalculateAll(&lhs, nullptr, info); }
 
-void LoadCondition::CalculateRightHandSide(Vector& rhs, const ProcessInfo& info) {
-  CalculateAll(nullptr, &rhs, info);
-}
+void LoadCondition::CalculateRightHandSide(Vector& rhs, const ProcessInfo& info) { CalculateAll(nullptr, &rhs, info); }
 
 void LoadCondition::CalculateAll(Matrix* lhs, Vector* rhs, const ProcessInfo& info) {
   const auto ndof = static_cast<Eigen::Index>(GetGeometry().PointsNumber()) * Dimension();
@@ -219,8 +215,9 @@ void LoadCondition::CalculateSurfaceLoad(Matrix* lhs, Vector* rhs, const Process
     for (std::size_t b = 0; b < n; ++b) {
       const auto ib = static_cast<Eigen::Index>(b);
       const Eigen::Matrix3d dnormal = q.dN(ib, 1) * S1 - q.dN(ib, 0) * S2;
-      const Eigen::Matrix3d dforce = p * dnormal + (has_load ? Eigen::Matrix3d(load * (normal.transpose() * dnormal) / area)
-                                                             : Eigen::Matrix3d::Zero());
+      const Eigen::Matrix3d dforce =
+          p * dnormal +
+          (has_load ? Eigen::Matrix3d(load * (normal.transpose() * dnormal) / area) : Eigen::Matrix3d::Zero());
       for (std::size_t a = 0; a < n; ++a) {
         const auto ia = static_cast<Eigen::Index>(a);
         lhs->block<3, 3>(ia * 3, ib * 3) -= q.N[ia] * q.weight * dforce;

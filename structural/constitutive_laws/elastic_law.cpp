@@ -87,7 +87,8 @@ Eigen::Matrix3d RightCauchyGreen(const voigt::Vector6& E, const ConstitutiveLaw&
     }
   }
   detC = C.determinant();
-  if (!(detC > 0.0)) throw SolutionError(Concat(law.Name(), ": det C = ", detC, " is not positive (inverted material point)"));
+  if (!(detC > 0.0))
+    throw SolutionError(Concat(law.Name(), ": det C = ", detC, " is not positive (inverted material point)"));
   return C;
 }
 

@@ -69,7 +69,6 @@ class ElasticLaw final : public ConstitutiveLaw {
   StressState State() const noexcept;
 
  private:
-
   /// The reduced response: the 3D one on the embedded strain, or plane-stress Hooke.
   void ReducedResponse(const ConstitutiveLawParameters& values, const voigt::StrainVector& E, voigt::StrainVector& S,
                        voigt::TangentMatrix& C) const;

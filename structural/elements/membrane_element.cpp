@@ -16,8 +16,8 @@ std::unique_ptr<Element> MembraneElement::Create(IndexType id, Geometry::NodesAr
 }
 
 void MembraneElement::Unsupported() const {
-  throw NotImplementedError(Concat("element ", Id(), " (", Info(),
-                                   ") is a geometry carrier only: membrane mechanics is not implemented"));
+  throw NotImplementedError(
+      Concat("element ", Id(), " (", Info(), ") is a geometry carrier only: membrane mechanics is not implemented"));
 }
 
 void MembraneElement::CalculateLocalSystem(Matrix& lhs, Vector& rhs, const ProcessInfo& info) { Unsupported(); }

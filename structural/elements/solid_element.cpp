@@ -25,7 +25,6 @@ using BMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, kMax
 using DofVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxDofs, 1>;
 using NodeMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxNodes, kMaxNodes>;
 
-
 /// Tensor index pairs of the rows of a 2D plane B-matrix (xx, yy, xy).
 constexpr int kPlanePairs[3][2] = {{0, 0}, {1, 1}, {0, 1}};
 
@@ -194,9 +193,7 @@ void SolidElement::CalculateLocalSystem(Matrix& lhs, Vector& rhs, const ProcessI
 
 void SolidElement::CalculateLeftHandSide(Matrix& lhs, const ProcessInfo& info) { CalculateAll(&lhs, nullptr, info); }
 
-void SolidElement::CalculateRightHandSide(Vector& rhs, const ProcessInfo& info) {
-  CalculateAll(nullptr, &rhs, info);
-}
+void SolidElement::CalculateRightHandSide(Vector& rhs, const ProcessInfo& info) { CalculateAll(nullptr, &rhs, info); }
 
 void SolidElement::CalculateAll(Matrix* lhs, Vector* rhs, const ProcessInfo& info) {
   EnsureLaws();
@@ -241,8 +238,8 @@ void SolidElement::CalculateAll(Matrix* lhs, Vector* rhs, const ProcessInfo& inf
     values.F = k.F;
     values.detF = k.F.determinant();
     if (kinematics_ != Kinematics::SmallDisplacement && !(values.detF > 0.0))
-      throw SolutionError(Concat("element ", Id(), " (", Info(), ") is inverted at integration point ", g,
-                                 ": det F = ", values.detF));
+      throw SolutionError(
+          Concat("element ", Id(), " (", Info(), ") is inverted at integration point ", g, ": det F = ", values.detF));
     ConstitutiveLaw::StressMeasure measure = ConstitutiveLaw::StressMeasure::PK2;
     double radius = k.R;
     switch (kinematics_) {
@@ -329,7 +326,8 @@ void SolidElement::CalculateMassMatrix(Matrix& mass, const ProcessInfo& info) {
 
 void SolidElement::CalculateDampingMatrix(Matrix& damping, const ProcessInfo& info) {
   const Properties& properties = GetProperties();
-  const double alpha = properties.Has(RAYLEIGH_ALPHA) ? properties.GetValue(RAYLEIGH_ALPHA) : info.GetValue(RAYLEIGH_ALPHA);
+  const double alpha =
+      properties.Has(RAYLEIGH_ALPHA) ? properties.GetValue(RAYLEIGH_ALPHA) : info.GetValue(RAYLEIGH_ALPHA);
   const double beta = properties.Has(RAYLEIGH_BETA) ? properties.GetValue(RAYLEIGH_BETA) : info.GetValue(RAYLEIGH_BETA);
   const auto ndof = static_cast<Eigen::Index>(GetGeometry().PointsNumber()) * Dimension();
   damping.setZero(ndof, ndof);
@@ -353,8 +351,8 @@ void SolidElement::Check(const ProcessInfo& info) const {
   const ConstitutiveLaw& law = *properties.GetConstitutiveLaw();
   const int dim = Dimension();
   if (law.WorkingSpaceDimension() != dim || law.StrainSize() != StrainSize())
-    throw InputError(Concat(name, ": constitutive law ", law.Name(), " of properties ", properties.Id(),
-                            " works in ", law.WorkingSpaceDimension(), "D with strain size ", law.StrainSize(),
+    throw InputError(Concat(name, ": constitutive law ", law.Name(), " of properties ", properties.Id(), " works in ",
+                            law.WorkingSpaceDimension(), "D with strain size ", law.StrainSize(),
                             "; the element needs ", dim, "D with strain size ", StrainSize(),
                             axisymmetric_ ? " (an axisymmetric law, e.g. LinearElasticAxisym2DLaw)" : ""));
   law.Check(properties);
@@ -373,8 +371,8 @@ void SolidElement::Check(const ProcessInfo& info) const {
       throw InputError(Concat(name, " is inverted in the initial configuration at integration point ", g,
                               ": det J = ", k.detJ0, " (check the node ordering)"));
     if (axisymmetric_ && !(k.R > 0.0))
-      throw InputError(Concat(name, ": integration point ", g, " has radius x = ", k.R,
-                              "; axisymmetric meshes must lie in x > 0"));
+      throw InputError(
+          Concat(name, ": integration point ", g, " has radius x = ", k.R, "; axisymmetric meshes must lie in x > 0"));
   }
 }
 

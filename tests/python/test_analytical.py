@@ -9,8 +9,17 @@ import pytest
 from scipy.optimize import brentq
 
 import mortarcontact as mc
-from case_builder import (condition_load_process, fix_process, materials, project_parameters, structured_hexes,
-                          structured_quads, write_case, write_mdpa)
+
+from case_builder import (
+    condition_load_process,
+    fix_process,
+    materials,
+    project_parameters,
+    structured_hexes,
+    structured_quads,
+    write_case,
+    write_mdpa,
+)
 
 
 def nodes_where(coords, predicate):

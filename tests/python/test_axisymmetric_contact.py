@@ -15,6 +15,7 @@ import pytest
 import mortarcontact as mc
 from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
 from mortarcontact.project_parameters import read_project_parameters
+
 from case_builder import fix_process, materials, project_parameters, structured_quads, write_case, write_mdpa
 
 A, B = 0.5, 1.5          # inner and outer radius

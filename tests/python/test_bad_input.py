@@ -7,13 +7,13 @@ from __future__ import annotations
 
 import json
 import os
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Callable
 
 import pytest
+from test_cli import run_cli
 
 from case_builder import fix_process, materials, project_parameters, structured_quads, write_case, write_mdpa
-from test_cli import run_cli
 
 ELEMENT = "SmallDisplacementElement2D4N"
 LAW = "LinearElasticPlaneStrain2DLaw"
@@ -60,7 +60,8 @@ def contact_case(folder) -> str:
         "convergence_criterion": "contact_residual_criterion",
         "residual_relative_tolerance": 1e-4, "residual_absolute_tolerance": 1e-9, "max_iteration": 15})
     params["processes"]["contact_process_list"] = [{
-        "python_module": "alm_contact_process", "kratos_module": "KratosMultiphysics.ContactStructuralMechanicsApplication",
+        "python_module": "alm_contact_process",
+        "kratos_module": "KratosMultiphysics.ContactStructuralMechanicsApplication",
         "Parameters": {"model_part_name": "Structure", "assume_master_slave": {"0": ["lower"]},
                        "contact_model_part": {"0": ["Contact_Part"]}, "contact_type": "Frictionless"}}]
     mats = materials("Structure.lower", LAW, 1e5, 0.29)
@@ -85,7 +86,7 @@ class Case:
     def path(self, suffix: str) -> str:
         return os.path.join(self.folder, self.name + suffix)
 
-    def load(self) -> "Case":
+    def load(self) -> Case:
         with open(self.path(".mdpa")) as f:
             self.mdpa = f.read().splitlines()
         with open(self.path("_parameters.json")) as f:
@@ -154,9 +155,9 @@ class BadInput:
 CATALOGUE: list[BadInput] = []
 
 
-def bad(id: str, base: str, code: int, *fragments: str):
+def bad(name: str, base: str, code: int, *fragments: str):
     def register(edit):
-        CATALOGUE.append(BadInput(id, base, edit, code, fragments))
+        CATALOGUE.append(BadInput(name, base, edit, code, fragments))
         return edit
     return register
 

@@ -9,8 +9,6 @@ import subprocess
 import sys
 from pathlib import Path
 
-import pytest
-
 BENCHMARK = Path(__file__).resolve().parents[2] / "benchmarks" / "run_benchmarks.py"
 
 
@@ -20,7 +18,7 @@ def test_quick_run_writes_table_with_exact_solution(tmp_path):
                    check=True)
     text = output.read_text()
     assert "Machine:" in text and "cores" in text
-    rows = [line for line in text.splitlines() if line.startswith("| hex") or line.startswith("| tet")]
+    rows = [line for line in text.splitlines() if line.startswith(("| hex", "| tet"))]
     assert len(rows) == 2  # hex and tet, CHOLMOD
     for row in rows:
         cells = [c.strip() for c in row.strip("|").split("|")]

@@ -113,7 +113,8 @@ def test_everything_bound_is_documented():
 
 
 def test_every_argument_is_named():
-    unnamed = [f"{name}: {signature}" for name, value in _bound_items() if callable(value) and not isinstance(value, type)
+    unnamed = [f"{name}: {signature}" for name, value in _bound_items()
+               if callable(value) and not isinstance(value, type)
                for signature, _ in _overloads(value) if UNNAMED_ARGUMENT.search(signature)]
     assert not unnamed, f"{len(unnamed)} signatures with unnamed arguments:\n  " + "\n  ".join(unnamed)
 

@@ -13,6 +13,7 @@ from mortarcontact.solvers import create_solver
 from mortarcontact.solvers.solver_settings import validate_solver_settings
 
 from csma_cases import CSMA_CASES as CASE_DIR
+
 PARAMETER_FILES = sorted(glob.glob(os.path.join(CASE_DIR, "*", "*_parameters.json")))
 MDPA_FILES = sorted(glob.glob(os.path.join(CASE_DIR, "*", "*.mdpa")))
 

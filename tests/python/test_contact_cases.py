@@ -17,8 +17,8 @@ import mortarcontact as mc
 from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
 from mortarcontact.cases import hertz
 from mortarcontact.project_parameters import read_project_parameters
-from csma_cases import (FRICTIONLESS_CASES, KRATOS_SNAPSHOTS, CSMA_CASES, check_blocks, reference_values,
-                          use_components)
+
+from csma_cases import CSMA_CASES, FRICTIONLESS_CASES, KRATOS_SNAPSHOTS, check_blocks, reference_values, use_components
 
 HERTZ_RUNNER = os.path.join(os.path.dirname(__file__), "..", "..", "benchmarks", "hertz", "case_runner.py")
 

@@ -15,6 +15,7 @@ import pytest
 
 import mortarcontact as mc
 from mortarcontact.solvers.meshio_import import import_mesh, read_mesh
+
 from small_models import parameters
 
 CELL_DIMENSION = {"vertex": 0, "line": 1, "triangle": 2, "quad": 2, "tetra": 3, "hexahedron": 3,
@@ -99,7 +100,8 @@ def hand_built(model):
     for k, cell in enumerate(GROUPS[3][2]):
         part.CreateNewCondition("LineLoadCondition2D2N", k + 1, (cell + 1).tolist(), part.GetProperties(3))
     contents = {"Parts.base": ([1, 2, 3, 4, 5, 6], [1, 2], []), "Parts.block": ([4, 5, 6, 7, 8, 9], [3, 4, 5, 6], []),
-                "DISPLACEMENT_bottom": ([1, 2, 3], [], []), "Load_top": ([7, 8, 9], [], [1, 2]), "Corner": ([6], [], [])}
+                "DISPLACEMENT_bottom": ([1, 2, 3], [], []), "Load_top": ([7, 8, 9], [], [1, 2]),
+                "Corner": ([6], [], [])}
     for name, (nodes, elements, conditions) in contents.items():
         sub = part.CreateSubModelPart(name)
         sub.AddNodes(nodes)
@@ -202,14 +204,14 @@ def test_unsupported_cell_type_names_type_group_and_file(tmp_path):
 
 
 def test_cells_above_the_domain_dimension(blocks_msh):
-    with pytest.raises(mc.InputError, match="group 'Parts.base' has quad cells, of dimension 2, in a model of "
+    with pytest.raises(mc.InputError, match=r"group 'Parts.base' has quad cells, of dimension 2, in a model of "
                                             "solver_settings.domain_size 1"):
         read_into_model(blocks_msh, {}, domain_size=1)
 
 
 def test_unreadable_file_and_missing_meshio(tmp_path, monkeypatch):
     (tmp_path / "broken.msh").write_text("$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 2\n")
-    with pytest.raises(mc.InputError, match="broken.msh: meshio cannot read it as 'gmsh' input"):
+    with pytest.raises(mc.InputError, match=r"broken.msh: meshio cannot read it as 'gmsh' input"):
         read_mesh(str(tmp_path / "broken.msh"), "gmsh", "solver_settings.model_import_settings")
     monkeypatch.setitem(sys.modules, "meshio", None)
     with pytest.raises(mc.InputError, match="\"meshio\" needs the Python package meshio, a dependency of "
@@ -295,7 +297,8 @@ def blocks_case(folder, edit=None) -> str:
                        "nodal_solution_step_data_variables": ["DISPLACEMENT"]}}]}
     if edit:
         edit(params["solver_settings"]["model_import_settings"])
-    return write_case(folder, "blocks", params, materials("Structure.Parts", "LinearElasticPlaneStrain2DLaw", 1000.0, 0.3))
+    return write_case(folder, "blocks", params,
+                      materials("Structure.Parts", "LinearElasticPlaneStrain2DLaw", 1000.0, 0.3))
 
 
 def run_cli(parameters_file, cwd):
@@ -335,6 +338,6 @@ def test_cli_input_errors(tmp_path, edit, code, fragments):
 
 def test_group_names_that_cannot_name_a_model_part(tmp_path):
     write_msh(tmp_path / "spaced.msh", POINTS, [("Parts block", "quad", QUADS), ("top", "triangle", TRIANGLES)])
-    with pytest.raises(mc.InputError, match="spaced.msh: group name 'Parts block' cannot name a sub model part"):
+    with pytest.raises(mc.InputError, match=r"spaced.msh: group name 'Parts block' cannot name a sub model part"):
         read_into_model(tmp_path / "spaced.msh", {"element_names": {"Parts block": "SmallDisplacementElement",
                                                                     "top": "SmallDisplacementElement"}})

@@ -15,6 +15,7 @@ import pytest
 import mortarcontact as mc
 from mortarcontact.output.vtk_output_process import _VTK_ORDER
 from mortarcontact.process_factory import create_process
+
 from small_models import advance, parameters, quad_elements, square_grid
 
 

@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 import mortarcontact as mc
+
 from case_builder import project_parameters
 
 PLUGIN_SOURCE = os.path.join(os.path.dirname(__file__), "..", "..", "examples", "spring_condition_plugin")

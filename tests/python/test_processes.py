@@ -11,6 +11,7 @@ import mortarcontact as mc
 from mortarcontact.process_factory import PROCESS_REGISTRY, create_process, create_process_lists
 from mortarcontact.processes import resolve_model_part
 from mortarcontact.processes.from_json_check_result_process import CheckResultError, is_close
+
 from small_models import advance, parameters, square_grid
 
 

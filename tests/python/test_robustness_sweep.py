@@ -1,12 +1,12 @@
 """Issue 10: a representative subset of the robustness sweep (benchmarks/robustness) against
 Kratos 10.4. Each folder in tests/cases/robustness holds a case's files and Kratos 10.4.4's values
 for them (kratos_10_4.json: Newton iterations and convergence per step, every node's displacement,
-the slave nodes' contact pressures, as written and for the tight run), written by ``benchmarks/robustness/run_sweep.py --subset test
---snapshots tests/cases/robustness``. The goal on every case Kratos solves: converge in every step
-in no more Newton iterations than Kratos in each step (test_convergence), with displacements and
-contact pressures within 1e-6 of Kratos' relative to their largest value when both codes solve
-the case with the tight run's overrides (test_agreement: tolerances 1e-12, normals updated before
-every iteration in Kratos too). Where
+the slave nodes' contact pressures, as written and for the tight run), written by
+``benchmarks/robustness/run_sweep.py --subset test --snapshots tests/cases/robustness``. The goal
+on every case Kratos solves: converge in every step in no more Newton iterations than Kratos in
+each step (test_convergence), with displacements and contact pressures within 1e-6 of Kratos'
+relative to their largest value when both codes solve the case with the tight run's overrides
+(test_agreement: tolerances 1e-12, normals updated before every iteration in Kratos too). Where
 we miss a part today, that test is an expected failure (strict, so that a fix shows as XPASS)."""
 from __future__ import annotations
 
@@ -24,7 +24,7 @@ from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
 from mortarcontact.project_parameters import migrate_project_parameters
 
 sys.path.insert(0, os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", "benchmarks", "hertz")))
-from case_runner import overridden  # noqa: E402  (the sweep's ProjectParameters overrides)
+from case_runner import overridden
 
 CASES = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "cases", "robustness"))
 TOLERANCE = 1e-6

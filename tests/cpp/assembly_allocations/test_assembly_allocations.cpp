@@ -57,8 +57,9 @@ struct Block {
   ModelPart& part = model.CreateModelPart("Structure");
   Block(const Case& c, int n) {
     RegisterStructuralMechanics();
-    for (const VariableData* v : {static_cast<const VariableData*>(&DISPLACEMENT), static_cast<const VariableData*>(&REACTION),
-                                  static_cast<const VariableData*>(&POSITIVE_FACE_PRESSURE)})
+    for (const VariableData* v :
+         {static_cast<const VariableData*>(&DISPLACEMENT), static_cast<const VariableData*>(&REACTION),
+          static_cast<const VariableData*>(&POSITIVE_FACE_PRESSURE)})
       part.AddNodalSolutionStepVariable(*v);
     auto id = [n](int i, int j, int k) { return IndexType(1 + i + (n + 1) * (j + (n + 1) * k)); };
     for (int k = 0; k <= n; ++k)
@@ -86,23 +87,28 @@ struct Block {
     for (int k = 0; k < n; ++k)
       for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
-          const IndexType v[8] = {id(i, j, k),         id(i + 1, j, k),         id(i + 1, j + 1, k),
-                                  id(i, j + 1, k),     id(i, j, k + 1),         id(i + 1, j, k + 1),
-                                  id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)};
+          const IndexType v[8] = {id(i, j, k),     id(i + 1, j, k),     id(i + 1, j + 1, k),     id(i, j + 1, k),
+                                  id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)};
           if (!c.tetrahedra) {
-            part.CreateNewElement(c.element, ++element_id, {v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]}, &properties);
+            part.CreateNewElement(c.element, ++element_id, {v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]},
+                                  &properties);
           } else {
             // Six positively oriented tetrahedra around the diagonal v0-v6.
-            constexpr int kTets[6][4] = {{0, 1, 2, 6}, {0, 2, 3, 6}, {0, 3, 7, 6}, {0, 7, 4, 6}, {0, 4, 5, 6}, {0, 5, 1, 6}};
-            for (const auto& t : kTets) part.CreateNewElement(c.element, ++element_id, {v[t[0]], v[t[1]], v[t[2]], v[t[3]]}, &properties);
+            constexpr int kTets[6][4] = {{0, 1, 2, 6}, {0, 2, 3, 6}, {0, 3, 7, 6},
+                                         {0, 7, 4, 6}, {0, 4, 5, 6}, {0, 5, 1, 6}};
+            for (const auto& t : kTets)
+              part.CreateNewElement(c.element, ++element_id, {v[t[0]], v[t[1]], v[t[2]], v[t[3]]}, &properties);
           }
           if (c.pressure && k == n - 1) {
             const IndexType top[4] = {v[4], v[5], v[6], v[7]};
             if (!c.tetrahedra) {
-              part.CreateNewCondition("SurfaceLoadCondition3D4N", ++condition_id, {top[0], top[1], top[2], top[3]}, &properties);
+              part.CreateNewCondition("SurfaceLoadCondition3D4N", ++condition_id, {top[0], top[1], top[2], top[3]},
+                                      &properties);
             } else {
-              part.CreateNewCondition("SurfaceLoadCondition3D3N", ++condition_id, {top[0], top[1], top[2]}, &properties);
-              part.CreateNewCondition("SurfaceLoadCondition3D3N", ++condition_id, {top[0], top[2], top[3]}, &properties);
+              part.CreateNewCondition("SurfaceLoadCondition3D3N", ++condition_id, {top[0], top[1], top[2]},
+                                      &properties);
+              part.CreateNewCondition("SurfaceLoadCondition3D3N", ++condition_id, {top[0], top[2], top[3]},
+                                      &properties);
             }
           }
         }
@@ -178,18 +184,18 @@ TEST_P(AssemblyAllocations, LaterBuildsOnlyWarmUpThreadBuffers) {
   EXPECT_LE(total, 32L * threads);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    StructuralElements, AssemblyAllocations,
-    ::testing::Values(Case{"SmallDisplacementElement3D8N", "LinearElastic3DLaw", false, false},
-                      Case{"SmallDisplacementElement3D4N", "LinearElastic3DLaw", true, false},
-                      Case{"TotalLagrangianElement3D8N", "HyperElastic3DLaw", false, false},
-                      Case{"TotalLagrangianElement3D4N", "HyperElastic3DLaw", true, false},
-                      Case{"SmallDisplacementElement3D8N", "LinearElastic3DLaw", false, true},
-                      Case{"SmallDisplacementElement3D4N", "LinearElastic3DLaw", true, true}),
-    [](const auto& info) {
-      const Case& c = info.param;
-      return c.element.substr(0, c.element.find("Element")) + (c.tetrahedra ? "Tet" : "Hex") + (c.pressure ? "WithPressure" : "");
-    });
+INSTANTIATE_TEST_SUITE_P(StructuralElements, AssemblyAllocations,
+                         ::testing::Values(Case{"SmallDisplacementElement3D8N", "LinearElastic3DLaw", false, false},
+                                           Case{"SmallDisplacementElement3D4N", "LinearElastic3DLaw", true, false},
+                                           Case{"TotalLagrangianElement3D8N", "HyperElastic3DLaw", false, false},
+                                           Case{"TotalLagrangianElement3D4N", "HyperElastic3DLaw", true, false},
+                                           Case{"SmallDisplacementElement3D8N", "LinearElastic3DLaw", false, true},
+                                           Case{"SmallDisplacementElement3D4N", "LinearElastic3DLaw", true, true}),
+                         [](const auto& info) {
+                           const Case& c = info.param;
+                           return c.element.substr(0, c.element.find("Element")) + (c.tetrahedra ? "Tet" : "Hex") +
+                                  (c.pressure ? "WithPressure" : "");
+                         });
 
 }  // namespace
 }  // namespace mc

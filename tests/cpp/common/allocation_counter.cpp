@@ -57,7 +57,8 @@ inline void Count(const void* caller) {
 }
 
 void* NewOrThrow(std::size_t size, std::size_t alignment) {
-  void* p = alignment > alignof(std::max_align_t) ? __libc_memalign(alignment, size ? size : 1) : __libc_malloc(size ? size : 1);
+  void* p = alignment > alignof(std::max_align_t) ? __libc_memalign(alignment, size ? size : 1)
+                                                  : __libc_malloc(size ? size : 1);
   if (p == nullptr) throw std::bad_alloc();
   return p;
 }

@@ -21,8 +21,8 @@ namespace mc::test {
 inline ModelPart& MakeContactModelPart(Model& model) {
   ModelPart& root = model.CreateModelPart("Structure");
   for (const VariableData* var : std::initializer_list<const VariableData*>{
-           &DISPLACEMENT, &REACTION, &NORMAL, &WEIGHTED_GAP, &LAGRANGE_MULTIPLIER_CONTACT_PRESSURE, &VECTOR_LAGRANGE_MULTIPLIER,
-           &WEIGHTED_SCALAR_RESIDUAL, &WEIGHTED_VECTOR_RESIDUAL})
+           &DISPLACEMENT, &REACTION, &NORMAL, &WEIGHTED_GAP, &LAGRANGE_MULTIPLIER_CONTACT_PRESSURE,
+           &VECTOR_LAGRANGE_MULTIPLIER, &WEIGHTED_SCALAR_RESIDUAL, &WEIGHTED_VECTOR_RESIDUAL})
     root.AddNodalSolutionStepVariable(*var);
   return root;
 }

@@ -184,9 +184,8 @@ void CheckNormalDerivatives(const std::string& case_name) {
         k->Coordinates()[c] = x;
         const Array3 fd = (plus - minus) / (2.0 * h);
         const Array3 exact = it == d.nodes.end() ? Array3::Zero() : Array3(d.dn_dx[it - d.nodes.begin()].col(c));
-        EXPECT_LE((exact - fd).cwiseAbs().maxCoeff(), 1e-7)
-            << "dn(" << node->Id() << ")/dx(" << k->Id() << ", " << c << "): " << exact.transpose() << " vs "
-            << fd.transpose();
+        EXPECT_LE((exact - fd).cwiseAbs().maxCoeff(), 1e-7) << "dn(" << node->Id() << ")/dx(" << k->Id() << ", " << c
+                                                            << "): " << exact.transpose() << " vs " << fd.transpose();
         max_error = std::max(max_error, (exact - fd).cwiseAbs().maxCoeff());
         max_derivative = std::max(max_derivative, exact.cwiseAbs().maxCoeff());
       }
@@ -343,8 +342,8 @@ double CheckAgainstFiniteDifferences(const Pairs& nv, const Pairs* fixed_pairs, 
     EXPECT_LE((r - r_fixed).norm(), 1e-13 * r.norm());
     const double error_fixed = (assembly.Tangent(*fixed_pairs, info) - fd).cwiseAbs().maxCoeff() / scale;
     EXPECT_GT(error_fixed, 1e-4) << fixed_pairs->front()->Info() << ": the fixed-normal tangent should miss dn/du";
-    std::cout << "[ " << nv.front()->Info() << " ] " << assembly.Size() << " DoFs, fixed-normal tangent: "
-              << error_fixed << "\n";
+    std::cout << "[ " << nv.front()->Info() << " ] " << assembly.Size()
+              << " DoFs, fixed-normal tangent: " << error_fixed << "\n";
   }
   return error;
 }
@@ -375,9 +374,9 @@ TYPED_TEST(AssembledTangent, QuadrilateralsOnTriangles3D) { TypeParam::Check("3D
 TEST(NormalVariationConditions, NamesResolveAndListNeighbourDofs) {
   RegisterContactConditions();
   const auto& registry = Registry<Condition>::Instance();
-  for (const char* stem : {"ALMNVFrictionlessMortarContactCondition",
-                           "ALMNVFrictionlessComponentsMortarContactCondition",
-                           "PenaltyNVFrictionlessMortarContactCondition"})
+  for (const char* stem :
+       {"ALMNVFrictionlessMortarContactCondition", "ALMNVFrictionlessComponentsMortarContactCondition",
+        "PenaltyNVFrictionlessMortarContactCondition"})
     for (const char* token : {"2D2N", "3D3N", "3D4N", "3D3N4N", "3D4N3N"}) {
       const std::string name = std::string(stem) + token;
       ASSERT_TRUE(registry.Has(name)) << name;

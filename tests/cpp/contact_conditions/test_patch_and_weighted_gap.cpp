@@ -47,8 +47,8 @@ struct Patch {
   /// One pair per (slave, master) element, of the condition family TFamily.
   void Add(std::unique_ptr<PairedCondition> pair) {
     pairs.push_back(pair.get());
-    ModelPart& computing =
-        root.HasSubModelPart("ComputingContact") ? root.GetSubModelPart("ComputingContact") : root.CreateSubModelPart("ComputingContact");
+    ModelPart& computing = root.HasSubModelPart("ComputingContact") ? root.GetSubModelPart("ComputingContact")
+                                                                    : root.CreateSubModelPart("ComputingContact");
     computing.AddCondition(std::unique_ptr<Condition>(std::move(pair)));
   }
 
@@ -276,8 +276,7 @@ void CheckWeightedGap(int dim) {
   }
 
   // Rigid motion of every node (through DISPLACEMENT), normals rotated with it.
-  const Eigen::Matrix3d rotation =
-      (Eigen::AngleAxisd(0.4, Array3(0.3, -0.5, 0.8).normalized())).toRotationMatrix();
+  const Eigen::Matrix3d rotation = (Eigen::AngleAxisd(0.4, Array3(0.3, -0.5, 0.8).normalized())).toRotationMatrix();
   const Eigen::Matrix3d r = dim == 2 ? Eigen::Matrix3d(Eigen::AngleAxisd(0.7, Array3::UnitZ())) : rotation;
   const Array3 shift = dim == 2 ? Array3(0.3, -1.2, 0.0) : Array3(0.3, -1.2, 2.0);
   for (Node* node : patch.root.Nodes()) {
@@ -311,7 +310,8 @@ TEST(ContactConditionRegistry, NamesResolve) {
   // A pair created through the prototype, as the search does.
   Patch patch;
   BuildMatchingPatch(patch, 3, false);
-  const auto& prototype = dynamic_cast<const PairedCondition&>(registry.Get("ALMFrictionlessMortarContactCondition3D4N"));
+  const auto& prototype =
+      dynamic_cast<const PairedCondition&>(registry.Get("ALMFrictionlessMortarContactCondition3D4N"));
   auto slave = prototype.Create(1, patch.Nodes({1, 2, 5, 4}), nullptr);
   auto master = prototype.Create(2, patch.Nodes({101, 104, 105, 102}), nullptr);
   auto pair = prototype.CreatePaired(7, *slave, *master, nullptr);
@@ -325,9 +325,10 @@ TEST(ContactConditionRegistry, NamesResolve) {
   EXPECT_EQ(dofs[12]->node->Id(), 1u);
   EXPECT_EQ(dofs[24]->variable, &LAGRANGE_MULTIPLIER_CONTACT_PRESSURE);
 
-  for (const char* name : {"ALMFrictionlessAxisymMortarContactCondition2D2N", "ALMNVFrictionlessAxisymMortarContactCondition2D2N",
-                           "PenaltyFrictionlessAxisymMortarContactCondition2D2N",
-                           "PenaltyNVFrictionlessAxisymMortarContactCondition2D2N"}) {
+  for (const char* name :
+       {"ALMFrictionlessAxisymMortarContactCondition2D2N", "ALMNVFrictionlessAxisymMortarContactCondition2D2N",
+        "PenaltyFrictionlessAxisymMortarContactCondition2D2N",
+        "PenaltyNVFrictionlessAxisymMortarContactCondition2D2N"}) {
     ASSERT_TRUE(registry.Has(name)) << name;
     EXPECT_EQ(registry.Get(name).Info(), name);
   }

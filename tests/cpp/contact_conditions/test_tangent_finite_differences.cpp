@@ -122,11 +122,12 @@ struct Cases {
   using Penalty = PenaltyFrictionlessMortarContactCondition<D, S, M>;
 };
 
-using AllConditions = ::testing::Types<
-    Cases<2, 2, 2>::ALM, Cases<3, 3, 3>::ALM, Cases<3, 4, 4>::ALM, Cases<3, 3, 4>::ALM, Cases<3, 4, 3>::ALM,
-    Cases<2, 2, 2>::Components, Cases<3, 3, 3>::Components, Cases<3, 4, 4>::Components, Cases<3, 3, 4>::Components,
-    Cases<3, 4, 3>::Components, Cases<2, 2, 2>::Penalty, Cases<3, 3, 3>::Penalty, Cases<3, 4, 4>::Penalty,
-    Cases<3, 3, 4>::Penalty, Cases<3, 4, 3>::Penalty>;
+using AllConditions =
+    ::testing::Types<Cases<2, 2, 2>::ALM, Cases<3, 3, 3>::ALM, Cases<3, 4, 4>::ALM, Cases<3, 3, 4>::ALM,
+                     Cases<3, 4, 3>::ALM, Cases<2, 2, 2>::Components, Cases<3, 3, 3>::Components,
+                     Cases<3, 4, 4>::Components, Cases<3, 3, 4>::Components, Cases<3, 4, 3>::Components,
+                     Cases<2, 2, 2>::Penalty, Cases<3, 3, 3>::Penalty, Cases<3, 4, 4>::Penalty, Cases<3, 3, 4>::Penalty,
+                     Cases<3, 4, 3>::Penalty>;
 TYPED_TEST_SUITE(TangentTest, AllConditions);
 
 TYPED_TEST(TangentTest, AllActive) { Fixture<TypeParam>(Pattern::kAllActive).CheckTangent(); }
@@ -155,7 +156,8 @@ TYPED_TEST(TangentTest, OverlapIsNonTrivial) {
   typename K::MasterMatrix x2;
   for (int i = 0; i < K::kNumSlaveNodes; ++i) {
     x1.row(i) = fixture.pair->GetGeometry()[i].Coordinates().template head<K::kDim>().transpose();
-    n1.row(i) = NormalCalculationUtilities::GetNodalNormal(fixture.pair->GetGeometry()[i]).template head<K::kDim>().transpose();
+    n1.row(i) =
+        NormalCalculationUtilities::GetNodalNormal(fixture.pair->GetGeometry()[i]).template head<K::kDim>().transpose();
   }
   for (int l = 0; l < K::kNumMasterNodes; ++l)
     x2.row(l) = fixture.pair->GetPairedGeometry()[l].Coordinates().template head<K::kDim>().transpose();

@@ -105,8 +105,8 @@ struct ContactSystem {
     };
     Properties& properties = root.GetOrCreateProperties(1);
     properties.SetValue(INTEGRATION_ORDER_CONTACT, 3);
-    root.AddCondition(std::make_unique<PairCondition>(1, surface(slave_nodes, TSlave), &properties,
-                                                      surface(master_nodes, TMaster)));
+    root.AddCondition(
+        std::make_unique<PairCondition>(1, surface(slave_nodes, TSlave), &properties, surface(master_nodes, TMaster)));
     ProcessInfo& info = root.GetProcessInfo();
     info.SetValue(INITIAL_PENALTY, 1.0);
     info.SetValue(SCALE_FACTOR, 2.5);
@@ -163,7 +163,8 @@ struct ContactSystem {
       for (std::size_t i = 0; i < local_dofs.size(); ++i) {
         rhs[row[local_dofs[i]]] += local_rhs[static_cast<Eigen::Index>(i)];
         for (std::size_t j = 0; j < local_dofs.size(); ++j)
-          dense(row[local_dofs[i]], row[local_dofs[j]]) += lhs(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
+          dense(row[local_dofs[i]], row[local_dofs[j]]) +=
+              lhs(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
       }
     }
     for (Eigen::Index i = 0; i < n; ++i)

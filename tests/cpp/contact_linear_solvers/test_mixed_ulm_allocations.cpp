@@ -21,8 +21,12 @@ class UncountedUmfpack : public LinearSolver {
  public:
   std::string Name() const override { return "umfpack"; }
   bool IsDirect() const override { return true; }
-  void Initialize(const SparseMatrix& A) override { Paused([&] { inner_.Initialize(A); }); }
-  void Solve(const SparseMatrix& A, Vector& x, const Vector& b) override { Paused([&] { inner_.Solve(A, x, b); }); }
+  void Initialize(const SparseMatrix& A) override {
+    Paused([&] { inner_.Initialize(A); });
+  }
+  void Solve(const SparseMatrix& A, Vector& x, const Vector& b) override {
+    Paused([&] { inner_.Solve(A, x, b); });
+  }
   void Clear() override { inner_.Clear(); }
 
  private:
@@ -58,8 +62,8 @@ TEST(MixedULMAllocations, RepeatedSolveWithSamePatternAllocatesNothing) {
   A.coeffs() *= 1.5;  // new values, same pattern
   const long second = AllocationsOfOneSolve(solver, A, dofs, b, x);
   ASSERT_TRUE(solver.LastSolveWasCondensed());
-  std::cout << "[ figures  ] allocations outside the inner solver: first solve " << first << ", next solve "
-            << second << "\n";
+  std::cout << "[ figures  ] allocations outside the inner solver: first solve " << first << ", next solve " << second
+            << "\n";
   EXPECT_GT(first, 0);  // the counter works
   EXPECT_EQ(second, 0);
 }

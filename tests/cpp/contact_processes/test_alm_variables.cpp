@@ -23,7 +23,8 @@ TEST(ALMVariables, SmallerSideOfEOverH) {
   Model model;
   ModelPart& sub = Patch(model);
   ModelPart& root = sub.GetRootModelPart();
-  ALMVariablesCalculationProcess process(root, sub, Parameters(R"({"stiffness_factor": 2.0, "penalty_scale_factor": 3.0})"));
+  ALMVariablesCalculationProcess process(root, sub,
+                                         Parameters(R"({"stiffness_factor": 2.0, "penalty_scale_factor": 3.0})"));
   process.Execute();
   // slave 2e5 / 1, master 1e5 / 0.999: the master is the less stiff side.
   const double value = 1.0e5 / 0.999;

@@ -19,9 +19,7 @@
 namespace mc {
 namespace {
 
-Parameters SearchSettings(const std::string& extra = "") {
-  return Parameters("{" + extra + "}");
-}
+Parameters SearchSettings(const std::string& extra = "") { return Parameters("{" + extra + "}"); }
 
 ModelPart& BuildPatch2D(Model& model) {
   ModelPart& root = test::ReadPatch2D(model);
@@ -125,7 +123,8 @@ TEST(ContactSearch, ObbRejectsLaterallyFarCandidateInsideTheRadius) {
     test::WarningCapture warnings;
     ContactSearchProcess search(
         root, sub, SearchSettings(std::string(R"("check_gap": "no_check", "type_search": ")") + type + "\""));
-    const bool obb = std::string(type).find("obb") != std::string::npos || std::string(type).find("OBB") != std::string::npos;
+    const bool obb =
+        std::string(type).find("obb") != std::string::npos || std::string(type).find("OBB") != std::string::npos;
     EXPECT_EQ(search.UpdateMortarConditions().pairs, obb ? 0u : 1u) << type;
     EXPECT_FALSE(root.GetNode(3).Is(ACTIVE)) << type;
   }
@@ -203,7 +202,7 @@ ModelPart& BuildStrips2D(Model& model, int n_lower, int n_upper, double gap) {
   ModelPart& contact = root.CreateSubModelPart("Contact_Part");
   std::vector<IndexType> ids;
   for (int i = 0; i <= n_lower; ++i) ids.push_back(lower + n_lower + 1 + i);  // top row of the lower strip
-  for (int i = 0; i <= n_upper; ++i) ids.push_back(upper + i);               // bottom row of the upper strip
+  for (int i = 0; i <= n_upper; ++i) ids.push_back(upper + i);                // bottom row of the upper strip
   contact.AddNodes(ids);
   return test::BuildInterface(root, {"Contact_Part"}, {"Lower"});
 }
@@ -217,8 +216,12 @@ TEST(ContactSearch, NonMatchingFlatInterfacePairsOverlappingSegments) {
   EXPECT_EQ(stats.pairs, 6u);
   std::map<double, int> per_slave;
   for (const Condition* condition : search.ComputingPart().Conditions())
-    ++per_slave[std::round(4.0 * dynamic_cast<const PairedCondition&>(*condition).GetParentSlaveCondition()
-                                      ->GetGeometry().Center().x() * 2.0) / 2.0];
+    ++per_slave
+        [std::round(
+             4.0 *
+             dynamic_cast<const PairedCondition&>(*condition).GetParentSlaveCondition()->GetGeometry().Center().x() *
+             2.0) /
+         2.0];
   EXPECT_EQ(per_slave, (std::map<double, int>{{0.5, 1}, {1.5, 2}, {2.5, 2}, {3.5, 1}}));
   // Without the mapping check the touching neighbours are kept as well.
   ContactSearchProcess loose(sub.GetRootModelPart(), sub,
@@ -249,8 +252,9 @@ TEST(ContactSearch, CurvedHertzInterface) {
   for (const Node* node : sub.Nodes())
     if (node->Is(SLAVE) && std::abs(node->X()) < 0.5) EXPECT_FALSE(node->Is(ISOLATED)) << node->Id();
   for (const Condition* pair : search.ComputingPart().Conditions())
-    EXPECT_LT(pair->GetGeometry().Center().y() - dynamic_cast<const PairedCondition&>(*pair).GetPairedGeometry().Center().y(),
-              0.11);
+    EXPECT_LT(
+        pair->GetGeometry().Center().y() - dynamic_cast<const PairedCondition&>(*pair).GetPairedGeometry().Center().y(),
+        0.11);
   // The nodes near the centre start active (gap 1e-6 + x^2 / 2R): exactly those whose gap is
   // below active_check_factor (0.01) x the mean NODAL_H of the master (plate) nodes.
   double master_h = 0.0;
@@ -290,7 +294,8 @@ TEST(ContactSearch, EverySearchPredictsTheActiveSet) {
   for (Node* node : sub.Nodes()) {
     if (!node->Is(SLAVE) || node->Is(ISOLATED)) continue;
     if (!centre || std::abs(node->X()) < std::abs(centre->X())) centre = node;
-    if (!node->Is(ACTIVE) && std::abs(node->X()) < 0.5 && (!far || std::abs(node->X()) > std::abs(far->X()))) far = node;
+    if (!node->Is(ACTIVE) && std::abs(node->X()) < 0.5 && (!far || std::abs(node->X()) > std::abs(far->X())))
+      far = node;
   }
   ASSERT_TRUE(centre && far);
   ASSERT_TRUE(centre->Is(ACTIVE));

@@ -56,7 +56,8 @@ struct Synthetic {
   }
 };
 
-void ExpectValues(const std::vector<CriterionValue>& values, const std::vector<std::pair<std::string, double>>& expected) {
+void ExpectValues(const std::vector<CriterionValue>& values,
+                  const std::vector<std::pair<std::string, double>>& expected) {
   ASSERT_EQ(values.size(), expected.size());
   for (std::size_t i = 0; i < values.size(); ++i) {
     EXPECT_EQ(values[i].name, expected[i].first);
@@ -126,13 +127,15 @@ TEST(ContactCriteria, ResidualBlocksUseTheFirstResidualOfTheStep) {
       "contact_residual_relative_tolerance": 1e-4})"));
   EXPECT_TRUE(c.GetActualizeRHSFlag());
   EXPECT_FALSE(s.Check(c));
-  ExpectValues(c.LastValues(),
-               {{"|r_u|^2/|r_u0|^2", 1.0}, {"|r_u|^2/n", 100.0 / 3}, {"|r_lm|^2/|r_lm0|^2", 1.0}, {"|r_lm|^2/n", 0.125}});
+  ExpectValues(
+      c.LastValues(),
+      {{"|r_u|^2/|r_u0|^2", 1.0}, {"|r_u|^2/n", 100.0 / 3}, {"|r_lm|^2/|r_lm0|^2", 1.0}, {"|r_lm|^2/n", 0.125}});
   s.b << 0.006, 0.008, 5e-5, 999.0, 0.0, 0.0;
   EXPECT_TRUE(c.PostCriteria(s.mp, s.dofs, s.A, s.dx, s.b));
   // Squared norms, as in Kratos: |r_u| fell by 1e-3, |r_lm| by 1e-4.
-  ExpectValues(c.LastValues(),
-               {{"|r_u|^2/|r_u0|^2", 1e-6}, {"|r_u|^2/n", 1e-4 / 3}, {"|r_lm|^2/|r_lm0|^2", 1e-8}, {"|r_lm|^2/n", 1.25e-9}});
+  ExpectValues(
+      c.LastValues(),
+      {{"|r_u|^2/|r_u0|^2", 1e-6}, {"|r_u|^2/n", 1e-4 / 3}, {"|r_lm|^2/|r_lm0|^2", 1e-8}, {"|r_lm|^2/n", 1.25e-9}});
   // A new step takes a new reference.
   EXPECT_FALSE(s.Check(c));
   EXPECT_DOUBLE_EQ(c.LastValues()[0].value, 1.0);
@@ -140,10 +143,12 @@ TEST(ContactCriteria, ResidualBlocksUseTheFirstResidualOfTheStep) {
 
 TEST(ContactCriteria, MixedMeasuresResidualForDisplacementsAndIncrementForMultipliers) {
   Synthetic s;
-  DisplacementLagrangeMultiplierMixedContactCriteria c(Parameters(R"({"contact_displacement_relative_tolerance": 1e-3})"));
+  DisplacementLagrangeMultiplierMixedContactCriteria c(
+      Parameters(R"({"contact_displacement_relative_tolerance": 1e-3})"));
   EXPECT_EQ(c.Name(), "displacement_lagrange_multiplier_mixed_contact_criteria");
   EXPECT_FALSE(s.Check(c));
-  ExpectValues(c.LastValues(), {{"|r_u|^2/|r_u0|^2", 1.0}, {"|r_u|^2/n", 100.0 / 3}, {"|dlm|/|lm|", 5e-4}, {"|dlm|/n", 5e-4}});
+  ExpectValues(c.LastValues(),
+               {{"|r_u|^2/|r_u0|^2", 1.0}, {"|r_u|^2/n", 100.0 / 3}, {"|dlm|/|lm|", 5e-4}, {"|dlm|/n", 5e-4}});
   EXPECT_FALSE(c.Result(DofFamily::kDisplacement).converged);
   EXPECT_TRUE(c.Result(DofFamily::kMultiplier).converged);
 }

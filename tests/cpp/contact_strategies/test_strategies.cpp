@@ -31,9 +31,10 @@ using test::ContactProblem;
 using test::Obstacle;
 
 std::shared_ptr<MortarAndConvergenceCriteria> Criteria(ContactProblem& p, double tolerance = 1e-12) {
-  auto mechanical = std::make_shared<DisplacementLagrangeMultiplierContactCriteria>(Parameters(Concat(
-      R"({"displacement_relative_tolerance": )", tolerance, R"(, "displacement_absolute_tolerance": 0.0,
-          "contact_displacement_relative_tolerance": )", tolerance, R"(, "contact_displacement_absolute_tolerance": 0.0})")));
+  auto mechanical = std::make_shared<DisplacementLagrangeMultiplierContactCriteria>(Parameters(
+      Concat(R"({"displacement_relative_tolerance": )", tolerance, R"(, "displacement_absolute_tolerance": 0.0,
+          "contact_displacement_relative_tolerance": )",
+             tolerance, R"(, "contact_displacement_absolute_tolerance": 0.0})")));
   auto mortar = std::make_shared<ALMFrictionlessMortarConvergenceCriteria>();
   auto criteria = std::make_shared<MortarAndConvergenceCriteria>(mechanical, mortar);
   criteria->SetMortarUpdater(p.Updater());
@@ -192,9 +193,9 @@ TEST(ContactLineSearch, ParabolaStep) {
   // y = (x - 0.4)^2 + 0.1: r_o = 0.26, r_h = 0.11, r_f = 0.46 -> minimum at 0.4.
   EXPECT_NEAR(LineSearchContactStrategy::ParabolaStep(0.26, 0.11, 0.46, 0.1), 0.4, 1e-14);
   EXPECT_DOUBLE_EQ(LineSearchContactStrategy::ParabolaStep(0.26, 0.11, 0.46, 0.5), 0.5);  // clamped
-  EXPECT_DOUBLE_EQ(LineSearchContactStrategy::ParabolaStep(1.0, 0.5, 0.1, 0.1), 1.0);    // minimum beyond 1
-  EXPECT_DOUBLE_EQ(LineSearchContactStrategy::ParabolaStep(1.0, 0.9, 0.5, 0.1), 1.0);    // concave, decreasing
-  EXPECT_DOUBLE_EQ(LineSearchContactStrategy::ParabolaStep(1.0, 1.5, 1.2, 0.1), 0.1);    // concave, increasing
+  EXPECT_DOUBLE_EQ(LineSearchContactStrategy::ParabolaStep(1.0, 0.5, 0.1, 0.1), 1.0);     // minimum beyond 1
+  EXPECT_DOUBLE_EQ(LineSearchContactStrategy::ParabolaStep(1.0, 0.9, 0.5, 0.1), 1.0);     // concave, decreasing
+  EXPECT_DOUBLE_EQ(LineSearchContactStrategy::ParabolaStep(1.0, 1.5, 1.2, 0.1), 0.1);     // concave, increasing
   EXPECT_DOUBLE_EQ(LineSearchContactStrategy::ParabolaStep(0.0, 0.0, 0.0, 0.1), 1.0);
 }
 
@@ -260,7 +261,11 @@ struct Ramp {
     const ContactStrategySettings settings = ResidualBasedNewtonRaphsonContactStrategy::ReadSettings(
         Parameters(R"({"adaptative_strategy": true, )" + splitting + "}"));
     auto strategy = MakeStrategy(p, settings, 12, Criteria(p, 1e-10));
-    strategy->SetSubStepCallbacks({[this] { ++initialize_calls; ApplyLoad(); }, [this] { ++finalize_calls; }});
+    strategy->SetSubStepCallbacks({[this] {
+                                     ++initialize_calls;
+                                     ApplyLoad();
+                                   },
+                                   [this] { ++finalize_calls; }});
     return strategy;
   }
   // Starts the step at time t.

@@ -9,8 +9,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/utilities/error.h"
 #include "contact_utilities_test_helpers.h"
+#include "core/utilities/error.h"
 
 namespace mc {
 namespace {

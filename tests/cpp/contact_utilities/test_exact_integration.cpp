@@ -9,8 +9,8 @@
 #include <cmath>
 #include <vector>
 
-#include "core/utilities/error.h"
 #include "contact_utilities_test_helpers.h"
+#include "core/utilities/error.h"
 
 namespace mc {
 namespace {
@@ -35,8 +35,7 @@ std::vector<std::array<double, 3>> KratosRows(const MortarIntegrationPoints<doub
   return rows;
 }
 
-void ExpectRows(const std::vector<std::array<double, 3>>& got,
-                const std::vector<std::array<double, 3>>& expected) {
+void ExpectRows(const std::vector<std::array<double, 3>>& got, const std::vector<std::array<double, 3>>& expected) {
   ASSERT_EQ(got.size(), expected.size());
   for (size_t r = 0; r < got.size(); ++r)
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[r][c], expected[r][c], kTol) << "row " << r << " col " << c;
@@ -54,7 +53,8 @@ MortarIntegrationPoints<double, D, N1, N2> Segment(const typename MortarPairKine
                                                    int order) {
   using K = MortarPairKinematics<D, N1, N2>;
   MortarIntegrationPoints<double, D, N1, N2> points;
-  EXPECT_TRUE((ExactMortarIntegrationUtility<D, N1, N2>::Compute(x1, x2, ConditionNormals<K>(x1), Order(order), points)));
+  EXPECT_TRUE(
+      (ExactMortarIntegrationUtility<D, N1, N2>::Compute(x1, x2, ConditionNormals<K>(x1), Order(order), points)));
   return points;
 }
 
@@ -94,8 +94,7 @@ TEST(ExactMortarIntegration, Line2D_L2_2_HalfOverlap) {
 
 TEST(ExactMortarIntegration, Line2D_L2_3_InclinedSlave) {
   const auto k = Pair2D({0, -0.5, 1, 0.5}, {0, 0.5, 1, 0.5}, 2);
-  ExpectRows(KratosRows(k), {{0.21132486540517847, 1 / std::sqrt(2.0), 0},
-                             {0.7886751345948, 1 / std::sqrt(2.0), 0}});
+  ExpectRows(KratosRows(k), {{0.21132486540517847, 1 / std::sqrt(2.0), 0}, {0.7886751345948, 1 / std::sqrt(2.0), 0}});
   EXPECT_NEAR(k.area, std::sqrt(2.0) / 2, kTol);
 }
 
@@ -134,8 +133,8 @@ TEST(ExactMortarIntegration, Triangle_T3_2_Crossed) {
 }
 
 TEST(ExactMortarIntegration, Triangle_T3_3_AllPairings) {
-  const Eigen::Vector3d p[9] = {{0, 0, 0},       {0, 0, 0},       {1, 0, 0},      {0, 1, 0},     {1, 1, 0},
-                                {0, 0, 0.01},    {1, 0, 0.01},    {0, 1, 0.01},   {1, 1, 0.01}};
+  const Eigen::Vector3d p[9] = {{0, 0, 0},    {0, 0, 0},    {1, 0, 0},    {0, 1, 0},   {1, 1, 0},
+                                {0, 0, 0.01}, {1, 0, 0.01}, {0, 1, 0.01}, {1, 1, 0.01}};
   auto tri = [&](int a, int b, int c) {
     K33::SlaveMatrix m;
     m.row(0) = p[a].transpose();
@@ -156,17 +155,25 @@ TEST(ExactMortarIntegration, Quadrilateral_Q4_1_Identical) {
   const auto k = Pair3D<4, 4>(Rows<K44::SlaveMatrix>({0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0}),
                               Rows<K44::MasterMatrix>({0, 0, 0.01, 1, 0, 0.01, 1, 1, 0.01, 0, 1, 0.01}));
   const double w = 1.0 / 6;
-  ExpectRows(KratosRows(k), {{-1. / 3, -2. / 3, w}, {2. / 3, -2. / 3, w}, {2. / 3, 1. / 3, w},
-                             {-2. / 3, -1. / 3, w}, {1. / 3, 2. / 3, w}, {-2. / 3, 2. / 3, w}});
+  ExpectRows(KratosRows(k), {{-1. / 3, -2. / 3, w},
+                             {2. / 3, -2. / 3, w},
+                             {2. / 3, 1. / 3, w},
+                             {-2. / 3, -1. / 3, w},
+                             {1. / 3, 2. / 3, w},
+                             {-2. / 3, 2. / 3, w}});
 }
 
 TEST(ExactMortarIntegration, Quadrilateral_Q4_2_Shifted) {
-  const auto k = Pair3D<4, 4>(
-      Rows<K44::SlaveMatrix>({0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0}),
-      Rows<K44::MasterMatrix>({0.5, 0.5, 0.01, 1.5, 0.5, 0.01, 1.5, 1.5, 0.01, 0.5, 1.5, 0.01}));
+  const auto k =
+      Pair3D<4, 4>(Rows<K44::SlaveMatrix>({0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0}),
+                   Rows<K44::MasterMatrix>({0.5, 0.5, 0.01, 1.5, 0.5, 0.01, 1.5, 1.5, 0.01, 0.5, 1.5, 0.01}));
   const double w = 1.0 / 24;
-  ExpectRows(KratosRows(k), {{2. / 6, 1. / 6, w}, {5. / 6, 1. / 6, w}, {5. / 6, 4. / 6, w},
-                             {1. / 6, 2. / 6, w}, {4. / 6, 5. / 6, w}, {1. / 6, 5. / 6, w}});
+  ExpectRows(KratosRows(k), {{2. / 6, 1. / 6, w},
+                             {5. / 6, 1. / 6, w},
+                             {5. / 6, 4. / 6, w},
+                             {1. / 6, 2. / 6, w},
+                             {4. / 6, 5. / 6, w},
+                             {1. / 6, 5. / 6, w}});
   // Master local coordinates of the first point: physical (0.6667, 0.5833) -> master
   // xi = 2(x-0.5)-1, eta = 2(y-0.5)-1.
   EXPECT_NEAR(k.points.points[0].master_local(0), 2 * (0.5 * (1 + 2. / 6) - 0.5) - 1, kTol);

@@ -9,10 +9,10 @@
 #include <cmath>
 #include <vector>
 
+#include "contact_utilities_test_helpers.h"
 #include "core/geometries/geometry_type.h"
 #include "core/geometries/reference_element.h"
 #include "custom_utilities/dual_lagrange_multiplier.h"
-#include "contact_utilities_test_helpers.h"
 
 namespace mc {
 namespace {
@@ -158,8 +158,8 @@ Assembled Init(const Mesh& slave, const Mesh& master) {
 
 // Structured grid on [x0,x1]x[y0,y1] at height z, perturbed interior nodes, quads or triangles;
 // `reverse` lists nodes clockwise (normal -z).
-Mesh Grid(int nx, int ny, double x0, double x1, double y0, double y1, double z, bool triangles,
-          bool reverse, double perturb) {
+Mesh Grid(int nx, int ny, double x0, double x1, double y0, double y1, double z, bool triangles, bool reverse,
+          double perturb) {
   Mesh m;
   for (int j = 0; j <= ny; ++j)
     for (int i = 0; i <= nx; ++i) {
@@ -297,12 +297,11 @@ TEST(MortarOperator, WeightedGapSignAndRigidMotionInvariance) {
   for (int j = 0; j < 3; ++j) EXPECT_GT(k.weighted_gap(j), 0.0) << "node " << j;
   EXPECT_LT(k.weighted_gap(3), 0.0);
 
-  const Eigen::Matrix3d R =
-      (Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, -0.5).normalized())).toRotationMatrix();
+  const Eigen::Matrix3d R = (Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, -0.5).normalized())).toRotationMatrix();
   const Eigen::RowVector3d t(3.0, -1.5, 2.2);
   K r;
-  ASSERT_TRUE(r.Compute((x1 * R.transpose()).rowwise() + t, (x2 * R.transpose()).rowwise() + t, n1 * R.transpose(),
-                        Order(3)));
+  ASSERT_TRUE(
+      r.Compute((x1 * R.transpose()).rowwise() + t, (x2 * R.transpose()).rowwise() + t, n1 * R.transpose(), Order(3)));
   EXPECT_LT((r.D - k.D).cwiseAbs().maxCoeff(), 1e-12);
   EXPECT_LT((r.M - k.M).cwiseAbs().maxCoeff(), 1e-12);
   EXPECT_LT((r.weighted_gap - k.weighted_gap).cwiseAbs().maxCoeff(), 1e-12);
@@ -346,10 +345,9 @@ TEST(MortarOperator, MortarMapping_MAP_P1_Triangle) {
   const auto x2 = Rows<Eigen::Matrix3d>({0, 0, 0.1, 1, 0, 0.1, 0, 1, 0.2});
   const auto mapped = MapPair<3>(x1, x2);
   // Rows = slave nodes 3, 2, 1; columns T, DISP_X, DISP_Y, DISP_Z.
-  const double expected[3][4] = {
-      {0.19900990099009902, 0.0, 0.9900990099009901, 0.19900990099009902},
-      {0.09900990099009903, 1.0, -0.009900990099009833, 0.09900990099009903},
-      {0.09900990099009897, 0.0, -0.009900990099009983, 0.09900990099009897}};
+  const double expected[3][4] = {{0.19900990099009902, 0.0, 0.9900990099009901, 0.19900990099009902},
+                                 {0.09900990099009903, 1.0, -0.009900990099009833, 0.09900990099009903},
+                                 {0.09900990099009897, 0.0, -0.009900990099009983, 0.09900990099009897}};
   for (int j = 0; j < 3; ++j)
     for (int c = 0; c < 4; ++c) EXPECT_NEAR(mapped(j, c), expected[j][c], 1e-12) << j << "," << c;
 }
@@ -358,11 +356,10 @@ TEST(MortarOperator, MortarMapping_MAP_P2_Quadrilateral) {
   const auto x1 = Rows<Eigen::Matrix<double, 4, 3>>({0, 1, 0.1, 1, 1, 0.1, 1, 0, 0, 0, 0, 0});  // [4,3,2,1]
   const auto x2 = Rows<Eigen::Matrix<double, 4, 3>>({0, 0, 0.1, 1, 0, 0.1, 1, 1, 0.2, 0, 1, 0.2});
   const auto mapped = MapPair<4>(x1, x2);
-  const double expected[4][4] = {
-      {0.19900990099009902, 0.0, 0.9900990099009899, 0.19900990099009902},
-      {0.19900990099009894, 1.0, 0.9900990099009899, 0.19900990099009894},
-      {0.099009900990099, 1.0, -0.009900990099009972, 0.099009900990099},
-      {0.09900990099009901, 0.0, -0.0099009900990098, 0.09900990099009901}};
+  const double expected[4][4] = {{0.19900990099009902, 0.0, 0.9900990099009899, 0.19900990099009902},
+                                 {0.19900990099009894, 1.0, 0.9900990099009899, 0.19900990099009894},
+                                 {0.099009900990099, 1.0, -0.009900990099009972, 0.099009900990099},
+                                 {0.09900990099009901, 0.0, -0.0099009900990098, 0.09900990099009901}};
   for (int j = 0; j < 4; ++j)
     for (int c = 0; c < 4; ++c) EXPECT_NEAR(mapped(j, c), expected[j][c], 1e-12) << j << "," << c;
 }

@@ -55,11 +55,12 @@ Array3 Affine(int working_dim, const Array3& x) {
 // A nonlinear term inside the polynomial space of each type, so the element reproduces it.
 Array3 Distortion(GeometryType type, const Array3& x) {
   const ReferenceElement& ref = ReferenceElement::Get(type);
-  const bool quadratic = ref.NodesNumber() > (ref.Family() == GeometryFamily::Line ? 2
-                                              : ref.Family() == GeometryFamily::Triangle ? 3
+  const bool quadratic = ref.NodesNumber() > (ref.Family() == GeometryFamily::Line            ? 2
+                                              : ref.Family() == GeometryFamily::Triangle      ? 3
                                               : ref.Family() == GeometryFamily::Quadrilateral ? 4
-                                              : ref.Family() == GeometryFamily::Tetrahedron ? 4
-                                              : ref.Family() == GeometryFamily::Hexahedron ? 8 : 6);
+                                              : ref.Family() == GeometryFamily::Tetrahedron   ? 4
+                                              : ref.Family() == GeometryFamily::Hexahedron    ? 8
+                                                                                              : 6);
   const bool in_3d = ref.WorkingSpaceDimension() == 3;
   const double a = 0.1;
   Array3 d = Array3::Zero();
@@ -81,11 +82,8 @@ Array3 Distortion(GeometryType type, const Array3& x) {
       d = Array3(a * x[0] * x[1], a * x[1] * x[2], a * x[2] * x[0]);
       if (quadratic) d += Array3(a * x[1] * x[1], a * x[2] * x[2], a * x[0] * x[0]);
       break;
-    case GeometryFamily::Prism:
-      d = Array3(a * x[0] * x[2], a * x[1] * x[2], a * x[0]);
-      break;
-    default:
-      break;
+    case GeometryFamily::Prism: d = Array3(a * x[0] * x[2], a * x[1] * x[2], a * x[0]); break;
+    default: break;
   }
   return d;
 }
@@ -146,11 +144,13 @@ TEST(Geometry, AffineJacobianAndDomainSizeAreExact) {
       EXPECT_LT((J - A.topLeftCorner(wd, ld)).norm(), 1e-13) << ref.Name();
     }
     EXPECT_LT((g->Center() - Affine(wd, Array3::Zero()) -
-               A * [&] {
-                 Array3 mean = Array3::Zero();
-                 for (const Array3& x : ref.NodesLocalCoordinates()) mean += x;
-                 return Array3(mean / ref.NodesNumber());
-               }()).norm(),
+               A *
+                   [&] {
+                     Array3 mean = Array3::Zero();
+                     for (const Array3& x : ref.NodesLocalCoordinates()) mean += x;
+                     return Array3(mean / ref.NodesNumber());
+                   }())
+                  .norm(),
               1e-13)
         << ref.Name();
   }
@@ -205,7 +205,8 @@ TEST(Geometry, DistortedDomainSizesAgainstClosedForms) {
       return corners[i];
     });
     double shoelace = 0.0;
-    for (int i = 0; i < 4; ++i) shoelace += corners[i][0] * corners[(i + 1) % 4][1] - corners[(i + 1) % 4][0] * corners[i][1];
+    for (int i = 0; i < 4; ++i)
+      shoelace += corners[i][0] * corners[(i + 1) % 4][1] - corners[(i + 1) % 4][0] * corners[i][1];
     EXPECT_NEAR(g->DomainSize(), 0.5 * shoelace, 1e-14);
   }
   // Trilinear hexahedron between two parallel planar quadrilaterals: prismatoid formula.
@@ -277,7 +278,8 @@ TEST(Geometry, PointLocalCoordinatesRoundTrip) {
 }
 
 TEST(Geometry, UnitNormalsOfACounterClockwiseSquarePointOutwards) {
-  MappedGeometry square(GT::Quadrilateral2D4, [](const Array3& x) { return Array3(0.5 * (x[0] + 1), 0.5 * (x[1] + 1), 0); });
+  MappedGeometry square(GT::Quadrilateral2D4,
+                        [](const Array3& x) { return Array3(0.5 * (x[0] + 1), 0.5 * (x[1] + 1), 0); });
   const Array3 expected[4] = {Array3(0, -1, 0), Array3(1, 0, 0), Array3(0, 1, 0), Array3(-1, 0, 0)};
   const auto faces = square->Faces();
   ASSERT_EQ(faces.size(), 4u);
@@ -314,9 +316,8 @@ TEST(Geometry, FacesCloseTheBoundaryAndPointOutwards) {
       const auto& points = face.IntegrationPoints(5);
       for (std::size_t q = 0; q < points.size(); ++q) {
         face.Jacobian(face.ShapeFunctionsLocalGradients(5)[q], J);
-        const Array3 n = face.LocalSpaceDimension() == 1
-                             ? Array3(J(1, 0), -J(0, 0), 0.0)
-                             : Array3(Array3(J.col(0)).cross(Array3(J.col(1))));
+        const Array3 n = face.LocalSpaceDimension() == 1 ? Array3(J(1, 0), -J(0, 0), 0.0)
+                                                         : Array3(Array3(J.col(0)).cross(Array3(J.col(1))));
         total += points[q].weight * n;
       }
       face_area += face.DomainSize();

@@ -86,7 +86,8 @@ TEST(Quadrature, RulesArePositiveInsideAndSumToTheReferenceMeasure) {
         EXPECT_TRUE(ref.IsInside(p.local, 0.0)) << ref.Name() << " order " << order << " point " << p.local.transpose();
         sum += p.weight;
       }
-      EXPECT_NEAR(sum, test::ReferenceMeasure(f.family), 2e-15 * test::ReferenceMeasure(f.family)) << ref.Name() << " order " << order;
+      EXPECT_NEAR(sum, test::ReferenceMeasure(f.family), 2e-15 * test::ReferenceMeasure(f.family))
+          << ref.Name() << " order " << order;
     }
   }
 }
@@ -148,7 +149,8 @@ TEST(Quadrature, NotExactOneDegreeBeyondTheLimit) {
         for (int b = 0; a + b <= p; ++b) {
           const int c = p - a - b;
           if (dim == 2 && c != 0) continue;
-          worst = std::max(worst, std::abs(RuleMonomialIntegral(rule, a, b, c) - ExactMonomialIntegral(family, a, b, c)));
+          worst =
+              std::max(worst, std::abs(RuleMonomialIntegral(rule, a, b, c) - ExactMonomialIntegral(family, a, b, c)));
         }
       EXPECT_GT(worst, 1e-8) << "family " << dim << "D simplex order " << order;
     }

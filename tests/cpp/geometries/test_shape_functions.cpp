@@ -85,7 +85,8 @@ TEST(ReferenceElement, KroneckerPropertyAndPartitionOfUnity) {
     for (int j = 0; j < n; ++j) {
       ref.ShapeFunctionsValues(ref.NodesLocalCoordinates()[j], N);
       ASSERT_EQ(N.size(), n);
-      for (int i = 0; i < n; ++i) EXPECT_NEAR(N[i], i == j ? 1.0 : 0.0, 1e-14) << ref.Name() << " N" << i << " at node " << j;
+      for (int i = 0; i < n; ++i)
+        EXPECT_NEAR(N[i], i == j ? 1.0 : 0.0, 1e-14) << ref.Name() << " N" << i << " at node " << j;
     }
     for (const Array3& x : SamplePoints(ref)) {
       ref.ShapeFunctionsValues(x, N);
@@ -186,12 +187,14 @@ TEST(ReferenceElement, FacesListTheNodesOfTheirTypeInTheirOrdering) {
       double N[ReferenceElement::kMaxNodes], dN[3 * ReferenceElement::kMaxNodes];
       for (int j = 0; j < face_ref.NodesNumber(); ++j) {
         Array3 expected = Array3::Zero();
-        const int corners = face_ref.Family() == GeometryFamily::Triangle ? 3
+        const int corners = face_ref.Family() == GeometryFamily::Triangle        ? 3
                             : face_ref.Family() == GeometryFamily::Quadrilateral ? 4
-                            : face_ref.Family() == GeometryFamily::Line ? 2 : 1;
-        const GeometryType linear = corners == 3 ? GeometryType::Triangle3D3
+                            : face_ref.Family() == GeometryFamily::Line          ? 2
+                                                                                 : 1;
+        const GeometryType linear = corners == 3   ? GeometryType::Triangle3D3
                                     : corners == 4 ? GeometryType::Quadrilateral3D4
-                                    : corners == 2 ? GeometryType::Line3D2 : GeometryType::Point3D;
+                                    : corners == 2 ? GeometryType::Line3D2
+                                                   : GeometryType::Point3D;
         ReferenceElement::Get(linear).Evaluate(face_ref.NodesLocalCoordinates()[j], N, dN);
         for (int c = 0; c < corners; ++c) expected += N[c] * ref.NodesLocalCoordinates()[face.nodes[c]];
         EXPECT_LT((expected - ref.NodesLocalCoordinates()[face.nodes[j]]).norm(), 1e-15)

@@ -58,13 +58,17 @@ void RegisterCondition(const std::string& name) {
       name, std::make_shared<NamedEntity<Condition>>(name, 0, Geometry(GeometryTypeOfName(name, true), {}), nullptr));
 }
 
-void RegisterLaw(const std::string& name) { Registry<ConstitutiveLaw>::Instance().Add(name, std::make_shared<NamedLaw>(name)); }
+void RegisterLaw(const std::string& name) {
+  Registry<ConstitutiveLaw>::Instance().Add(name, std::make_shared<NamedLaw>(name));
+}
 
 void RegisterEntitiesNamedIn(const std::string& mdpa_text) {
   static const std::regex block("Begin[ \\t]+(Elements|Conditions)[ \\t]+([A-Za-z0-9_]+)");
   for (auto it = std::sregex_iterator(mdpa_text.begin(), mdpa_text.end(), block); it != std::sregex_iterator(); ++it) {
-    if ((*it)[1] == "Elements") RegisterElement((*it)[2]);
-    else RegisterCondition((*it)[2]);
+    if ((*it)[1] == "Elements")
+      RegisterElement((*it)[2]);
+    else
+      RegisterCondition((*it)[2]);
   }
 }
 
@@ -108,7 +112,8 @@ bool SameValue(const DataValueContainer::Value& a, const DataValueContainer::Val
 void ExpectSameData(const DataValueContainer& a, const DataValueContainer& b, const std::string& where) {
   ASSERT_EQ(a.Size(), b.Size()) << where;
   for (const auto& [var, value] : a.Items()) {
-    const auto it = std::find_if(b.Items().begin(), b.Items().end(), [&](const auto& item) { return item.first == var; });
+    const auto it =
+        std::find_if(b.Items().begin(), b.Items().end(), [&](const auto& item) { return item.first == var; });
     ASSERT_NE(it, b.Items().end()) << where << ": " << var->Name() << " missing";
     EXPECT_TRUE(SameValue(value, it->second)) << where << ": " << var->Name() << " differs";
   }

@@ -7,10 +7,10 @@
 
 #include "core/io/materials_reader.h"
 #include "core/io/mdpa_reader.h"
-#include "core/model/registry.h"
-#include "core/utilities/logger.h"
 #include "core/model/model.h"
+#include "core/model/registry.h"
 #include "core/parameters/parameters.h"
+#include "core/utilities/logger.h"
 #include "core/variables/kernel_variables.h"
 #include "io_test_utilities.h"
 
@@ -29,8 +29,10 @@ TEST(MaterialsReader, AppliesEverySharedCaseMaterialsFile) {
     SCOPED_TRACE(parameters_file);
     const nlohmann::json settings = nlohmann::json::parse(test::ReadFile(parameters_file));
     const auto& solver = settings["solver_settings"];
-    const std::string root_name = solver.value("model_part_name", settings["problem_data"].value("model_part_name", ""));
-    const std::string mdpa = test::CasesDir() + "/" + solver["model_import_settings"]["input_filename"].get<std::string>() + ".mdpa";
+    const std::string root_name =
+        solver.value("model_part_name", settings["problem_data"].value("model_part_name", ""));
+    const std::string mdpa =
+        test::CasesDir() + "/" + solver["model_import_settings"]["input_filename"].get<std::string>() + ".mdpa";
     const std::string materials_file =
         test::CasesDir() + "/" + solver["material_import_settings"]["materials_filename"].get<std::string>();
     test::RegisterEntitiesNamedIn(test::ReadFile(mdpa));
@@ -54,7 +56,8 @@ TEST(MaterialsReader, AppliesEverySharedCaseMaterialsFile) {
       const auto& variables = entry["Material"]["Variables"];
       ASSERT_TRUE(root.HasProperties(id));
       const Properties& properties = root.GetProperties(id);
-      EXPECT_EQ(properties.GetConstitutiveLaw()->Name(), entry["Material"]["constitutive_law"]["name"].get<std::string>());
+      EXPECT_EQ(properties.GetConstitutiveLaw()->Name(),
+                entry["Material"]["constitutive_law"]["name"].get<std::string>());
       EXPECT_EQ(properties.GetValue(YOUNG_MODULUS), variables["YOUNG_MODULUS"].get<double>());
       EXPECT_EQ(properties.GetValue(POISSON_RATIO), variables["POISSON_RATIO"].get<double>());
       if (variables.contains("FRICTION_COEFFICIENT")) {
@@ -62,7 +65,8 @@ TEST(MaterialsReader, AppliesEverySharedCaseMaterialsFile) {
       }
       EXPECT_GT(part.NumberOfElements() + part.NumberOfConditions(), 0u);
       for (const Element* e : part.Elements()) EXPECT_EQ(e->pGetProperties(), &properties) << "element " << e->Id();
-      for (const Condition* c : part.Conditions()) EXPECT_EQ(c->pGetProperties(), &properties) << "condition " << c->Id();
+      for (const Condition* c : part.Conditions())
+        EXPECT_EQ(c->pGetProperties(), &properties) << "condition " << c->Id();
     }
     ++cases;
   }
@@ -130,7 +134,8 @@ TEST_F(MaterialsFixture, ErrorsNameTheKeyAndTheNearestName) {
   };
   const std::vector<Case> cases = {
       {R"({"model_part_name": "Structure.Prts", "properties_id": 1})", {"mat.json", "model_part_name", "Parts"}},
-      {R"({"model_part_name": "Structure.Parts", "properties_idd": 1})", {"mat.json", "properties_idd", "properties_id"}},
+      {R"({"model_part_name": "Structure.Parts", "properties_idd": 1})",
+       {"mat.json", "properties_idd", "properties_id"}},
       {"{" + part + R"(, "Material": {"Variables": {"YOUNG_MODULOS": 1.0}}})",
        {"mat.json", "Variables.YOUNG_MODULOS", "YOUNG_MODULUS"}},
       {"{" + part + R"(, "Material": {"Variable": {}}})", {"mat.json", "Variable", "Variables"}},
@@ -140,7 +145,8 @@ TEST_F(MaterialsFixture, ErrorsNameTheKeyAndTheNearestName) {
        {"mat.json", "YOUNG_MODULUS", "expected a number", "steel"}},
       {"{" + part + R"(, "Material": {"Variables": {"VOLUME_ACCELERATION": [1, 2]}}})",
        {"mat.json", "VOLUME_ACCELERATION", "3 numbers"}},
-      {"{" + part + R"(, "Material": {"Tables": {"t": {"input_variable": "TIME", "output_variable": "PRESURE", "data": []}}}})",
+      {"{" + part +
+           R"(, "Material": {"Tables": {"t": {"input_variable": "TIME", "output_variable": "PRESURE", "data": []}}}})",
        {"mat.json", "output_variable", "PRESSURE"}},
       {R"({"model_part_name": "Structure.Parts", "properties_id": -1})", {"mat.json", "properties_id", "-1"}},
   };

@@ -114,7 +114,8 @@ TEST(MdpaReader, ReadsEverySharedCase) {
     EXPECT_EQ(root.NumberOfConditions(), scan.conditions);
     EXPECT_EQ(CountSubModelParts(root), scan.sub_model_parts);
     for (const auto& [id, x] : scan.coordinates) EXPECT_EQ(root.GetNode(id).X0(), x) << "node " << id;
-    for (const auto& [name, ids] : scan.sub_nodes) EXPECT_EQ(root.GetSubModelPart(name).NumberOfNodes(), ids.size()) << name;
+    for (const auto& [name, ids] : scan.sub_nodes)
+      EXPECT_EQ(root.GetSubModelPart(name).NumberOfNodes(), ids.size()) << name;
     for (const auto& [name, ids] : scan.sub_elements)
       EXPECT_EQ(root.GetSubModelPart(name).NumberOfElements(), ids.size()) << name;
     const std::string relative = path.substr(CasesDir().size() + 1);
@@ -365,38 +366,52 @@ TEST(MdpaReader, MalformedInputNamesFileLineAndText) {
       {"text outside blocks", "Nodes\n", {"bad.mdpa:1:", "expected 'Begin <block>'", "'Nodes'"}},
       {"missing End", "\nBegin Nodes\n1 0 0 0\n", {"bad.mdpa:2:", "End Nodes", "'Begin Nodes'"}},
       {"wrong End", "Begin Nodes\n1 0 0 0\nEnd Elements\n", {"bad.mdpa:3:", "'End Elements'", "End Nodes"}},
-      {"missing node", Mesh("Begin Elements SmallDisplacementElement2D4N\n12 0 1 2 3 99\nEnd Elements\n"),
+      {"missing node",
+       Mesh("Begin Elements SmallDisplacementElement2D4N\n12 0 1 2 3 99\nEnd Elements\n"),
        {"bad.mdpa:8:", "element 12 refers to node 99, which does not exist", "'12 0 1 2 3 99'"}},
-      {"unknown element", Mesh("Begin Elements SmallDisplacementElement2D4\n1 0 1 2 3 4\nEnd Elements\n"),
+      {"unknown element",
+       Mesh("Begin Elements SmallDisplacementElement2D4\n1 0 1 2 3 4\nEnd Elements\n"),
        {"bad.mdpa:7:", "SmallDisplacementElement2D4N", "'SmallDisplacementElement2D4'"}},
-      {"unknown condition", Mesh("Begin Conditions LineLoadCondition2D\n1 0 1 2\nEnd Conditions\n"),
+      {"unknown condition",
+       Mesh("Begin Conditions LineLoadCondition2D\n1 0 1 2\nEnd Conditions\n"),
        {"bad.mdpa:7:", "LineLoadCondition2D2N", "'LineLoadCondition2D'"}},
-      {"wrong node count", Mesh("Begin Elements SmallDisplacementElement2D4N\n1 0 1 2 3\nEnd Elements\n"),
+      {"wrong node count",
+       Mesh("Begin Elements SmallDisplacementElement2D4N\n1 0 1 2 3\nEnd Elements\n"),
        {"bad.mdpa:8:", "expected 4 node ids", "'1 0 1 2 3'"}},
-      {"bad node id", Mesh("Begin Conditions LineLoadCondition2D2N\n1 0 1 x2\nEnd Conditions\n"),
+      {"bad node id",
+       Mesh("Begin Conditions LineLoadCondition2D2N\n1 0 1 x2\nEnd Conditions\n"),
        {"bad.mdpa:8:", "node id of condition 1", "'x2'"}},
-      {"duplicate node", "Begin Nodes\n1 0 0 0\n2 0 0 0\n1 0 0 0\nEnd Nodes\n",
+      {"duplicate node",
+       "Begin Nodes\n1 0 0 0\n2 0 0 0\n1 0 0 0\nEnd Nodes\n",
        {"bad.mdpa:4:", "node 1 is defined at lines 2 and 4", "'1'"}},
       {"duplicate element",
        Mesh("Begin Elements SmallDisplacementElement2D4N\n1 0 1 2 3 4\n1 0 1 2 3 4\nEnd Elements\n"),
        {"bad.mdpa:9:", "element 1", "defined twice", "'1 0 1 2 3 4'"}},
-      {"nodal data unknown node", Mesh("Begin NodalData DISPLACEMENT_X\n77 1 0.5\nEnd NodalData\n"),
+      {"nodal data unknown node",
+       Mesh("Begin NodalData DISPLACEMENT_X\n77 1 0.5\nEnd NodalData\n"),
        {"bad.mdpa:8:", "node 77 does not exist", "'77 1 0.5'"}},
-      {"nodal data unknown variable", Mesh("Begin NodalData DISPLACEMENT_XX\n1 1 0.5\nEnd NodalData\n"),
+      {"nodal data unknown variable",
+       Mesh("Begin NodalData DISPLACEMENT_XX\n1 1 0.5\nEnd NodalData\n"),
        {"bad.mdpa:7:", "DISPLACEMENT_X", "'DISPLACEMENT_XX'"}},
-      {"nodal data bad fixity", Mesh("Begin NodalData DISPLACEMENT_X\n1 2 0.5\nEnd NodalData\n"),
+      {"nodal data bad fixity",
+       Mesh("Begin NodalData DISPLACEMENT_X\n1 2 0.5\nEnd NodalData\n"),
        {"bad.mdpa:8:", "fixity flag", "'2'"}},
-      {"nodal data bad value", Mesh("Begin NodalData DISPLACEMENT\n1 0 [3](1,2)\nEnd NodalData\n"),
+      {"nodal data bad value",
+       Mesh("Begin NodalData DISPLACEMENT\n1 0 [3](1,2)\nEnd NodalData\n"),
        {"bad.mdpa:8:", "[3](x,y,z)", "'[3](1,2)'"}},
-      {"property bad number", "Begin Properties 1\n  YOUNG_MODULUS 2.1e11x\nEnd Properties\n",
+      {"property bad number",
+       "Begin Properties 1\n  YOUNG_MODULUS 2.1e11x\nEnd Properties\n",
        {"bad.mdpa:2:", "'2.1e11x'", "YOUNG_MODULUS"}},
-      {"property unknown variable", "Begin Properties 1\n  YOUNG_MODULOS 1.0\nEnd Properties\n",
+      {"property unknown variable",
+       "Begin Properties 1\n  YOUNG_MODULOS 1.0\nEnd Properties\n",
        {"bad.mdpa:2:", "YOUNG_MODULUS", "'YOUNG_MODULOS'"}},
       {"properties id", "Begin Properties one\nEnd Properties\n", {"bad.mdpa:1:", "properties id", "'one'"}},
-      {"table not increasing", "Begin Table 1 TIME PRESSURE\n0 1\n2 3\n1 4\nEnd Table\n",
+      {"table not increasing",
+       "Begin Table 1 TIME PRESSURE\n0 1\n2 3\n1 4\nEnd Table\n",
        {"bad.mdpa:4:", "increasing", "'1'"}},
       {"table odd count", "Begin Table 1 TIME PRESSURE\n0 1 2\nEnd Table\n", {"bad.mdpa:2:", "pairs"}},
-      {"elemental data missing element", Mesh("Begin ElementalData THICKNESS\n5 1.0\nEnd ElementalData\n"),
+      {"elemental data missing element",
+       Mesh("Begin ElementalData THICKNESS\n5 1.0\nEnd ElementalData\n"),
        {"bad.mdpa:8:", "element 5 does not exist", "'5 1.0'"}},
       {"sub model part missing node",
        Mesh("Begin SubModelPart Part\nBegin SubModelPartNodes\n1 2 42\nEnd SubModelPartNodes\nEnd SubModelPart\n"),
@@ -404,7 +419,8 @@ TEST(MdpaReader, MalformedInputNamesFileLineAndText) {
       {"sub model part unknown block",
        Mesh("Begin SubModelPart Part\nBegin SubModelPartNode\nEnd SubModelPartNode\nEnd SubModelPart\n"),
        {"bad.mdpa:8:", "did you mean 'SubModelPartNodes'", "'Begin SubModelPartNode'"}},
-      {"sub model part not closed", Mesh("Begin SubModelPart Part\nBegin SubModelPartNodes\n1\nEnd SubModelPartNodes\n"),
+      {"sub model part not closed",
+       Mesh("Begin SubModelPart Part\nBegin SubModelPartNodes\n1\nEnd SubModelPartNodes\n"),
        {"bad.mdpa:7:", "End SubModelPart", "'Begin SubModelPart Part'"}},
   };
   for (const BadCase& bad : cases) {
@@ -434,7 +450,8 @@ TEST(MdpaReader, ThroughputOnSyntheticMesh) {
   std::string nodes = "Begin Nodes\n";
   for (std::size_t j = 0; j < ny; ++j)
     for (std::size_t i = 0; i < nx; ++i)
-      nodes += std::to_string(j * nx + i + 1) + " " + std::to_string(0.125 * i) + " " + std::to_string(0.25 * j) + " 0.0\n";
+      nodes +=
+          std::to_string(j * nx + i + 1) + " " + std::to_string(0.125 * i) + " " + std::to_string(0.25 * j) + " 0.0\n";
   nodes += "End Nodes\n";
   std::string elements = "Begin Elements SmallDisplacementElement2D4N\n";
   std::size_t id = 0;

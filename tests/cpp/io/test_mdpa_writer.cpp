@@ -145,9 +145,8 @@ TEST(MdpaWriter, FailedWriteLeavesPreviousFileAndNoTemporary) {
   Node& a = root.CreateNewNode(1, 0, 0, 0);
   Node& b = root.CreateNewNode(2, 1, 0, 0);
   Node& c = root.CreateNewNode(3, 0, 1, 0);
-  root.AddElement(std::make_unique<UnregisteredElement>("NotARegisteredName2D3N", 1,
-                                                        Geometry(GeometryType::Triangle2D3, {&a, &b, &c}),
-                                                        &root.GetOrCreateProperties(0)));
+  root.AddElement(std::make_unique<UnregisteredElement>(
+      "NotARegisteredName2D3N", 1, Geometry(GeometryType::Triangle2D3, {&a, &b, &c}), &root.GetOrCreateProperties(0)));
   try {
     MdpaWriter(path).Write(root);
     ADD_FAILURE() << "no error";

@@ -38,7 +38,8 @@ void ExpectExactSolve(LinearSolver& solver, const SparseMatrix& A) {
 SparseMatrix ChangedValues(const SparseMatrix& A) {
   SparseMatrix B = A;
   for (int j = 0; j < B.outerSize(); ++j) {
-    for (SparseMatrix::InnerIterator it(B, j); it; ++it) it.valueRef() = it.row() == j ? it.value() + 0.5 : 0.9 * it.value();
+    for (SparseMatrix::InnerIterator it(B, j); it; ++it)
+      it.valueRef() = it.row() == j ? it.value() + 0.5 : 0.9 * it.value();
   }
   return B;
 }

@@ -59,7 +59,8 @@ TEST(IterativeSolvers, ConjugateGradientOnPoisson) {
 TEST(IterativeSolvers, BicgstabAndGmresOnConvectionDiffusion) {
   const SparseMatrix A = testing::ConvectionDiffusion2D(kGrid);
   for (Method m : {Method::kBicgstab, Method::kGmres}) {
-    for (Preconditioner p : {Preconditioner::kNone, Preconditioner::kDiagonal, Preconditioner::kIlu0, Preconditioner::kIlu}) {
+    for (Preconditioner p :
+         {Preconditioner::kNone, Preconditioner::kDiagonal, Preconditioner::kIlu0, Preconditioner::kIlu}) {
       ExpectConverged(m, p, A);
     }
   }

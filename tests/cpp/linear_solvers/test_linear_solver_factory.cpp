@@ -71,18 +71,30 @@ TEST(LinearSolverFactory, NormalisesEveryKratosSpelling) {
 
 TEST(LinearSolverFactory, MapsNamesToOurSolvers) {
   const std::vector<std::pair<std::string, std::string>> table = {
-      {"skyline_lu_factorization", "umfpack"}, {"SkylineLUFactorizationSolver", "umfpack"},
-      {"sparse_lu", "umfpack"},                {"LinearSolversApplication.sparse_lu", "umfpack"},
-      {"pardiso_lu", "umfpack"},               {"super_lu", "umfpack"},
-      {"pastix", "umfpack"},                   {"mumps", "umfpack"},
-      {"umfpack", "umfpack"},                  {"pardiso_ldlt", "umfpack"},
-      {"eigen_sparse_lu", "umfpack"},          {"klu", "klu"},
-      {"cholmod", "cholmod"},                  {"pardiso_llt", "cholmod"},
-      {"sparse_lu_eigen", "sparse_lu_eigen"},  {"cg", "cg"},
-      {"deflated_cg", "cg"},                   {"CGSolver", "cg"},
-      {"bicgstab", "bicgstab"},                {"tfqmr", "bicgstab"},
-      {"gmres", "gmres"},                      {"super_lu_iterative", "gmres"},
-      {"amgcl", "amgcl"},                      {"AMGCL_NS_Solver", "amgcl_ns"},
+      {"skyline_lu_factorization", "umfpack"},
+      {"SkylineLUFactorizationSolver", "umfpack"},
+      {"sparse_lu", "umfpack"},
+      {"LinearSolversApplication.sparse_lu", "umfpack"},
+      {"pardiso_lu", "umfpack"},
+      {"super_lu", "umfpack"},
+      {"pastix", "umfpack"},
+      {"mumps", "umfpack"},
+      {"umfpack", "umfpack"},
+      {"pardiso_ldlt", "umfpack"},
+      {"eigen_sparse_lu", "umfpack"},
+      {"klu", "klu"},
+      {"cholmod", "cholmod"},
+      {"pardiso_llt", "cholmod"},
+      {"sparse_lu_eigen", "sparse_lu_eigen"},
+      {"cg", "cg"},
+      {"deflated_cg", "cg"},
+      {"CGSolver", "cg"},
+      {"bicgstab", "bicgstab"},
+      {"tfqmr", "bicgstab"},
+      {"gmres", "gmres"},
+      {"super_lu_iterative", "gmres"},
+      {"amgcl", "amgcl"},
+      {"AMGCL_NS_Solver", "amgcl_ns"},
       {"scaling", "scaling(umfpack)"},
   };
   for (const auto& [kratos, ours] : table) EXPECT_EQ(CreateName(kratos), ours) << kratos;
@@ -166,7 +178,8 @@ TEST(LinearSolverFactory, UnknownKeySuggestsTheNearest) {
   EXPECT_NE(message.find("'tolerance'"), std::string::npos) << message;
   const std::string wrong_type = ErrorMessage<InputError>(R"({"solver_type": "cg", "max_iteration": "many"})");
   EXPECT_NE(wrong_type.find("max_iteration"), std::string::npos) << wrong_type;
-  const std::string preconditioner = ErrorMessage<InputError>(R"({"solver_type": "cg", "preconditioner_type": "ilu1"})");
+  const std::string preconditioner =
+      ErrorMessage<InputError>(R"({"solver_type": "cg", "preconditioner_type": "ilu1"})");
   EXPECT_NE(preconditioner.find("'ilu0'"), std::string::npos) << preconditioner;
 }
 

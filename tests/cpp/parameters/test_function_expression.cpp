@@ -39,7 +39,8 @@ TEST(FunctionExpression, InitialCoordinates) {
 }
 
 TEST(FunctionExpression, FunctionsAndConstants) {
-  const FunctionExpression f("sin(pi/2) + cos(0) + tan(0) + exp(1) - e + log(e) + abs(-2) + min(1, 2) + max(3, 4) + pow(2, 3)");
+  const FunctionExpression f(
+      "sin(pi/2) + cos(0) + tan(0) + exp(1) - e + log(e) + abs(-2) + min(1, 2) + max(3, 4) + pow(2, 3)");
   EXPECT_NEAR(f.Evaluate(0, 0, 0, 0), 1 + 1 + 0 + 0 + 1 + 2 + 1 + 4 + 8, 1e-14);
   EXPECT_FALSE(f.DependsOnSpace());
   EXPECT_FALSE(f.DependsOnTime());

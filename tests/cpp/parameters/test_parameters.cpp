@@ -84,7 +84,7 @@ TEST(Parameters, GettersReturnValues) {
   Parameters s = Parameters(kSettings)["solver_settings"];
   EXPECT_DOUBLE_EQ(s["tolerance"].GetDouble(), 1e-6);
   EXPECT_DOUBLE_EQ(Parameters(kSettings)["problem_data"]["end_time"].GetDouble(), 1.0);  // int as double
-  EXPECT_EQ(s["float_int"].GetInt(), 10);  // integral-valued float as int
+  EXPECT_EQ(s["float_int"].GetInt(), 10);                                                // integral-valued float as int
   EXPECT_TRUE(s["flag"].GetBool());
   const Vector d = s["direction"].GetVector();
   ASSERT_EQ(d.size(), 3);

@@ -24,14 +24,16 @@ const char* kDefaults = R"({
 
 TEST(ParametersValidation, UnknownKeyNamesTheNearestKey) {
   Parameters p(R"({"solver_settings": {"max_iteraton": 3}})", "ProjectParameters.json");
-  const std::string message = test::ErrorMessageOf([&] { p["solver_settings"].ValidateAndAssignDefaults(Parameters(kDefaults)); });
+  const std::string message =
+      test::ErrorMessageOf([&] { p["solver_settings"].ValidateAndAssignDefaults(Parameters(kDefaults)); });
   EXPECT_EQ(message,
             "ProjectParameters.json: solver_settings: unknown key 'max_iteraton' (did you mean 'max_iteration'?)");
 }
 
 TEST(ParametersValidation, UnknownKeyWithNothingCloseListsValidKeys) {
   Parameters p(R"({"zzzzzzzzzz": 3})", "a.json");
-  const std::string message = test::ErrorMessageOf([&] { p.ValidateAndAssignDefaults(Parameters(R"({"alpha": 1, "beta": 2})")); });
+  const std::string message =
+      test::ErrorMessageOf([&] { p.ValidateAndAssignDefaults(Parameters(R"({"alpha": 1, "beta": 2})")); });
   EXPECT_EQ(message, "a.json: unknown key 'zzzzzzzzzz' (valid keys: 'alpha', 'beta')");
 }
 
@@ -40,13 +42,18 @@ TEST(ParametersValidation, TypeMismatchNamesPathExpectedAndFound) {
   EXPECT_EQ(test::ErrorMessageOf([&] { p["s"].ValidateAndAssignDefaults(Parameters(kDefaults)); }),
             "c.json: s.solver_type: expected a string (like the default \"newton\"), found integer 3");
   Parameters q(R"({"echo": "yes"})");
-  EXPECT_NE(test::ErrorMessageOf([&] { q.ValidateAndAssignDefaults(Parameters(kDefaults)); }).find("echo: expected a boolean"),
+  EXPECT_NE(test::ErrorMessageOf([&] {
+              q.ValidateAndAssignDefaults(Parameters(kDefaults));
+            }).find("echo: expected a boolean"),
             std::string::npos);
   Parameters r(R"({"list": {}})");
-  EXPECT_NE(test::ErrorMessageOf([&] { r.ValidateAndAssignDefaults(Parameters(kDefaults)); }).find("list: expected an array"),
-            std::string::npos);
+  EXPECT_NE(
+      test::ErrorMessageOf([&] { r.ValidateAndAssignDefaults(Parameters(kDefaults)); }).find("list: expected an array"),
+      std::string::npos);
   Parameters o(R"({"search": 1})");
-  EXPECT_NE(test::ErrorMessageOf([&] { o.ValidateAndAssignDefaults(Parameters(kDefaults)); }).find("search: expected an object"),
+  EXPECT_NE(test::ErrorMessageOf([&] {
+              o.ValidateAndAssignDefaults(Parameters(kDefaults));
+            }).find("search: expected an object"),
             std::string::npos);
 }
 
@@ -105,7 +112,9 @@ TEST(ParametersValidation, AddMissingDoesNotReject) {
 
 TEST(ParametersValidation, CheckKeys) {
   Parameters p(R"({"model_part_name": "a", "intervl": [0, 1]})", "k.json");
-  EXPECT_EQ(test::ErrorMessageOf([&] { p.CheckKeys({"model_part_name", "interval"}); }),
+  EXPECT_EQ(test::ErrorMessageOf([&] {
+              p.CheckKeys({"model_part_name", "interval"});
+            }),
             "k.json: unknown key 'intervl' (did you mean 'interval'?)");
   EXPECT_EQ(test::ErrorMessageOf([&] { p.CheckKeys({"model_part_name", "intervl"}); }), "");
 }

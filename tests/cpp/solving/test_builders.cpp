@@ -74,18 +74,18 @@ class BothBuilders : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(BothBuilders, LinearChainMatchesDenseSolutionAndReactionsBalanceLoads) {
   Chain c;
-  LinearStrategy strategy(c.mp, std::make_shared<ResidualBasedIncrementalUpdateStaticScheme>(), MakeBuilder(GetParam()));
+  LinearStrategy strategy(c.mp, std::make_shared<ResidualBasedIncrementalUpdateStaticScheme>(),
+                          MakeBuilder(GetParam()));
   ASSERT_TRUE(strategy.Solve());
   const Eigen::Vector3d ref = ChainReference();
-  for (int i = 0; i < 3; ++i)
-    EXPECT_NEAR(c.mp.GetNode(i + 2).FastGetSolutionStepValue(DISPLACEMENT_X), ref[i], 1e-13);
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(c.mp.GetNode(i + 2).FastGetSolutionStepValue(DISPLACEMENT_X), ref[i], 1e-13);
   EXPECT_DOUBLE_EQ(c.mp.GetNode(5).FastGetSolutionStepValue(DISPLACEMENT_X), 0.1);
   // REACTION is the force the support exerts on the structure.
   const double r1 = c.mp.GetNode(1).FastGetSolutionStepValue(REACTION_X);
   const double r5 = c.mp.GetNode(5).FastGetSolutionStepValue(REACTION_X);
-  EXPECT_NEAR(r1, -1.0 * ref[0], 1e-12);            // spring 1 stretched by u2 pulls node 1 to +x
-  EXPECT_NEAR(r5, 4.0 * (0.1 - ref[2]), 1e-12);     // support holds node 5 at 0.1
-  EXPECT_NEAR(r1 + r5 + 5.0, 0.0, 1e-12);           // equilibrium of the whole chain
+  EXPECT_NEAR(r1, -1.0 * ref[0], 1e-12);         // spring 1 stretched by u2 pulls node 1 to +x
+  EXPECT_NEAR(r5, 4.0 * (0.1 - ref[2]), 1e-12);  // support holds node 5 at 0.1
+  EXPECT_NEAR(r1 + r5 + 5.0, 0.0, 1e-12);        // equilibrium of the whole chain
   EXPECT_DOUBLE_EQ(c.mp.GetNode(3).FastGetSolutionStepValue(REACTION_X), 0.0);
 }
 
@@ -141,7 +141,8 @@ TEST_P(BothBuilders, PatternIsBuiltOncePerDofSet) {
 // part of the problem sits in a condition, as contact does, so that the springs stay linear.
 class CubicSupport : public test::LocalSystemEntity<Condition> {
  public:
-  CubicSupport(IndexType id, Geometry geometry, double c) : LocalSystemEntity(id, std::move(geometry), nullptr), c_(c) {}
+  CubicSupport(IndexType id, Geometry geometry, double c)
+      : LocalSystemEntity(id, std::move(geometry), nullptr), c_(c) {}
   std::string Info() const override { return "CubicSupport"; }
   std::unique_ptr<Condition> Create(IndexType id, Geometry::NodesArray nodes, Properties*) const override {
     return std::make_unique<CubicSupport>(id, Geometry(GetGeometry().Type(), std::move(nodes)), c_);

@@ -75,8 +75,8 @@ TEST(CombinedCriteria, AndNeedsBothOrNeedsOne) {
   ThreeDofs s;
   const Vector dx = Vec(0.3, 0.4, 0.0);
   const Vector b = Vec(3.0, 4.0, 0.0);
-  auto passes = std::make_shared<DisplacementCriteria>(0.2, 1e-9);   // ratio 0.1
-  auto fails = std::make_shared<ResidualCriteria>(1e-4, 1e-9);       // first check: ratio 1
+  auto passes = std::make_shared<DisplacementCriteria>(0.2, 1e-9);  // ratio 0.1
+  auto fails = std::make_shared<ResidualCriteria>(1e-4, 1e-9);      // first check: ratio 1
   AndCriteria both(passes, fails);
   OrCriteria either(passes, fails);
   EXPECT_EQ(both.Name(), "and_criterion");

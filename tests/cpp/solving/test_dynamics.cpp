@@ -49,8 +49,8 @@ struct Trajectory {
 
 Trajectory RunImplicit(Oscillator& o, std::shared_ptr<Scheme> scheme, double dt, int steps) {
   NewtonRaphsonStrategy strategy(o.mp, std::move(scheme), std::make_shared<ResidualCriteria>(1e-6, 1e-9),
-                                 std::make_shared<BlockBuilderAndSolver>(std::make_shared<UmfpackSolver>()), 10,
-                                 false, false, false);
+                                 std::make_shared<BlockBuilderAndSolver>(std::make_shared<UmfpackSolver>()), 10, false,
+                                 false, false);
   Trajectory t{{0.0}, {o.U()}, {o.Energy()}};
   for (int n = 1; n <= steps; ++n) {
     o.mp.CloneTimeStep(n * dt);
@@ -127,7 +127,8 @@ TEST(ExplicitCentralDifferences, OscillatorMatchesAnalyticSolution) {
   EXPECT_DOUBLE_EQ(o.mp.GetNode(2).GetValue(NODAL_MASS), kMass);
   EXPECT_TRUE(o.mp.GetProcessInfo().GetValue(COMPUTE_LUMPED_MASS_MATRIX));
   // The support carries the spring force of the step's start state: R = -k u.
-  EXPECT_NEAR(o.mp.GetNode(1).FastGetSolutionStepValue(REACTION_X), -kStiffness * o.mp.GetNode(2).FastGetSolutionStepValue(DISPLACEMENT_X, 1), 1e-12);
+  EXPECT_NEAR(o.mp.GetNode(1).FastGetSolutionStepValue(REACTION_X),
+              -kStiffness * o.mp.GetNode(2).FastGetSolutionStepValue(DISPLACEMENT_X, 1), 1e-12);
 }
 
 TEST(ExplicitStrategy, TimeStepPredictionIsNotImplemented) {

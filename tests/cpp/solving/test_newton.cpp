@@ -119,8 +119,8 @@ class CountingScheme : public ResidualBasedIncrementalUpdateStaticScheme {
 TEST(NewtonRaphson, OldStiffnessInFirstIterationSkipsTheFirstMatrixBuild) {
   CubicSpring s(1.0, 1.0, 2.0);
   auto scheme = std::make_shared<CountingScheme>();
-  NewtonRaphsonStrategy strategy(s.mp, scheme, std::make_shared<DisplacementCriteria>(1e-12, 0.0), Block(), 30,
-                                 false, false, true, true);
+  NewtonRaphsonStrategy strategy(s.mp, scheme, std::make_shared<DisplacementCriteria>(1e-12, 0.0), Block(), 30, false,
+                                 false, true, true);
   ASSERT_TRUE(strategy.Solve());
   EXPECT_EQ(scheme->rhs_only, 0);  // no previous matrix in the first step
   EXPECT_EQ(scheme->full, 2 * static_cast<int>(strategy.IterationHistory().size()));  // spring + load

@@ -18,9 +18,9 @@
 #include "core/model/node.h"
 #include "core/model/properties.h"
 #include "core/model/registry.h"
-#include "tests/cpp/common/finite_differences.h"
 #include "core/variables/kernel_variables.h"
 #include "structural/application/register_structural_mechanics.h"
+#include "tests/cpp/common/finite_differences.h"
 
 namespace mc::test {
 
@@ -113,9 +113,9 @@ inline const std::vector<GeometryType>& Solids2D() {
 }
 
 inline const std::vector<GeometryType>& Solids3D() {
-  static const std::vector<GeometryType> types = {GeometryType::Tetrahedra3D4,  GeometryType::Tetrahedra3D10,
-                                                  GeometryType::Hexahedra3D8,   GeometryType::Hexahedra3D20,
-                                                  GeometryType::Hexahedra3D27,  GeometryType::Prism3D6};
+  static const std::vector<GeometryType> types = {GeometryType::Tetrahedra3D4, GeometryType::Tetrahedra3D10,
+                                                  GeometryType::Hexahedra3D8,  GeometryType::Hexahedra3D20,
+                                                  GeometryType::Hexahedra3D27, GeometryType::Prism3D6};
   return types;
 }
 

@@ -14,11 +14,16 @@
 namespace mc {
 namespace {
 
-const char* const kLaws[] = {"LinearElastic3DLaw",          "LinearElasticPlaneStrain2DLaw",
-                             "LinearElasticPlaneStress2DLaw", "LinearElasticAxisym2DLaw",
-                             "HyperElastic3DLaw",           "HyperElasticPlaneStrain2DLaw",
-                             "HyperElasticAxisym2DLaw",     "KirchhoffSaintVenant3DLaw",
-                             "KirchhoffSaintVenantPlaneStrain2DLaw", "KirchhoffSaintVenantPlaneStress2DLaw"};
+const char* const kLaws[] = {"LinearElastic3DLaw",
+                             "LinearElasticPlaneStrain2DLaw",
+                             "LinearElasticPlaneStress2DLaw",
+                             "LinearElasticAxisym2DLaw",
+                             "HyperElastic3DLaw",
+                             "HyperElasticPlaneStrain2DLaw",
+                             "HyperElasticAxisym2DLaw",
+                             "KirchhoffSaintVenant3DLaw",
+                             "KirchhoffSaintVenantPlaneStrain2DLaw",
+                             "KirchhoffSaintVenantPlaneStress2DLaw"};
 
 struct LawFixture {
   std::unique_ptr<Properties> properties;
@@ -82,9 +87,10 @@ TEST(ConstitutiveLaws, StressIsDerivativeOfEnergy) {
 }
 
 TEST(ConstitutiveLaws, NeoHookeanSmallStrainLimitIsHooke) {
-  const std::pair<const char*, const char*> pairs[] = {{"HyperElastic3DLaw", "LinearElastic3DLaw"},
-                                                       {"HyperElasticPlaneStrain2DLaw", "LinearElasticPlaneStrain2DLaw"},
-                                                       {"HyperElasticAxisym2DLaw", "LinearElasticAxisym2DLaw"}};
+  const std::pair<const char*, const char*> pairs[] = {
+      {"HyperElastic3DLaw", "LinearElastic3DLaw"},
+      {"HyperElasticPlaneStrain2DLaw", "LinearElasticPlaneStrain2DLaw"},
+      {"HyperElasticAxisym2DLaw", "LinearElasticAxisym2DLaw"}};
   for (const auto& [hyper, linear] : pairs) {
     LawFixture h(hyper), l(linear);
     const Vector zero = Vector::Zero(h.law->StrainSize());

@@ -216,19 +216,23 @@ TEST(LoadConditions, SurfaceLoadsAreExactOnInclinedAndCurvedFaces) {
 
 TEST(LoadConditions, LoadStiffnessEqualsFiniteDifferences) {
   auto properties = test::MakeProperties(1, "LinearElastic3DLaw");
-  const std::pair<const char*, GeometryType> cases[] = {
-      {"LineLoadCondition2D2N", GeometryType::Line2D2},          {"LineLoadCondition2D3N", GeometryType::Line2D3},
-      {"AxisymLineLoadCondition2D2N", GeometryType::Line2D2},    {"AxisymLineLoadCondition2D3N", GeometryType::Line2D3},
-      {"SurfaceLoadCondition3D3N", GeometryType::Triangle3D3},   {"SurfaceLoadCondition3D4N", GeometryType::Quadrilateral3D4},
-      {"SurfaceLoadCondition3D6N", GeometryType::Triangle3D6},   {"SurfaceLoadCondition3D8N", GeometryType::Quadrilateral3D8},
-      {"SurfaceLoadCondition3D9N", GeometryType::Quadrilateral3D9}};
+  const std::pair<const char*, GeometryType> cases[] = {{"LineLoadCondition2D2N", GeometryType::Line2D2},
+                                                        {"LineLoadCondition2D3N", GeometryType::Line2D3},
+                                                        {"AxisymLineLoadCondition2D2N", GeometryType::Line2D2},
+                                                        {"AxisymLineLoadCondition2D3N", GeometryType::Line2D3},
+                                                        {"SurfaceLoadCondition3D3N", GeometryType::Triangle3D3},
+                                                        {"SurfaceLoadCondition3D4N", GeometryType::Quadrilateral3D4},
+                                                        {"SurfaceLoadCondition3D6N", GeometryType::Triangle3D6},
+                                                        {"SurfaceLoadCondition3D8N", GeometryType::Quadrilateral3D8},
+                                                        {"SurfaceLoadCondition3D9N", GeometryType::Quadrilateral3D9}};
   for (const auto& [name, type] : cases) {
     NodeSet nodes;
     Geometry::NodesArray geometry;
     int i = 0;
     for (const Array3& xi : ReferenceElement::Get(type).NodesLocalCoordinates()) {
-      Node* node = nodes.Add(Array3(2.0 + xi[0] + 0.3 * xi[1], 1.0 + 0.8 * xi[1] + 0.1 * xi[0] * xi[0],
-                                    ReferenceElement::Get(type).WorkingSpaceDimension() == 3 ? 0.2 * xi[0] * xi[1] : 0.0));
+      Node* node =
+          nodes.Add(Array3(2.0 + xi[0] + 0.3 * xi[1], 1.0 + 0.8 * xi[1] + 0.1 * xi[0] * xi[0],
+                           ReferenceElement::Get(type).WorkingSpaceDimension() == 3 ? 0.2 * xi[0] * xi[1] : 0.0));
       node->FastGetSolutionStepValue(NEGATIVE_FACE_PRESSURE) = 1.0 + 0.5 * test::Pseudo(i);
       node->FastGetSolutionStepValue(DISPLACEMENT) =
           0.1 * Array3(test::Pseudo(3 * i + 1), test::Pseudo(3 * i + 2), test::Pseudo(3 * i + 3));
@@ -261,7 +265,8 @@ TEST(LoadConditions, SkinConditionsContributeNothing) {
     RegisterStructuralMechanics();
     const Condition& prototype = Registry<Condition>::Instance().Get(name);
     Geometry::NodesArray geometry;
-    for (int i = 0; i < prototype.GetGeometry().Reference().NodesNumber(); ++i) geometry.push_back(nodes.Add({1.0 * i, 0.5 * i * i, 0}));
+    for (int i = 0; i < prototype.GetGeometry().Reference().NodesNumber(); ++i)
+      geometry.push_back(nodes.Add({1.0 * i, 0.5 * i * i, 0}));
     auto condition = MakeCondition(name, geometry, nullptr);
     Matrix lhs(2, 2);
     Vector rhs(2);

@@ -32,7 +32,8 @@ struct Patch {
   // One element whose local coordinates map affinely: x = origin + M xi.
   void AddElement(GeometryType type, const Array3& origin, const Eigen::Matrix3d& M) {
     Geometry::NodesArray element;
-    for (const Array3& xi : ReferenceElement::Get(type).NodesLocalCoordinates()) element.push_back(NodeAt(origin + M * xi));
+    for (const Array3& xi : ReferenceElement::Get(type).NodesLocalCoordinates())
+      element.push_back(NodeAt(origin + M * xi));
     connectivities.push_back(element);
   }
 
@@ -177,7 +178,8 @@ void RunPatch(const std::string& stem, GeometryType type, const std::string& law
     Vector Rf(nf);
     for (Eigen::Index i = 0; i < nf; ++i) {
       Rf[i] = R[free_ids[static_cast<std::size_t>(i)]];
-      for (Eigen::Index j = 0; j < nf; ++j) Kff(i, j) = K(free_ids[static_cast<std::size_t>(i)], free_ids[static_cast<std::size_t>(j)]);
+      for (Eigen::Index j = 0; j < nf; ++j)
+        Kff(i, j) = K(free_ids[static_cast<std::size_t>(i)], free_ids[static_cast<std::size_t>(j)]);
     }
     const Vector du = Kff.partialPivLu().solve(Rf);
     for (Eigen::Index i = 0; i < nf; ++i) {
@@ -191,22 +193,25 @@ void RunPatch(const std::string& stem, GeometryType type, const std::string& law
   double error = 0.0;
   for (Eigen::Index a = 0; a < nnodes; ++a) {
     const Node& node = patch.nodes[static_cast<std::size_t>(a)];
-    error = std::max(error, (Array3(node.FastGetSolutionStepValue(DISPLACEMENT)) - exact(node.X0())).head(dim).cwiseAbs().maxCoeff());
+    error = std::max(
+        error,
+        (Array3(node.FastGetSolutionStepValue(DISPLACEMENT)) - exact(node.X0())).head(dim).cwiseAbs().maxCoeff());
   }
   EXPECT_LT(error, 1e-10 * scale) << name << ": interior displacement error";
 
   Eigen::Matrix3d F = Eigen::Matrix3d::Identity() + G;
-  const Eigen::Matrix3d strain =
-      stem == "SmallDisplacementElement" ? Eigen::Matrix3d(0.5 * (G + G.transpose()))
-                                         : Eigen::Matrix3d(0.5 * (F.transpose() * F - Eigen::Matrix3d::Identity()));
+  const Eigen::Matrix3d strain = stem == "SmallDisplacementElement"
+                                     ? Eigen::Matrix3d(0.5 * (G + G.transpose()))
+                                     : Eigen::Matrix3d(0.5 * (F.transpose() * F - Eigen::Matrix3d::Identity()));
   double strain_error = 0.0;
   for (auto& element : elements) {
     std::vector<Vector> values;
     element->CalculateOnIntegrationPoints(GREEN_LAGRANGE_STRAIN_VECTOR, values, info);
     for (const Vector& v : values) {
       const Vector expected = dim == 2 ? Vector((Vector(3) << strain(0, 0), strain(1, 1), 2 * strain(0, 1)).finished())
-                                       : Vector((Vector(6) << strain(0, 0), strain(1, 1), strain(2, 2), 2 * strain(0, 1),
-                                                 2 * strain(1, 2), 2 * strain(0, 2)).finished());
+                                       : Vector((Vector(6) << strain(0, 0), strain(1, 1), strain(2, 2),
+                                                 2 * strain(0, 1), 2 * strain(1, 2), 2 * strain(0, 2))
+                                                    .finished());
       strain_error = std::max(strain_error, (v - expected).cwiseAbs().maxCoeff());
     }
   }
@@ -214,7 +219,8 @@ void RunPatch(const std::string& stem, GeometryType type, const std::string& law
 }
 
 TEST(PatchTest, SmallDisplacementAllGeometries) {
-  for (GeometryType t : test::Solids2D()) RunPatch("SmallDisplacementElement", t, "LinearElasticPlaneStrain2DLaw", 1e-2);
+  for (GeometryType t : test::Solids2D())
+    RunPatch("SmallDisplacementElement", t, "LinearElasticPlaneStrain2DLaw", 1e-2);
   for (GeometryType t : test::Solids3D()) RunPatch("SmallDisplacementElement", t, "LinearElastic3DLaw", 1e-2);
 }
 

@@ -29,8 +29,8 @@ std::vector<ElementCase> AllCases(bool hyperelastic) {
     for (GeometryType t : test::Solids3D())
       cases.push_back({stem, t, hyperelastic ? "HyperElastic3DLaw" : "LinearElastic3DLaw"});
     for (GeometryType t : test::Solids2D())
-      cases.push_back({std::string("Axisym") + stem, t,
-                       hyperelastic ? "HyperElasticAxisym2DLaw" : "LinearElasticAxisym2DLaw"});
+      cases.push_back(
+          {std::string("Axisym") + stem, t, hyperelastic ? "HyperElasticAxisym2DLaw" : "LinearElasticAxisym2DLaw"});
   }
   return cases;
 }
@@ -43,8 +43,8 @@ struct ElementSetup {
   ElementSetup(const ElementCase& c, bool affine = false) {
     properties = test::MakeProperties(1, c.law);
     name = c.stem + test::Suffix(c.type);
-    element = Registry<Element>::Instance().Get(name).Create(17, test::PlaceNodes(nodes, c.type, affine),
-                                                             properties.get());
+    element =
+        Registry<Element>::Instance().Get(name).Create(17, test::PlaceNodes(nodes, c.type, affine), properties.get());
     element->Initialize(ProcessInfo{});
   }
 };
@@ -157,8 +157,9 @@ TEST(SolidElements, MassMatrixSumsToDensityTimesVolume) {
     if (c.stem != "SmallDisplacementElement") continue;
     ElementSetup s(c, true);
     const int dim = s.element->GetGeometry().WorkingSpaceDimension();
-    const double det = dim == 2 ? 1.1 * 0.9 + 0.2 * 0.15 : 1.1 * (0.9 * 1.2 - 0.05 * -0.1) - 0.2 * (-0.15 * 1.2 - 0.05 * 0.1) +
-                                                               0.1 * (-0.15 * -0.1 - 0.9 * 0.1);
+    const double det = dim == 2 ? 1.1 * 0.9 + 0.2 * 0.15
+                                : 1.1 * (0.9 * 1.2 - 0.05 * -0.1) - 0.2 * (-0.15 * 1.2 - 0.05 * 0.1) +
+                                      0.1 * (-0.15 * -0.1 - 0.9 * 0.1);
     const double volume = det * ReferenceMeasure(c.type);
     s.properties->SetValue(THICKNESS, 0.2);
     const double thickness = dim == 2 ? 0.2 : 1.0;
@@ -178,7 +179,8 @@ TEST(SolidElements, MassMatrixSumsToDensityTimesVolume) {
 TEST(SolidElements, BodyForceIntegratesToWeight) {
   for (GeometryType type : {GeometryType::Quadrilateral2D8, GeometryType::Hexahedra3D20, GeometryType::Tetrahedra3D4}) {
     const int dim = ReferenceElement::Get(type).WorkingSpaceDimension();
-    ElementSetup s({"TotalLagrangianElement", type, dim == 2 ? "LinearElasticPlaneStrain2DLaw" : "LinearElastic3DLaw"}, true);
+    ElementSetup s({"TotalLagrangianElement", type, dim == 2 ? "LinearElasticPlaneStrain2DLaw" : "LinearElastic3DLaw"},
+                   true);
     for (std::size_t a = 0; a < s.nodes.size(); ++a)
       s.nodes[a].FastGetSolutionStepValue(VOLUME_ACCELERATION) = Array3(1.0, -9.81, 0.5);
     Matrix M;
@@ -250,7 +252,8 @@ TEST(SolidElements, SmallDisplacementNeoHookeanTakesJFromTheEquivalentF) {
   for (const Vector& v : stress) {
     EXPECT_LT((v - Vector((Vector(3) << S(0, 0), S(1, 1), S(0, 1)).finished())).cwiseAbs().maxCoeff(), 1e-12);
     // Kratos 10.4, same element, law and strain (its PK2_STRESS_VECTOR, scaled to E = 100).
-    EXPECT_LT((v - Vector((Vector(3) << 8.842616483, -0.171838033, 2.253613629).finished())).cwiseAbs().maxCoeff(), 1e-8);
+    EXPECT_LT((v - Vector((Vector(3) << 8.842616483, -0.171838033, 2.253613629).finished())).cwiseAbs().maxCoeff(),
+              1e-8);
   }
 }
 
@@ -286,7 +289,8 @@ TEST(SolidElements, AxisymmetricRingVolume) {
   NodeSet nodes;
   auto properties = test::MakeProperties(1, "LinearElasticAxisym2DLaw");
   Geometry::NodesArray quad = {nodes.Add({1, 0, 0}), nodes.Add({2, 0, 0}), nodes.Add({2, 1, 0}), nodes.Add({1, 1, 0})};
-  auto element = Registry<Element>::Instance().Get("AxisymSmallDisplacementElement2D4N").Create(1, quad, properties.get());
+  auto element =
+      Registry<Element>::Instance().Get("AxisymSmallDisplacementElement2D4N").Create(1, quad, properties.get());
   Matrix M;
   element->CalculateMassMatrix(M, ProcessInfo{});
   EXPECT_NEAR(M.sum(), 2.5 * 3 * std::numbers::pi * 2, 1e-12);
@@ -324,7 +328,9 @@ TEST(SolidElements, InversionDuringSolveIsSolutionError) {
       ADD_FAILURE();
     } catch (const SolutionError& e) {
       const std::string m = e.what();
-      EXPECT_NE(m.find("element 17 (" + std::string(stem) + "2D4N) is inverted at integration point"), std::string::npos) << m;
+      EXPECT_NE(m.find("element 17 (" + std::string(stem) + "2D4N) is inverted at integration point"),
+                std::string::npos)
+          << m;
       EXPECT_NE(m.find("det F = -"), std::string::npos) << m;
     }
   }

@@ -5,9 +5,9 @@
 // runs, and rejects malformed options. Built with the plugin (when PETSc is found).
 #include <gtest/gtest.h>
 
-#include "petsc/petsc_solver.h"
 #include "core/linear_solvers/umfpack_solver.h"
 #include "core/parameters/parameters.h"
+#include "petsc/petsc_solver.h"
 #include "test_matrices.h"
 
 namespace mc {
