@@ -3,6 +3,7 @@
 
 #include "custom_conditions/generated/frictionless_mortar_kernels.h"
 #include "custom_utilities/contact_variables.h"
+#include "custom_utilities/mortar_geometry_cases.h"
 
 namespace mc {
 
@@ -49,10 +50,8 @@ void ALMFrictionlessComponentsMortarContactCondition<TDim, TNumNodes, TNumNodesM
   generated::ALMFrictionlessComponentsLHS(data, lhs, normal_sensitivity);
 }
 
-template class ALMFrictionlessComponentsMortarContactCondition<2, 2, 2>;
-template class ALMFrictionlessComponentsMortarContactCondition<3, 3, 3>;
-template class ALMFrictionlessComponentsMortarContactCondition<3, 4, 4>;
-template class ALMFrictionlessComponentsMortarContactCondition<3, 3, 4>;
-template class ALMFrictionlessComponentsMortarContactCondition<3, 4, 3>;
+#define MC_INSTANTIATE(D, S, M) template class ALMFrictionlessComponentsMortarContactCondition<D, S, M>;
+MC_FOR_EACH_MORTAR_CASE(MC_INSTANTIATE)
+#undef MC_INSTANTIATE
 
 }  // namespace mc

@@ -3,6 +3,7 @@
 
 #include "custom_conditions/generated/frictionless_mortar_kernels.h"
 #include "custom_utilities/contact_variables.h"
+#include "custom_utilities/mortar_geometry_cases.h"
 
 namespace mc {
 
@@ -43,10 +44,8 @@ void ALMFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::Ad
   generated::ALMFrictionlessLHS(data, lhs, normal_sensitivity);
 }
 
-template class ALMFrictionlessMortarContactCondition<2, 2, 2>;
-template class ALMFrictionlessMortarContactCondition<3, 3, 3>;
-template class ALMFrictionlessMortarContactCondition<3, 4, 4>;
-template class ALMFrictionlessMortarContactCondition<3, 3, 4>;
-template class ALMFrictionlessMortarContactCondition<3, 4, 3>;
+#define MC_INSTANTIATE(D, S, M) template class ALMFrictionlessMortarContactCondition<D, S, M>;
+MC_FOR_EACH_MORTAR_CASE(MC_INSTANTIATE)
+#undef MC_INSTANTIATE
 
 }  // namespace mc

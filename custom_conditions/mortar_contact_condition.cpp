@@ -8,6 +8,7 @@
 #include "core/utilities/error.h"
 #include "core/variables/kernel_variables.h"
 #include "custom_utilities/contact_variables.h"
+#include "custom_utilities/mortar_geometry_cases.h"
 #include "custom_utilities/normal_calculation_utilities.h"
 
 namespace mc {
@@ -218,10 +219,8 @@ void MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::Check(const Proce
   }
 }
 
-template class MortarContactCondition<2, 2, 2>;
-template class MortarContactCondition<3, 3, 3>;
-template class MortarContactCondition<3, 4, 4>;
-template class MortarContactCondition<3, 3, 4>;
-template class MortarContactCondition<3, 4, 3>;
+#define MC_INSTANTIATE(D, S, M) template class MortarContactCondition<D, S, M>;
+MC_FOR_EACH_MORTAR_CASE(MC_INSTANTIATE)
+#undef MC_INSTANTIATE
 
 }  // namespace mc

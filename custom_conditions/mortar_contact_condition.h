@@ -12,6 +12,7 @@
 
 #include "custom_conditions/frictionless_mortar_data.h"
 #include "custom_conditions/paired_condition.h"
+#include "custom_utilities/mortar_geometry_cases.h"
 #include "custom_utilities/mortar_pair_kinematics.h"
 
 namespace mc {
@@ -90,10 +91,8 @@ class MortarContactCondition : public PairedCondition {
   void FillData(Data& data, const ProcessInfo& info) const;
 };
 
-extern template class MortarContactCondition<2, 2, 2>;
-extern template class MortarContactCondition<3, 3, 3>;
-extern template class MortarContactCondition<3, 4, 4>;
-extern template class MortarContactCondition<3, 3, 4>;
-extern template class MortarContactCondition<3, 4, 3>;
+#define MC_EXTERN(D, S, M) extern template class MortarContactCondition<D, S, M>;
+MC_FOR_EACH_MORTAR_CASE(MC_EXTERN)
+#undef MC_EXTERN
 
 }  // namespace mc

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "custom_conditions/mortar_contact_condition.h"
+#include "custom_utilities/mortar_geometry_cases.h"
 
 namespace mc {
 
@@ -32,10 +33,8 @@ class PenaltyFrictionlessMortarContactCondition : public MortarContactCondition<
   void AddLHS(const Data& data, Matrix& lhs, Matrix* normal_sensitivity) const override;
 };
 
-extern template class PenaltyFrictionlessMortarContactCondition<2, 2, 2>;
-extern template class PenaltyFrictionlessMortarContactCondition<3, 3, 3>;
-extern template class PenaltyFrictionlessMortarContactCondition<3, 4, 4>;
-extern template class PenaltyFrictionlessMortarContactCondition<3, 3, 4>;
-extern template class PenaltyFrictionlessMortarContactCondition<3, 4, 3>;
+#define MC_EXTERN(D, S, M) extern template class PenaltyFrictionlessMortarContactCondition<D, S, M>;
+MC_FOR_EACH_MORTAR_CASE(MC_EXTERN)
+#undef MC_EXTERN
 
 }  // namespace mc

@@ -7,6 +7,7 @@
 
 #include "core/utilities/error.h"
 #include "custom_utilities/mortar_autodiff.h"
+#include "custom_utilities/mortar_geometry_cases.h"
 #include "custom_utilities/mortar_operator.h"
 
 namespace mc {
@@ -208,10 +209,8 @@ bool MortarPairKinematics<TDim, TNumNodes, TNumNodesMaster>::Compute(const Slave
   return true;
 }
 
-template struct MortarPairKinematics<2, 2, 2>;
-template struct MortarPairKinematics<3, 3, 3>;
-template struct MortarPairKinematics<3, 3, 4>;
-template struct MortarPairKinematics<3, 4, 3>;
-template struct MortarPairKinematics<3, 4, 4>;
+#define MC_INSTANTIATE(D, S, M) template struct MortarPairKinematics<D, S, M>;
+MC_FOR_EACH_MORTAR_CASE(MC_INSTANTIATE)
+#undef MC_INSTANTIATE
 
 }  // namespace mc

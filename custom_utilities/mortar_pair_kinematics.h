@@ -6,6 +6,7 @@
 
 #include "custom_utilities/dual_lagrange_multiplier.h"
 #include "custom_utilities/exact_mortar_integration_utility.h"
+#include "custom_utilities/mortar_geometry_cases.h"
 
 namespace mc {
 
@@ -100,10 +101,8 @@ struct MortarPairKinematics {
   void ClearValues();
 };
 
-extern template struct MortarPairKinematics<2, 2, 2>;
-extern template struct MortarPairKinematics<3, 3, 3>;
-extern template struct MortarPairKinematics<3, 3, 4>;
-extern template struct MortarPairKinematics<3, 4, 3>;
-extern template struct MortarPairKinematics<3, 4, 4>;
+#define MC_EXTERN(D, S, M) extern template struct MortarPairKinematics<D, S, M>;
+MC_FOR_EACH_MORTAR_CASE(MC_EXTERN)
+#undef MC_EXTERN
 
 }  // namespace mc
