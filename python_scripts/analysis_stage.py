@@ -132,6 +132,22 @@ class StructuralMechanicsAnalysis:
             process.ExecuteFinalize()
         self.solver.Finalize()
 
+    def Summary(self) -> str:
+        """One paragraph on the finished run: steps, Newton iterations, time, files written."""
+        steps = len(self.step_log)
+        iterations = [entry[2] for entry in self.step_log]
+        failed = sum(1 for entry in self.step_log if not entry[3])
+        seconds = sum(entry[4] for entry in self.step_log)
+        text = f"{self.problem_name or 'analysis'}: {steps} step{'s' if steps != 1 else ''} to t = {self.time:.6g}"
+        if iterations and max(iterations) > 1:
+            spread = f"{min(iterations)} to {max(iterations)}" if min(iterations) < max(iterations) else max(iterations)
+            text += f", {sum(iterations)} Newton iterations ({spread} per step)"
+        if failed:
+            text += f", {failed} not converged"
+        text += f", {seconds:.3g} s in the solution loop"
+        files = [path for process in self._all_processes() for path in process.OutputFiles()]
+        return text + (f"; wrote {', '.join(files)}" if files else "; no result files written")
+
     # -- helpers ----------------------------------------------------------------------------
     def _all_processes(self):
         return [*self.processes, *self.output_processes]

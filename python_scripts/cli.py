@@ -36,8 +36,8 @@ def main(argv=None) -> int:
     from .analysis_stage import run_case as run_case_cli
 
     try:
-        run_case_cli(args.parameters, progress=not args.no_progress and sys.stdout.isatty(),
-                     stop_on_non_convergence=not args.continue_on_non_convergence)
+        analysis = run_case_cli(args.parameters, progress=not args.no_progress and sys.stdout.isatty(),
+                                stop_on_non_convergence=not args.continue_on_non_convergence)
     except _core.InputError as error:
         return _fail(args, "input error", error, 2)
     except _core.NotImplementedFeatureError as error:
@@ -46,6 +46,7 @@ def main(argv=None) -> int:
         return _fail(args, "solution failed", error, 4)
     except AssertionError as error:
         return _fail(args, "check failed", error, 5)
+    print(analysis.Summary())
     return 0
 
 

@@ -34,6 +34,10 @@ class Process:
     def ExecuteAfterOutputStep(self) -> None: ...
     def ExecuteFinalize(self) -> None: ...
 
+    def OutputFiles(self) -> list[str]:
+        """The result files this process has written so far (for the end-of-run summary)."""
+        return []
+
 
 class OutputProcess(Process):
     """A process that also writes results when ``IsOutputStep()`` is true."""

@@ -55,6 +55,7 @@ class _PartWriter:
         self.base_name = base_name
         self.file_format = file_format
         self.pvd_entries: list[tuple[float, str]] = []
+        self.xdmf_written = False
         self.series = None
         self.staging = None
         self.series_mesh_key = None
@@ -141,6 +142,13 @@ class _PartWriter:
             os.replace(os.path.join(self.staging, name), os.path.join(self.folder, name))
         shutil.rmtree(self.staging, ignore_errors=True)
         self.series = None
+        self.xdmf_written = True
+
+    def written(self) -> list[str]:
+        """The PVD collection, or the XDMF file once closed, when anything was written."""
+        if self.xdmf_written:
+            return [os.path.join(self.folder, f"{self.base_name}.xdmf")]
+        return [os.path.join(self.folder, f"{self.base_name}.pvd")] if self.pvd_entries else []
 
 
 class VtkOutputProcess(OutputProcess):
@@ -267,6 +275,9 @@ class VtkOutputProcess(OutputProcess):
     def ExecuteFinalize(self) -> None:
         for writer in self.writers:
             writer.close()
+
+    def OutputFiles(self) -> list[str]:
+        return [path for writer in self.writers for path in writer.written()]
 
     # --- data ----------------------------------------------------------------------------------
     def _time(self) -> float:

@@ -47,6 +47,7 @@ class JsonOutputProcess(JsonResultsProcess):
         super().__init__(model, settings)
         self.resultant = self.settings["resultant_solution"].GetBool()
         self.data: dict = {"TIME": []}
+        self.written = False
 
     def ExecuteInitialize(self) -> None:
         self.model_part = results_model_part(self.model, self.settings)
@@ -98,6 +99,10 @@ class JsonOutputProcess(JsonResultsProcess):
     def write(self) -> None:
         """Writes what was recorded so far (atomically)."""
         write_json_atomically(self.file_name, self.data)
+        self.written = True
+
+    def OutputFiles(self) -> list[str]:
+        return [self.file_name] if self.written else []
 
     def ExecuteFinalize(self) -> None:
         self.write()

@@ -57,6 +57,11 @@ def test_runs_a_case_and_writes_vtu(tmp_path):
     assert result.returncode == 0, result.stderr
     files = [f for _, _, names in os.walk(tmp_path / "vtk_output") for f in names]
     assert any(f.endswith(".vtu") for f in files) and any(f.endswith(".pvd") for f in files), files
+    # The run ends with a summary, also when piped (no progress bar): steps, time, files written.
+    summary = result.stdout.strip().splitlines()[-1]
+    pvd = next(f for f in files if f.endswith(".pvd"))
+    assert summary.startswith("square: 1 step to t = 1") and "s in the solution loop" in summary, summary
+    assert f"wrote vtk_output/{pvd}" in summary or f"wrote vtk_output{os.sep}{pvd}" in summary, summary
 
 
 def test_misspelt_settings_key(tmp_path):

@@ -377,7 +377,9 @@ def test_json_output_round_trip_through_the_check(tmp_path):
         top.SetNodalValues(mc.REACTION, np.tile([0.0, 10.0 * step, 0.0], (3, 1)))
         writer.ExecuteFinalizeSolutionStep()
     assert not output.exists()  # written once, at the end
+    assert writer.OutputFiles() == []
     writer.ExecuteFinalize()
+    assert writer.OutputFiles() == [str(output)]  # for the end-of-run summary
     data = json.loads(output.read_text())
     assert data["TIME"] == [0.5, 1.0, 1.5]
     assert set(data) == {"TIME", "NODE_7", "NODE_8", "NODE_9"}
