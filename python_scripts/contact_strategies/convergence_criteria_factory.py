@@ -14,7 +14,7 @@ formulation's (``ContactFormulation``).
 """
 from __future__ import annotations
 
-import difflib
+from ..utilities import nearest
 
 CONTACT_CRITERIA = ("contact_displacement_criterion", "contact_residual_criterion", "contact_mixed_criterion",
                     "contact_and_criterion", "contact_or_criterion")
@@ -33,11 +33,6 @@ def _core_module(core):
     if core is None:
         from .. import _core as core  # imported here: the extension is only needed when building
     return core
-
-
-def _nearest(name: str, choices) -> str:
-    close = difflib.get_close_matches(name, choices, n=1)
-    return f" (did you mean '{close[0]}'?)" if close else ""
 
 
 def _contact_settings(solver_settings):
@@ -99,7 +94,7 @@ def create_contact_convergence_criteria(solver_settings, formulation, echo_level
     name = raw.lower()
     where = "solver_settings.convergence_criterion"
     if name not in ALL_CRITERIA:
-        raise core.InputError(f"{where}: unknown criterion \"{raw}\"{_nearest(name, ALL_CRITERIA)}")
+        raise core.InputError(f"{where}: unknown criterion \"{raw}\"{nearest(name, ALL_CRITERIA)}")
     if name == "adaptative_remesh_criteria":
         raise core.NotImplementedFeatureError(f"{where}: \"{raw}\" belongs to the adaptive remeshing analysis, "
                                               "which is not implemented")
