@@ -2,6 +2,8 @@
 #include <pybind11/numpy.h>
 
 #include <map>
+#include <optional>
+#include <set>
 
 #include "core/model/constitutive_law.h"
 #include "core/model/model.h"
@@ -98,6 +100,90 @@ py::array_t<double> NodalNonHistoricalValues(const ModelPart& part, const Variab
   return out;
 }
 
+/// Sets non-historical nodal values from (n,) or (n, 3) in node-id order; with `held`, the nodes
+/// marked false lose their value of the variable instead (as a checkpoint records them).
+void SetNodalNonHistoricalValues(ModelPart& part, const VariableData& var,
+                                 py::array_t<double, py::array::c_style | py::array::forcecast> values,
+                                 const std::optional<py::array_t<bool, py::array::c_style | py::array::forcecast>>& held) {
+  const auto& nodes = part.Nodes();
+  const std::size_t n = nodes.size();
+  const std::size_t width = var.Type() == ValueType::Array3 ? 3 : 1;
+  if (static_cast<std::size_t>(values.size()) != n * width)
+    throw InputError(Concat("expected ", n * width, " values for ", var.Name(), " on ", part.FullName(), ", got ",
+                            values.size()));
+  if (held && static_cast<std::size_t>(held->size()) != n)
+    throw InputError(Concat("expected ", n, " entries of 'held' for ", var.Name(), " on ", part.FullName(), ", got ",
+                            held->size()));
+  const double* v = values.data();
+  const bool* mask = held ? held->data() : nullptr;
+  for (std::size_t i = 0; i < n; ++i) {
+    DataValueContainer& data = nodes[i]->Data();
+    if (mask && !mask[i]) {
+      data.Erase(var.IsComponent() ? *var.Source() : var);
+      continue;
+    }
+    switch (var.Type()) {
+      case ValueType::Double: data.SetValue(static_cast<const Variable<double>&>(var), v[i]); break;
+      case ValueType::Int: data.SetValue(static_cast<const Variable<int>&>(var), static_cast<int>(v[i])); break;
+      case ValueType::Bool: data.SetValue(static_cast<const Variable<bool>&>(var), v[i] != 0.0); break;
+      case ValueType::Array3:
+        data.SetValue(static_cast<const Variable<Array3>&>(var), Array3(v[3 * i], v[3 * i + 1], v[3 * i + 2]));
+        break;
+      default: throw InputError(Concat(var.Name(), " (", ValueTypeName(var.Type()), ") cannot be set per node here"));
+    }
+  }
+}
+
+/// -1 flag undefined, 0 reset, 1 set: the three states of a flag, per node in node-id order.
+py::array_t<std::int8_t> NodalFlagStates(const ModelPart& part, const Flag& flag) {
+  py::array_t<std::int8_t> out(py::ssize_t(part.NumberOfNodes()));
+  auto* d = out.mutable_data();
+  std::size_t i = 0;
+  for (const Node* n : part.Nodes())
+    d[i++] = n->GetFlags().IsDefined(flag) ? static_cast<std::int8_t>(n->Is(flag)) : std::int8_t(-1);
+  return out;
+}
+
+void SetNodalFlagStates(ModelPart& part, const Flag& flag,
+                        py::array_t<std::int8_t, py::array::c_style | py::array::forcecast> states) {
+  const auto& nodes = part.Nodes();
+  if (static_cast<std::size_t>(states.size()) != nodes.size())
+    throw InputError(Concat("expected ", nodes.size(), " states of ", flag.Name(), " on ", part.FullName(), ", got ",
+                            states.size()));
+  const std::int8_t* s = states.data();
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    if (s[i] < 0)
+      nodes[i]->GetFlags().Reset(flag);
+    else
+      nodes[i]->Set(flag, s[i] > 0);
+  }
+}
+
+/// -1 no DoF of the variable, 0 free, 1 fixed; per node in node-id order.
+py::array_t<std::int8_t> NodalFixity(const ModelPart& part, const VariableData& var) {
+  const auto& dof_variable = AsDouble(var);
+  py::array_t<std::int8_t> out(py::ssize_t(part.NumberOfNodes()));
+  auto* d = out.mutable_data();
+  std::size_t i = 0;
+  for (const Node* n : part.Nodes()) {
+    const Dof* dof = n->FindDof(dof_variable);
+    d[i++] = dof ? static_cast<std::int8_t>(dof->fixed) : std::int8_t(-1);
+  }
+  return out;
+}
+
+void SetNodalFixity(ModelPart& part, const VariableData& var,
+                    py::array_t<bool, py::array::c_style | py::array::forcecast> fixed) {
+  const auto& dof_variable = AsDouble(var);
+  const auto& nodes = part.Nodes();
+  if (static_cast<std::size_t>(fixed.size()) != nodes.size())
+    throw InputError(Concat("expected ", nodes.size(), " fixities of ", var.Name(), " on ", part.FullName(), ", got ",
+                            fixed.size()));
+  const bool* f = fixed.data();
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    if (Dof* dof = nodes[i]->FindDof(dof_variable)) dof->fixed = f[i];
+}
+
 /// Elements or conditions grouped by geometry name: {name: (ids (m,), node ids (m, k))}.
 template <class Container>
 py::dict Connectivity(const Container& entities) {
@@ -191,7 +277,15 @@ Class& BindValues(Class& cls) {
             return std::any_of(items.begin(), items.end(),
                                [&](const auto& item) { return item.first == (v.IsComponent() ? v.Source() : &v); });
           },
-          py::arg("variable"), "Whether a non-historical value of the variable is set.");
+          py::arg("variable"), "Whether a non-historical value of the variable is set.")
+      .def(
+          "ValueNames",
+          [](Owner& o) {
+            std::vector<std::string> names;
+            for (const auto& item : ValuesOf(o).Items()) names.push_back(item.first->Name());
+            return names;
+          },
+          "Names of the variables that have a non-historical value here, in insertion order.");
 }
 
 /// Is and Set of the flags of a node, entity, model part or process info.
@@ -385,6 +479,14 @@ void AddModelToPython(py::module_& m) {
            "Makes a variable historical on the nodes of the whole tree (before nodes are created).")
       .def("HasNodalSolutionStepVariable", &ModelPart::HasNodalSolutionStepVariable, py::arg("variable"),
            "Whether a variable is historical.")
+      .def(
+          "NodalSolutionStepVariableNames",
+          [](const ModelPart& p) {
+            std::vector<std::string> names;
+            for (const VariableData* v : p.GetNodalSolutionStepVariablesList().Variables()) names.push_back(v->Name());
+            return names;
+          },
+          "Names of the historical variables, in the order of their storage.")
       .def("GetBufferSize", &ModelPart::GetBufferSize, "Number of steps of nodal history kept.")
       .def("SetBufferSize", &ModelPart::SetBufferSize, py::arg("buffer_size"),
            "Resizes the history of every node of the tree.")
@@ -486,6 +588,56 @@ void AddModelToPython(py::module_& m) {
             return out;
           },
           py::arg("flag"), "Whether each node has the flag set, shape (n,), in node-id order.")
+      .def(
+          "SetNodeCoordinates",
+          [](ModelPart& p, py::array_t<double, py::array::c_style | py::array::forcecast> coordinates, bool initial) {
+            const auto& nodes = p.Nodes();
+            if (static_cast<std::size_t>(coordinates.size()) != 3 * nodes.size())
+              throw InputError(Concat("expected coordinates of shape (", nodes.size(), ", 3) for ", p.FullName(),
+                                      ", got ", coordinates.size(), " values"));
+            const double* c = coordinates.data();
+            for (std::size_t i = 0; i < nodes.size(); ++i) {
+              Array3& x = initial ? nodes[i]->X0() : nodes[i]->Coordinates();
+              x = Array3(c[3 * i], c[3 * i + 1], c[3 * i + 2]);
+            }
+          },
+          py::arg("coordinates"), py::arg("initial") = false,
+          "Sets the current (or initial) coordinates of every node from an array (n, 3) in node-id order.")
+      .def(
+          "NodalNonHistoricalVariableNames",
+          [](const ModelPart& p) {
+            std::set<std::string> names;
+            for (const Node* n : p.Nodes())
+              for (const auto& item : n->Data().Items()) names.insert(item.first->Name());
+            return std::vector<std::string>(names.begin(), names.end());
+          },
+          "Sorted names of the variables of which some node of the part holds a non-historical value.")
+      .def(
+          "HasNodalNonHistoricalValues",
+          [](const ModelPart& p, const VariableData& v) {
+            const VariableData* key = v.IsComponent() ? v.Source() : &v;
+            py::array_t<bool> out(py::ssize_t(p.NumberOfNodes()));
+            auto* d = out.mutable_data();
+            std::size_t i = 0;
+            for (const Node* n : p.Nodes()) {
+              const auto& items = n->Data().Items();
+              d[i++] = std::any_of(items.begin(), items.end(), [&](const auto& item) { return item.first == key; });
+            }
+            return out;
+          },
+          py::arg("variable"), "Whether each node holds a non-historical value of the variable, shape (n,).")
+      .def("SetNodalNonHistoricalValues", &SetNodalNonHistoricalValues, py::arg("variable"), py::arg("values"),
+           py::arg("held") = py::none(),
+           "Sets non-historical values (double, int, bool or Array3) of every node from an array (n,) or (n, 3) "
+           "in node-id order; with 'held' (bool (n,)) the nodes marked false lose their value instead.")
+      .def("GetNodalFlagStates", &NodalFlagStates, py::arg("flag"),
+           "State of a flag on each node, int8 (n,): -1 undefined, 0 reset, 1 set.")
+      .def("SetNodalFlagStates", &SetNodalFlagStates, py::arg("flag"), py::arg("states"),
+           "Sets the flag of every node from int8 states (n,): -1 undefined, 0 reset, 1 set.")
+      .def("GetNodalFixity", &NodalFixity, py::arg("variable"),
+           "Fixity of the DoF of a double variable on each node, int8 (n,): -1 no such DoF, 0 free, 1 fixed.")
+      .def("SetNodalFixity", &SetNodalFixity, py::arg("variable"), py::arg("fixed"),
+           "Fixes (true) or frees (false) the DoF of a double variable on each node that has it; bool (n,).")
       .def(
           "EntityConnectivity",
           [](const ModelPart& p, bool conditions) {

@@ -7,6 +7,8 @@ Initialize: import mdpa and materials, add DoFs, create the processes (lists in 
 each step:  advance time, ExecuteInitializeSolutionStep, solver InitializeSolutionStep, Predict,
             SolveSolutionStep, solver FinalizeSolutionStep, ExecuteFinalizeSolutionStep, output
 Finalize:   ExecuteFinalize, solver Finalize
+A resumed run (model_import_settings.input_type "rest") does all of Initialize, then overwrites the
+state with the checkpoint's and goes on from its TIME and STEP.
 """
 from __future__ import annotations
 
@@ -17,6 +19,7 @@ from contextlib import contextmanager
 from . import _core
 from .process_factory import create_process_lists, naming_the_item
 from .project_parameters import read_project_parameters
+from .restart import attach_run
 from .solvers import create_solver
 from .utilities import warn
 
@@ -58,6 +61,7 @@ class StructuralMechanicsAnalysis:
         self.solver.AddDofs()
         self.processes = self._create_processes("processes")
         self.output_processes = self._create_processes("output_processes")
+        attach_run(self._all_processes(), self.solver.mesh_record)
         for process in self._all_processes():
             with naming_the_item(getattr(process, "item_where", "")):
                 process.ExecuteInitialize()
@@ -68,8 +72,16 @@ class StructuralMechanicsAnalysis:
         for process in self._all_processes():
             with naming_the_item(getattr(process, "item_where", "")):
                 process.ExecuteBeforeSolutionLoop()
-        self.time = self.start_time
-        self.solver.GetComputingModelPart().ProcessInfo.SetValue(_core.TIME, self.time)
+        checkpoint = self.solver.checkpoint
+        if checkpoint is None:
+            self.time = self.start_time
+            self.solver.GetComputingModelPart().ProcessInfo.SetValue(_core.TIME, self.time)
+            return
+        # A resumed run: everything above was built as in a fresh run; the state is the checkpoint's.
+        checkpoint.restore_model(self.solver.main_model_part)
+        checkpoint.restore_processes(self._all_processes())
+        checkpoint.close()
+        self.time, self.step = checkpoint.time, checkpoint.step
 
     def Check(self) -> None:
         self.solver.Check()
@@ -122,7 +134,7 @@ class StructuralMechanicsAnalysis:
             return
         for process in self._all_processes():
             process.ExecuteBeforeOutputStep()
-        for process in writing:
+        for process in sorted(writing, key=lambda p: p.after_other_outputs):
             process.PrintOutput()
         for process in self._all_processes():
             process.ExecuteAfterOutputStep()

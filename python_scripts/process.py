@@ -38,9 +38,22 @@ class Process:
         """The result files this process has written so far (for the end-of-run summary)."""
         return []
 
+    def RestartState(self) -> dict | None:
+        """What a restart checkpoint keeps of this process at the end of a step (JSON-serialisable;
+        None: nothing, the process works from the model state alone)."""
+        return None
+
+    def LoadRestartState(self, state: dict) -> None:
+        """Takes back what ``RestartState()`` returned, after ``ExecuteBeforeSolutionLoop`` of a
+        resumed run."""
+
 
 class OutputProcess(Process):
-    """A process that also writes results when ``IsOutputStep()`` is true."""
+    """A process that also writes results when ``IsOutputStep()`` is true. With
+    ``after_other_outputs`` it writes after the others of the step (a checkpoint records their
+    finished state)."""
+
+    after_other_outputs = False
 
     def IsOutputStep(self) -> bool:
         return False

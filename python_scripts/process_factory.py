@@ -6,7 +6,7 @@ ProjectParameters.json (spec 1.4).
 registry form ``{"name", "parameters"}``. Dispatch is by (``kratos_module`` without the
 ``KratosMultiphysics.`` prefix, ``python_module``) in ``PROCESS_REGISTRY``; ``process_name``,
 ``help`` and ``check`` are informational only. The registry is filled from the packages below
-this module: ``processes`` (kernel processes), ``contact_processes`` and ``output``.
+this module: ``processes`` (kernel processes), ``contact_processes``, ``output`` and ``restart``.
 """
 from __future__ import annotations
 
@@ -18,6 +18,7 @@ from .contact_processes import CONTACT_MODULE, CONTACT_PROCESSES
 from .output import OUTPUT_PROCESSES
 from .process import Process
 from .processes import KERNEL_PROCESSES
+from .restart import RESTART_PROCESSES
 from .utilities import nearest
 
 KERNEL = "KratosMultiphysics"
@@ -26,6 +27,7 @@ KERNEL = "KratosMultiphysics"
 PROCESS_REGISTRY: dict[tuple[str, str], type[Process]] = {
     **{(KERNEL, name): cls for name, cls in KERNEL_PROCESSES.items()},
     **{(KERNEL, name): cls for name, cls in OUTPUT_PROCESSES.items()},
+    **{(KERNEL, name): cls for name, cls in RESTART_PROCESSES.items()},
     **{(CONTACT_MODULE, name): cls for name, cls in CONTACT_PROCESSES.items()},
 }
 

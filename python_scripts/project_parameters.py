@@ -2,6 +2,7 @@
 and 2.3, translated into the current layout before anything is validated."""
 from __future__ import annotations
 
+import json
 import os
 
 from . import _core
@@ -11,6 +12,13 @@ TOP_LEVEL_KEYS = ["problem_data", "solver_settings", "processes", "output_proces
                   "restart_options", "constraints_data", "constraints_process_list",
                   "loads_process_list", "contact_processes", "output_configuration"]
 LEGACY_PROCESS_LISTS = ["constraints_process_list", "loads_process_list", "contact_processes"]
+#: The legacy top-level restart block (pre-2018 CSMA inputs; Kratos no longer reads it, we do)
+RESTART_OPTIONS_DEFAULTS = """{
+    "SaveRestart": false,
+    "RestartFrequency": 0,
+    "LoadRestart": false,
+    "Restart_Step": 0
+}"""
 PROBLEM_DATA_DEFAULTS = """{
     "problem_name": "",
     "parallel_type": "OpenMP",
@@ -37,7 +45,7 @@ def migrate_project_parameters(params: _core.Parameters) -> None:
     unknown top-level keys, moves legacy process lists into ``processes`` and legacy
     ``problem_data`` keys into ``solver_settings``."""
     for key in list(params.keys()):
-        if key.startswith("_") or key in ("restart_options", "constraints_data"):
+        if key.startswith("_") or key == "constraints_data":
             params.RemoveValue(key)
     params.CheckKeys(TOP_LEVEL_KEYS)
     for key in ("problem_data", "solver_settings"):
@@ -88,9 +96,39 @@ def migrate_project_parameters(params: _core.Parameters) -> None:
             stepping = solver["time_stepping"]
         stepping.AddValue("time_step", problem_data["time_step"])
     problem_data.RemoveValue("time_step")
+    if params.Has("restart_options"):
+        _migrate_restart_options(params)
     if problem_data["parallel_type"].GetString() not in ("OpenMP", "MPI"):
         raise _core.InputError(f"{problem_data.Where()}.parallel_type: expected \"OpenMP\" or \"MPI\", "
                                f"got \"{problem_data['parallel_type'].GetString()}\"")
     if problem_data["parallel_type"].GetString() == "MPI":
         raise _core.NotImplementedFeatureError(
             f"{problem_data.Where()}.parallel_type: \"MPI\" runs are not implemented yet; use \"OpenMP\"")
+
+
+def _migrate_restart_options(params: _core.Parameters) -> None:
+    """``restart_options`` into today's settings: ``SaveRestart`` adds a ``save_restart_process``
+    writing every ``RestartFrequency`` steps (output list ``restart_options``); ``LoadRestart``
+    resumes from the checkpoint of step ``Restart_Step`` (``model_import_settings.input_type``
+    \"rest\"). Both name the checkpoints after solver_settings.model_part_name."""
+    options = params["restart_options"]
+    options.ValidateAndAssignDefaults(_core.Parameters(RESTART_OPTIONS_DEFAULTS))
+    solver = params["solver_settings"]
+    name = solver["model_part_name"].GetString() if solver.Has("model_part_name") else ""
+    if options["SaveRestart"].GetBool():
+        if not params.Has("output_processes"):
+            params.AddValue("output_processes", _core.Parameters())
+        save = {"python_module": "save_restart_process", "kratos_module": "KratosMultiphysics",
+                "Parameters": {"model_part_name": name, "restart_control_type": "step",
+                               "restart_save_frequency": float(options["RestartFrequency"].GetInt())}}
+        params["output_processes"].AddValue("restart_options", _core.Parameters(json.dumps([save])))
+    if options["LoadRestart"].GetBool():
+        if not solver.Has("model_import_settings"):
+            solver.AddValue("model_import_settings", _core.Parameters())
+        imports = solver["model_import_settings"]
+        for key, value in (("input_type", "rest"), ("input_filename", name),
+                           ("restart_load_file_label", str(options["Restart_Step"].GetInt()))):
+            if imports.Has(key):
+                imports.RemoveValue(key)
+            imports.AddValue(key, _core.Parameters(json.dumps(value)))
+    params.RemoveValue("restart_options")

@@ -5,6 +5,7 @@ from __future__ import annotations
 from .. import _core
 from ..process import Process
 from ..processes.model_part_resolution import resolve_model_part
+from ..utilities import warn
 from . import _settings
 from .initial_overlap import check_initial_overlap
 
@@ -128,6 +129,19 @@ class SearchBaseProcess(Process):
                 search.UpdateMortarConditions()
             self._steps_since_search = 0
         self._steps_since_search += 1
+
+    def RestartState(self):
+        return {"steps_since_search": self._steps_since_search}
+
+    def LoadRestartState(self, state) -> None:
+        """The contact pairs are not in a checkpoint: the first resumed step searches. With
+        database_step_update > 1 the uninterrupted run may have reused older pairs there."""
+        update = max(1, self.settings["search_parameters"]["database_step_update"].GetInt())
+        since = state["steps_since_search"]
+        if since is not None and since < update:
+            warn(f"{self.python_module}: database_step_update is {update}: the resumed run searches at its first "
+                 f"step, where the uninterrupted run would have reused the pairs of {since} step(s) before; "
+                 "the results differ slightly")
 
     def ExecuteFinalizeSolutionStep(self) -> None:
         # Here rather than before the output (as Kratos clears): the json processes read the

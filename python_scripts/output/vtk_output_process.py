@@ -28,7 +28,7 @@ from ..processes.bulk_data import (
     variable_by_name,
 )
 from ..processes.model_part_resolution import resolve_model_part
-from ..utilities import publish_file, write_text_atomically
+from ..utilities import publish_file, warn, write_text_atomically
 from .vtk_cell_types import VTK_CELL_TYPES
 from .vtk_cell_types import VTK_NODE_ORDER as _VTK_ORDER
 
@@ -278,6 +278,22 @@ class VtkOutputProcess(OutputProcess):
 
     def OutputFiles(self) -> list[str]:
         return [path for writer in self.writers for path in writer.written()]
+
+    def RestartState(self):
+        """The step counter, the next output and each PVD collection, so that a resumed run goes on
+        with the same file labels and appends to the collections."""
+        return {"step_count": self.step_count, "next_output": self.next_output,
+                "pvd_entries": {writer.base_name: writer.pvd_entries for writer in self.writers}}
+
+    def LoadRestartState(self, state) -> None:
+        self.step_count = state["step_count"]
+        self.next_output = state["next_output"]
+        for writer in self.writers:
+            writer.pvd_entries = [(time, name) for time, name in state["pvd_entries"].get(writer.base_name, [])]
+            if self.file_format == "xdmf":
+                warn(f"{self.python_module}: the XDMF series {writer.base_name}.xdmf of a resumed run holds only "
+                     "the steps after the restart; use file_format \"binary\" (VTU + PVD) to append to the "
+                     "saved run's collection")
 
     # --- data ----------------------------------------------------------------------------------
     def _time(self) -> float:

@@ -115,3 +115,9 @@ class JsonResultsProcess(Process):
         self.counter = TimeCounter(s["time_frequency"].GetDouble())
         self.model_part = None
         self.unset = UnsetVariableWarning(self.NAME)
+
+    def RestartState(self):
+        return {"elapsed": self.counter.elapsed}
+
+    def LoadRestartState(self, state) -> None:
+        self.counter.elapsed = state["elapsed"]

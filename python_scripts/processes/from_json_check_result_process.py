@@ -126,6 +126,13 @@ class FromJsonCheckResultProcess(JsonResultsProcess):
                                    f"at time {time:.10g} (tolerance {self.tolerance:g}, relative_tolerance "
                                    f"{self.relative_tolerance:g}):\n  {shown}{more}")
 
+    def RestartState(self):
+        return {**super().RestartState(), "checks_done": self.checks_done}
+
+    def LoadRestartState(self, state) -> None:
+        super().LoadRestartState(state)
+        self.checks_done = state["checks_done"]
+
     def _failure(self, entity: str, key: str, time: float, value: float, reference: float) -> str:
         return (f"{entity}, {key}, time {time:.10g}: value {value:.10g} != reference {reference:.10g} "
                 f"(difference {abs(value - reference):.3g}; tolerance {self.tolerance:g}, "

@@ -104,5 +104,13 @@ class JsonOutputProcess(JsonResultsProcess):
     def OutputFiles(self) -> list[str]:
         return [self.file_name] if self.written else []
 
+    def RestartState(self):
+        """The values recorded so far: a resumed run writes the whole series."""
+        return {**super().RestartState(), "data": self.data}
+
+    def LoadRestartState(self, state) -> None:
+        super().LoadRestartState(state)
+        self.data = state["data"]
+
     def ExecuteFinalize(self) -> None:
         self.write()

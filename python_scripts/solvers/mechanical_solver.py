@@ -2,10 +2,12 @@
 ``solver_settings`` (static, implicit dynamic with Bossak / Newmark, explicit central differences)."""
 from __future__ import annotations
 
+import json
 import os
 
 from .. import _core
 from ..processes.model_part_resolution import resolve_model_part
+from ..restart import Checkpoint, mesh_record, restart_file_name, restart_folder
 from ..utilities import nearest
 from .mesh_checks import check_imported_mesh
 from .meshio_import import GROUP_KEYS as MESHIO_KEYS
@@ -42,6 +44,8 @@ class MechanicalSolver:
         self._check_names()
         self.strategy = None
         self.pending_fixities = None
+        self.checkpoint = None  # the restart checkpoint to resume from (input_type "rest")
+        self.mesh_record = None  # the mesh file and its import settings, for checkpoints
         self.AddVariables()
 
     # -- set-up -------------------------------------------------------------------------------
@@ -114,12 +118,45 @@ class MechanicalSolver:
     def ImportModelPart(self) -> None:
         """Reads the mesh named by ``model_import_settings``: ``input_type`` ``"mdpa"`` (Kratos), or
         mortarcontact's ``"gmsh"`` / ``"meshio"`` with ``element_names``, ``condition_names`` and
-        ``properties_ids`` (see ``solvers/meshio_import.py``), then the materials."""
+        ``properties_ids`` (see ``solvers/meshio_import.py``), then the materials. ``"rest"`` opens
+        the checkpoint named by ``input_filename``, ``restart_load_file_label``,
+        ``input_output_path`` and ``load_restart_files_from_folder`` (Kratos' keys) and reads the
+        mesh it was written for; the analysis stage restores the state after the set-up."""
         imports = self.settings["model_import_settings"]
-        where = imports.Where()
-        input_type = imports["input_type"].GetString()
         # Nodes are created with the buffer in force, so it is set before the mesh is read.
         self.main_model_part.SetBufferSize(max(self.settings["buffer_size"].GetInt(), self.minimum_buffer_size()))
+        if imports["input_type"].GetString() == "rest":
+            self.checkpoint = self._open_checkpoint(imports)
+            recorded = {k: v for k, v in self.checkpoint.mesh.items() if k not in ("mesh_file", "sha256")}
+            recorded["input_filename"] = self.checkpoint.mesh["mesh_file"]
+            path = self._import_mesh(_core.Parameters(json.dumps(recorded), f"{self.checkpoint.path} (mesh)"))
+            self.checkpoint.check_mesh_file(path)
+            self.mesh_record = self.checkpoint.mesh
+        else:
+            path = self._import_mesh(imports)
+            self.mesh_record = mesh_record(imports, path) if path is not None else None
+        self._import_materials()
+
+    def _open_checkpoint(self, imports) -> Checkpoint:
+        where = imports.Where()
+        label = imports["restart_load_file_label"].GetString()
+        if not label:
+            raise _core.InputError(f"{where}.restart_load_file_label: required for input_type \"rest\" (the time "
+                                   "or step in the checkpoint's name, e.g. \"0.5\" for Structure_0.5.rest)")
+        name = imports["input_filename"].GetString() or self.main_model_part.Name
+        folder, stem = restart_folder(name, imports["input_output_path"].GetString(),
+                                      imports["load_restart_files_from_folder"].GetBool())
+        path = os.path.join(folder, restart_file_name(stem, label))
+        found = self._find(os.path.relpath(path))
+        if found is None:
+            raise _core.InputError(f"{where}: restart checkpoint not found; looked for "
+                                   + " and ".join(os.path.abspath(c) for c in self._candidates(os.path.relpath(path))))
+        return Checkpoint(found)
+
+    def _import_mesh(self, imports) -> str | None:
+        """Reads the mesh of an mdpa / gmsh / meshio ``imports`` block; the file read, or None."""
+        where = imports.Where()
+        input_type = imports["input_type"].GetString()
         if input_type in ("mdpa", "gmsh", "meshio") and not imports["input_filename"].GetString():
             raise _core.InputError(f"{where}.input_filename: required for input_type \"{input_type}\"")
         filename = imports["input_filename"].GetString()
@@ -138,16 +175,18 @@ class MechanicalSolver:
             self.pending_fixities = _core.ReadModelPart(
                 self.main_model_part, path, imports["ignore_variables_not_in_solution_step_data"].GetBool())
             check_imported_mesh(self.main_model_part, path)
-        elif input_type in ("gmsh", "meshio"):
+            return path
+        if input_type in ("gmsh", "meshio"):
             path = self._locate(filename, f"{where}.input_filename")
             mesh, node_ids = read_mesh(path, input_type, where)
             import_mesh(self.main_model_part, mesh, node_ids, imports, self.domain_size, path)
             check_imported_mesh(self.main_model_part, path)
-        elif input_type != "use_input_model_part":
-            valid = ("mdpa", "gmsh", "meshio", "use_input_model_part")
+            return path
+        if input_type != "use_input_model_part":
+            valid = ("mdpa", "gmsh", "meshio", "rest", "use_input_model_part")
             raise _core.NotImplementedFeatureError(f"{where}.input_type: \"{input_type}\" is not supported"
                                                    f"{nearest(input_type, valid)}; valid: {', '.join(valid)}")
-        self._import_materials()
+        return None
 
     def _import_materials(self) -> None:
         filename = self.settings["material_import_settings"]["materials_filename"].GetString()

@@ -24,7 +24,11 @@ STRUCTURAL_DEFAULTS = """{
         "reorder_consecutive": false,
         "element_names": {},
         "condition_names": {},
-        "properties_ids": {}
+        "properties_ids": {},
+        "restart_load_file_label": "",
+        "input_output_path": "",
+        "load_restart_files_from_folder": true,
+        "serializer_trace": "no_trace"
     },
     "material_import_settings": {
         "materials_filename": ""

@@ -1,0 +1,263 @@
+"""Restart checkpoints: the state of a run at the end of a step, in an HDF5 file of our own layout.
+
+A checkpoint does not hold the mesh. A resumed run reads the original mesh again (the checkpoint
+records which file and its SHA-256), builds the interface, the processes and the strategy as a
+fresh run does, and then overwrites the state with the checkpoint's:
+
+``/nodes``           ``ids``; ``coordinates`` and ``initial_coordinates`` (n, 3);
+                     ``historical/<VAR>``: every buffer position, (buffer, n) or (buffer, n, 3);
+                     ``non_historical/<VAR>/{values, held}`` (held: which nodes have a value);
+                     ``flags/<FLAG>`` int8 (-1 undefined, 0 reset, 1 set);
+                     ``fixity/<DOF VAR>`` int8 (-1 no DoF, 0 free, 1 fixed)
+``/process_info``    one attribute per ProcessInfo value (TIME, STEP, DELTA_TIME, SCALE_FACTOR,
+                     INITIAL_PENALTY, ...) and ``flags``, the names of its set flags
+``/processes``       one JSON attribute per process of the run, in creation order: its class,
+                     its place in ProjectParameters.json and the state it returned from
+                     ``RestartState()`` (output collections, sampling counters, ...)
+root attributes      ``format``, ``version``, ``model_part_name``, ``buffer_size``, ``time``, ``step``,
+                     ``mesh``: JSON of the import settings, the mesh file and its SHA-256
+
+Contact pairs are not stored: the contact search rebuilds them from the restored coordinates at
+the first resumed step, as the uninterrupted run does at every step (``database_step_update`` 1).
+"""
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import tempfile
+
+import numpy as np
+
+from .. import _core
+from ..utilities import publish_file
+
+FORMAT = "mortarcontact restart checkpoint"
+VERSION = 1
+
+
+def file_sha256(path: str) -> str:
+    digest = hashlib.sha256()
+    with open(path, "rb") as stream:
+        for block in iter(lambda: stream.read(1 << 20), b""):
+            digest.update(block)
+    return digest.hexdigest()
+
+
+def mesh_record(import_settings: _core.Parameters, path: str) -> dict:
+    """What a checkpoint remembers of the mesh: the import settings as the run used them, the file
+    found (absolute) and its SHA-256."""
+    record = json.loads(import_settings.WriteJsonString())
+    record["mesh_file"] = os.path.abspath(path)
+    record["sha256"] = file_sha256(path)
+    return record
+
+
+def _dof_variables(part) -> list[str]:
+    """Double variables (or components) of the historical list that some node has a DoF of."""
+    names = []
+    for name in part.NodalSolutionStepVariableNames():
+        variable = _core.GetVariable(name)
+        candidates = [f"{name}_{c}" for c in "XYZ"] if variable.Type() == _core.ValueType.Array3 else [name]
+        names += [c for c in candidates if np.any(part.GetNodalFixity(_core.GetVariable(c)) >= 0)]
+    return names
+
+
+def write_checkpoint(path: str, part, mesh: dict, processes) -> None:
+    """Writes the state of the root model part ``part`` and of ``processes`` to ``path``
+    atomically (temporary file in the same folder, then renamed)."""
+    import h5py
+
+    folder = os.path.dirname(os.path.abspath(path))
+    os.makedirs(folder, exist_ok=True)
+    handle, temporary = tempfile.mkstemp(prefix=".", suffix=".rest.tmp", dir=folder)
+    os.close(handle)
+    try:
+        with h5py.File(temporary, "w") as f:
+            _write(f, part, mesh, processes)
+        publish_file(temporary, path)
+    except BaseException:
+        if os.path.exists(temporary):
+            os.remove(temporary)
+        raise
+
+
+def _write(f, part, mesh: dict, processes) -> None:
+    info = part.ProcessInfo
+    f.attrs.update(format=FORMAT, version=VERSION, model_part_name=part.Name, buffer_size=part.GetBufferSize(),
+                   time=float(info.GetValue(_core.TIME)), step=int(info.GetValue(_core.STEP)),
+                   mesh=json.dumps(mesh))
+    nodes = f.create_group("nodes")
+    nodes["ids"] = part.NodeIds()
+    nodes["coordinates"] = part.NodeCoordinates(initial=False)
+    nodes["initial_coordinates"] = part.NodeCoordinates(initial=True)
+    historical = nodes.create_group("historical")
+    for name in part.NodalSolutionStepVariableNames():
+        variable = _core.GetVariable(name)
+        historical[name] = np.stack([part.GetNodalValues(variable, step=s) for s in range(part.GetBufferSize())])
+    non_historical = nodes.create_group("non_historical")
+    for name in part.NodalNonHistoricalVariableNames():
+        variable = _core.GetVariable(name)
+        if variable.Type() not in (_core.ValueType.Double, _core.ValueType.Int, _core.ValueType.Bool,
+                                   _core.ValueType.Array3):
+            raise _core.NotImplementedFeatureError(
+                f"restart: the nodal value {name} ({variable.Type().name}) cannot be saved in a checkpoint")
+        group = non_historical.create_group(name)
+        group["values"] = part.GetNodalNonHistoricalValues(variable)
+        group["held"] = part.HasNodalNonHistoricalValues(variable)
+    flags = nodes.create_group("flags")
+    for name in _core.FlagNames():
+        states = part.GetNodalFlagStates(_core.GetFlag(name))
+        if np.any(states >= 0):
+            flags[name] = states
+    fixity = nodes.create_group("fixity")
+    for name in _dof_variables(part):
+        fixity[name] = part.GetNodalFixity(_core.GetVariable(name))
+    group = f.create_group("process_info")
+    for name in info.ValueNames():
+        if name == "IS_RESTARTED":  # says how this run started, not what state it is in
+            continue
+        value = info.GetValue(_core.GetVariable(name))
+        group.attrs[name] = value if isinstance(value, str) else np.asarray(value)
+    group.attrs["flags"] = json.dumps([name for name in _core.FlagNames() if info.Is(_core.GetFlag(name))])
+    states = f.create_group("processes")
+    for index, process in enumerate(processes):
+        states.attrs[str(index)] = json.dumps({"class": type(process).__name__,
+                                               "where": getattr(process, "item_where", ""),
+                                               "state": process.RestartState()})
+
+
+class Checkpoint:
+    """A checkpoint opened for loading; every check names the file and what differs."""
+
+    def __init__(self, path: str):
+        import h5py
+
+        self.path = path
+        if not os.path.isfile(path):
+            raise _core.InputError(f"restart: checkpoint {path} not found")
+        try:
+            self.file = h5py.File(path, "r")
+        except OSError as error:
+            raise _core.InputError(f"restart: {path} is not a readable checkpoint (HDF5: {error}); "
+                                   "Kratos' serializer .rest files cannot be read") from None
+        attrs = self.file.attrs
+        if attrs.get("format") != FORMAT:
+            raise _core.InputError(f"restart: {path} is an HDF5 file but not a mortarcontact checkpoint")
+        if int(attrs["version"]) != VERSION:
+            raise _core.InputError(f"restart: {path} has checkpoint version {int(attrs['version'])}; "
+                                   f"this mortarcontact reads version {VERSION}")
+        try:
+            self.mesh = json.loads(attrs["mesh"])
+            self.time = float(attrs["time"])
+            self.step = int(attrs["step"])
+            self.model_part_name = str(attrs["model_part_name"])
+            self.buffer_size = int(attrs["buffer_size"])
+            missing = [group for group in ("nodes", "process_info", "processes") if group not in self.file]
+            if missing:
+                raise KeyError(f"no group {missing[0]}")
+        except (KeyError, ValueError) as error:
+            raise _core.InputError(f"restart: {path} is incomplete or corrupt ({error})") from None
+
+    def close(self) -> None:
+        self.file.close()
+
+    # -- checks -------------------------------------------------------------------------------
+    def check_mesh_file(self, path: str) -> None:
+        """The mesh read for the resumed run must be the one the checkpoint was written for."""
+        if file_sha256(path) != self.mesh["sha256"]:
+            raise _core.InputError(f"restart: {self.path} was written for the mesh {self.mesh['mesh_file']} "
+                                   f"(SHA-256 {self.mesh['sha256'][:12]}...), but {os.path.abspath(path)} differs "
+                                   "from it; resume with the mesh the checkpoint was written for")
+
+    def _check_model(self, part) -> None:
+        where = f"restart: {self.path}"
+        if part.Name != self.model_part_name:
+            raise _core.InputError(f"{where} holds model part '{self.model_part_name}', not '{part.Name}'")
+        ids = self.file["nodes/ids"][()]
+        if ids.shape != (part.NumberOfNodes(),):
+            raise _core.InputError(f"{where} has {ids.size} nodes; {part.Name} has {part.NumberOfNodes()}")
+        differ = np.flatnonzero(ids != part.NodeIds())
+        if differ.size:
+            raise _core.InputError(f"{where}: node ids differ from {part.Name}'s, first at position {differ[0]} "
+                                   f"({ids[differ[0]]} in the checkpoint, {part.NodeIds()[differ[0]]} in the model)")
+        if self.buffer_size != part.GetBufferSize():
+            raise _core.InputError(f"{where} has buffer_size {self.buffer_size}; the solver uses "
+                                   f"{part.GetBufferSize()} (solver_settings.buffer_size and the scheme)")
+        saved = sorted(self.file["nodes/historical"].keys())
+        present = sorted(part.NodalSolutionStepVariableNames())
+        if saved != present:
+            missing = sorted(set(saved) - set(present))
+            extra = sorted(set(present) - set(saved))
+            raise _core.InputError(f"{where}: the nodal (historical) variables differ: in the checkpoint only "
+                                   f"{missing or 'none'}, in the model only {extra or 'none'} (same solver "
+                                   "settings and contact formulation as the saved run needed)")
+
+    # -- restore ------------------------------------------------------------------------------
+    def restore_model(self, part) -> None:
+        """Overwrites the nodal data and the ProcessInfo of the root model part ``part``."""
+        self._check_model(part)
+        nodes = self.file["nodes"]
+        part.SetNodeCoordinates(nodes["initial_coordinates"][()], initial=True)
+        part.SetNodeCoordinates(nodes["coordinates"][()], initial=False)
+        for name, values in nodes["historical"].items():
+            variable = _core.GetVariable(name)
+            for step, step_values in enumerate(values[()]):
+                part.SetNodalValues(variable, step_values, step=step)
+        no_node = np.zeros(part.NumberOfNodes(), dtype=bool)
+        for name in part.NodalNonHistoricalVariableNames():
+            if name not in nodes["non_historical"]:  # set by the fresh set-up, absent from the saved run
+                variable = _core.GetVariable(name)
+                part.SetNodalNonHistoricalValues(variable, part.GetNodalNonHistoricalValues(variable), held=no_node)
+        for name, group in nodes["non_historical"].items():
+            part.SetNodalNonHistoricalValues(_core.GetVariable(self._known(name, "variable")), group["values"][()],
+                                             held=group["held"][()])
+        saved_flags = nodes["flags"]
+        for name in _core.FlagNames():
+            flag = _core.GetFlag(name)
+            if name in saved_flags:
+                part.SetNodalFlagStates(flag, saved_flags[name][()])
+            elif np.any(part.GetNodalFlagStates(flag) >= 0):
+                part.SetNodalFlagStates(flag, np.full(part.NumberOfNodes(), -1, dtype=np.int8))
+        for name, fixed in nodes["fixity"].items():
+            part.SetNodalFixity(_core.GetVariable(self._known(name, "variable")), fixed[()] > 0)
+        info = part.ProcessInfo
+        attrs = self.file["process_info"].attrs
+        for name, value in attrs.items():
+            if name == "flags":
+                continue
+            variable = _core.GetVariable(self._known(name, "variable"))
+            info.SetValue(variable, value.item() if isinstance(value, np.ndarray) and value.ndim == 0 else value)
+        set_flags = set(json.loads(attrs["flags"]))
+        for name in _core.FlagNames():
+            if info.Is(_core.GetFlag(name)) or name in set_flags:
+                info.Set(_core.GetFlag(name), name in set_flags)
+        info.SetValue(_core.IS_RESTARTED, True)
+
+    def restore_processes(self, processes) -> None:
+        """Hands each process the state it saved; the process lists must be those of the saved run."""
+        saved = self.file["processes"].attrs
+        records = [json.loads(saved[str(i)]) for i in range(len(saved))]
+        now = [type(p).__name__ for p in processes]
+        if [r["class"] for r in records] != now:
+            raise _core.InputError(f"restart: {self.path} was saved with the processes "
+                                   f"{[r['class'] for r in records]}; this run has {now} (the process lists of "
+                                   "ProjectParameters.json must be those of the saved run)")
+        for process, record in zip(processes, records):
+            if record["state"] is not None:
+                process.LoadRestartState(record["state"])
+
+    def _known(self, name: str, kind: str) -> str:
+        known = _core.VariableNames() if kind == "variable" else _core.FlagNames()
+        if name not in known:
+            raise _core.InputError(f"restart: {self.path} holds the {kind} {name}, which is not registered here "
+                                   "(a plugin of the saved run not loaded?)")
+        return name
+
+
+def pretty_time(time: float) -> float:
+    """The label of a time-controlled checkpoint: the time with 12 significant digits (Kratos' rule)."""
+    return float(f"{time:.12g}")
+
+
+__all__ = ["FORMAT", "VERSION", "Checkpoint", "file_sha256", "mesh_record", "pretty_time", "write_checkpoint"]
