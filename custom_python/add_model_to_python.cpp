@@ -102,18 +102,18 @@ py::array_t<double> NodalNonHistoricalValues(const ModelPart& part, const Variab
 
 /// Sets non-historical nodal values from (n,) or (n, 3) in node-id order; with `held`, the nodes
 /// marked false lose their value of the variable instead (as a checkpoint records them).
-void SetNodalNonHistoricalValues(ModelPart& part, const VariableData& var,
-                                 py::array_t<double, py::array::c_style | py::array::forcecast> values,
-                                 const std::optional<py::array_t<bool, py::array::c_style | py::array::forcecast>>& held) {
+void SetNodalNonHistoricalValues(
+    ModelPart& part, const VariableData& var, py::array_t<double, py::array::c_style | py::array::forcecast> values,
+    const std::optional<py::array_t<bool, py::array::c_style | py::array::forcecast>>& held) {
   const auto& nodes = part.Nodes();
   const std::size_t n = nodes.size();
   const std::size_t width = var.Type() == ValueType::Array3 ? 3 : 1;
   if (static_cast<std::size_t>(values.size()) != n * width)
-    throw InputError(Concat("expected ", n * width, " values for ", var.Name(), " on ", part.FullName(), ", got ",
-                            values.size()));
+    throw InputError(
+        Concat("expected ", n * width, " values for ", var.Name(), " on ", part.FullName(), ", got ", values.size()));
   if (held && static_cast<std::size_t>(held->size()) != n)
-    throw InputError(Concat("expected ", n, " entries of 'held' for ", var.Name(), " on ", part.FullName(), ", got ",
-                            held->size()));
+    throw InputError(
+        Concat("expected ", n, " entries of 'held' for ", var.Name(), " on ", part.FullName(), ", got ", held->size()));
   const double* v = values.data();
   const bool* mask = held ? held->data() : nullptr;
   for (std::size_t i = 0; i < n; ++i) {

@@ -11,7 +11,7 @@ fresh run does, and then overwrites the state with the checkpoint's:
                      ``fixity/<DOF VAR>`` int8 (-1 no DoF, 0 free, 1 fixed)
 ``/process_info``    one attribute per ProcessInfo value (TIME, STEP, DELTA_TIME, SCALE_FACTOR,
                      INITIAL_PENALTY, ...) and ``flags``, the names of its set flags
-``/processes``       one JSON attribute per process of the run, in creation order: its class,
+``/processes``       one JSON string per process of the run, in creation order: its class,
                      its place in ProjectParameters.json and the state it returned from
                      ``RestartState()`` (output collections, sampling counters, ...)
 root attributes      ``format``, ``version``, ``model_part_name``, ``buffer_size``, ``time``, ``step``,
@@ -122,9 +122,9 @@ def _write(f, part, mesh: dict, processes) -> None:
     group.attrs["flags"] = json.dumps([name for name in _core.FlagNames() if info.Is(_core.GetFlag(name))])
     states = f.create_group("processes")
     for index, process in enumerate(processes):
-        states.attrs[str(index)] = json.dumps({"class": type(process).__name__,
-                                               "where": getattr(process, "item_where", ""),
-                                               "state": process.RestartState()})
+        # A dataset, not an attribute: a JSON output's series outgrows HDF5's 64 kB attribute limit.
+        states[str(index)] = json.dumps({"class": type(process).__name__, "where": getattr(process, "item_where", ""),
+                                         "state": process.RestartState()})
 
 
 class Checkpoint:
@@ -236,8 +236,8 @@ class Checkpoint:
 
     def restore_processes(self, processes) -> None:
         """Hands each process the state it saved; the process lists must be those of the saved run."""
-        saved = self.file["processes"].attrs
-        records = [json.loads(saved[str(i)]) for i in range(len(saved))]
+        saved = self.file["processes"]
+        records = [json.loads(saved[str(i)][()]) for i in range(len(saved))]
         now = [type(p).__name__ for p in processes]
         if [r["class"] for r in records] != now:
             raise _core.InputError(f"restart: {self.path} was saved with the processes "

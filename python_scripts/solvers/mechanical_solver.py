@@ -2,13 +2,14 @@
 ``solver_settings`` (static, implicit dynamic with Bossak / Newmark, explicit central differences)."""
 from __future__ import annotations
 
+import glob
 import json
 import os
 
 from .. import _core
 from ..processes.model_part_resolution import resolve_model_part
 from ..restart import Checkpoint, mesh_record, restart_file_name, restart_folder
-from ..utilities import nearest
+from ..utilities import nearest, warn
 from .mesh_checks import check_imported_mesh
 from .meshio_import import GROUP_KEYS as MESHIO_KEYS
 from .meshio_import import import_mesh, read_mesh
@@ -128,7 +129,9 @@ class MechanicalSolver:
         if imports["input_type"].GetString() == "rest":
             self.checkpoint = self._open_checkpoint(imports)
             recorded = {k: v for k, v in self.checkpoint.mesh.items() if k not in ("mesh_file", "sha256")}
-            recorded["input_filename"] = self.checkpoint.mesh["mesh_file"]
+            # The file the saved run read; its own relative name when the case has moved since.
+            if os.path.isfile(self.checkpoint.mesh["mesh_file"]):
+                recorded["input_filename"] = self.checkpoint.mesh["mesh_file"]
             path = self._import_mesh(_core.Parameters(json.dumps(recorded), f"{self.checkpoint.path} (mesh)"))
             self.checkpoint.check_mesh_file(path)
             self.mesh_record = self.checkpoint.mesh
@@ -146,11 +149,18 @@ class MechanicalSolver:
         name = imports["input_filename"].GetString() or self.main_model_part.Name
         folder, stem = restart_folder(name, imports["input_output_path"].GetString(),
                                       imports["load_restart_files_from_folder"].GetBool())
-        path = os.path.join(folder, restart_file_name(stem, label))
-        found = self._find(os.path.relpath(path))
+        if imports["serializer_trace"].GetString() != "no_trace":
+            warn(f"{where}.serializer_trace: no effect here (checkpoints are HDF5 files, not Kratos' serializer's)")
+        path = os.path.relpath(os.path.join(folder, restart_file_name(stem, label)))
+        found = self._find(path)
         if found is None:
+            places = {os.path.dirname(candidate) or "." for candidate in self._candidates(path)}
+            saved = sorted({os.path.basename(found) for place in places
+                            for found in glob.glob(os.path.join(place, f"{stem}_*.rest"))})
             raise _core.InputError(f"{where}: restart checkpoint not found; looked for "
-                                   + " and ".join(os.path.abspath(c) for c in self._candidates(os.path.relpath(path))))
+                                   + " and ".join(os.path.abspath(c) for c in self._candidates(path))
+                                   + (f"{nearest(os.path.basename(path), saved)}; saved: {', '.join(saved)}" if saved
+                                      else "; no checkpoints of that name were saved there"))
         return Checkpoint(found)
 
     def _import_mesh(self, imports) -> str | None:

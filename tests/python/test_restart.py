@@ -43,6 +43,10 @@ def write_case(folder, case: str, *, solver_type: str, time_step: float, end_tim
     if materials:
         solver["material_import_settings"]["materials_filename"] = os.path.join(CSMA_CASES, materials)
     params["processes"].pop("json_check_process", None)
+    params["processes"]["json_output"] = [{
+        "python_module": "json_output_process", "kratos_module": "KratosMultiphysics",
+        "Parameters": {"model_part_name": "Structure", "output_file_name": "results.json",
+                       "output_variables": ["DISPLACEMENT_Y"], "time_frequency": 0.0}}]
     params["output_processes"] = {
         "restart_processes": [{"python_module": "save_restart_process", "kratos_module": "KratosMultiphysics",
                                "Parameters": {"model_part_name": "Structure", "restart_control_type": "step",
@@ -99,6 +103,7 @@ def run_and_resume(folder, case: str, solver_type: str, time_step: float, steps:
     run_cli(folder, write_case(folder, case, solver_type=solver_type, time_step=time_step, end_time=end), threads)
     kept = str(folder / "uninterrupted.rest")
     shutil.copy(checkpoint_path(folder, steps), kept)
+    shutil.copy(folder / "results.json", folder / "uninterrupted.json")
     resumed = run_cli(folder, write_case(folder, case, solver_type=solver_type, time_step=time_step, end_time=end,
                                          import_settings=resume_settings(2)), threads)
     return kept, resumed
@@ -127,6 +132,10 @@ def test_resumed_hertz_run_is_bit_identical(tmp_path, solver_type, time_step):
     with open(tmp_path / "VTK_Output" / "Structure.Contact.pvd") as f:
         pvd = f.read()
     assert [f"Structure.Contact_{i}.vtu" in pvd for i in range(1, 5)] == [True] * 4
+    # The JSON series holds the four steps, as the uninterrupted run's.
+    with open(tmp_path / "results.json") as f, open(tmp_path / "uninterrupted.json") as g:
+        series = json.load(f)
+        assert len(series["TIME"]) == 4 and series == json.load(g)
 
 
 def test_resumed_dynamic_patch_is_bit_identical(tmp_path):
@@ -236,8 +245,20 @@ def _resume(folder, **changes):
 
 
 def test_missing_checkpoint_names_the_file(saved_case):
-    with pytest.raises(mc.InputError, match=r"restart checkpoint not found; looked for .*Structure_3\.rest"):
+    with pytest.raises(mc.InputError, match=r"restart checkpoint not found; looked for .*Structure_3\.rest "
+                                            r"\(did you mean 'Structure_2\.rest'\?\); saved: Structure_2\.rest"):
         _resume(saved_case, label=3)
+
+
+def test_cli_reports_a_bad_checkpoint_without_traceback(saved_case):
+    with open(checkpoint_path(saved_case, 2), "r+b") as f:
+        f.truncate(300)
+    parameters = write_case(saved_case, HERTZ, solver_type="Static", time_step=0.025, end_time=0.1,
+                            import_settings=resume_settings(2))
+    done = subprocess.run([sys.executable, "-m", "mortarcontact", "run", parameters, "--no-progress"],
+                          cwd=saved_case, capture_output=True, text=True, timeout=600)
+    assert done.returncode == 2
+    assert "Structure_2.rest is not a readable checkpoint" in done.stderr and "Traceback" not in done.stderr
 
 
 def test_label_is_required(saved_case):
@@ -307,3 +328,30 @@ def test_checkpoint_class_reads_what_it_wrote(saved_case):
     checkpoint = Checkpoint(checkpoint_path(saved_case, 2))
     assert (checkpoint.step, checkpoint.model_part_name, checkpoint.buffer_size) == (2, "Structure", 2)
     checkpoint.close()
+
+
+def test_resume_a_case_read_from_msh(tmp_path):
+    """The checkpoint records the gmsh import settings; the resumed run reads the msh the same way."""
+    from test_meshio_input import blocks_case
+
+    parameters = blocks_case(str(tmp_path))
+    with open(parameters) as f:
+        params = json.load(f)
+    params["problem_data"]["end_time"] = 4.0 * (1 - 1e-9)
+    params["processes"]["constraints_process_list"][1]["Parameters"]["value"] = [None, "-0.01*t", None]
+    params["output_processes"]["restart"] = [{"python_module": "save_restart_process",
+                                              "Parameters": {"model_part_name": "Structure",
+                                                             "restart_control_type": "step",
+                                                             "restart_save_frequency": 2}}]
+    with open(parameters, "w") as f:
+        json.dump(params, f)
+    run_cli(tmp_path, parameters)
+    kept = str(tmp_path / "uninterrupted.rest")
+    shutil.copy(checkpoint_path(tmp_path, 4), kept)
+    with h5py.File(kept, "r") as f:
+        assert json.loads(f.attrs["mesh"])["input_type"] == "gmsh"
+    params["solver_settings"]["model_import_settings"] = resume_settings(2)
+    with open(parameters, "w") as f:
+        json.dump(params, f)
+    assert "2 steps to t = 4" in run_cli(tmp_path, parameters)
+    assert_same_checkpoints(kept, checkpoint_path(tmp_path, 4))
