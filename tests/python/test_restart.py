@@ -355,3 +355,19 @@ def test_resume_a_case_read_from_msh(tmp_path):
         json.dump(params, f)
     assert "2 steps to t = 4" in run_cli(tmp_path, parameters)
     assert_same_checkpoints(kept, checkpoint_path(tmp_path, 4))
+
+
+def test_xdmf_output_of_a_resumed_run_warns(tmp_path, monkeypatch, capsys):
+    """An XDMF series is written whole at the end of a run: the resumed run's holds its own steps."""
+    monkeypatch.chdir(tmp_path)
+    for settings in (None, resume_settings(2)):
+        path = write_case(tmp_path, HERTZ, solver_type="Static", time_step=0.025, end_time=0.05 if settings is None
+                          else 0.1 * (1 - 1e-9), import_settings=settings)
+        with open(path) as f:
+            params = json.load(f)
+        params["output_processes"]["vtk_output"][0]["Parameters"]["file_format"] = "xdmf"
+        with open(path, "w") as f:
+            json.dump(params, f)
+        run_case(path, progress=False)
+    assert "the XDMF series Structure.Contact.xdmf of a resumed run holds only the steps after the restart" in \
+        capsys.readouterr().err
