@@ -371,3 +371,14 @@ def test_xdmf_output_of_a_resumed_run_warns(tmp_path, monkeypatch, capsys):
         run_case(path, progress=False)
     assert "the XDMF series Structure.Contact.xdmf of a resumed run holds only the steps after the restart" in \
         capsys.readouterr().err
+
+
+def test_file_names_follow_kratos(tmp_path, monkeypatch):
+    """<cwd>/<output_path or name__restart_files>/<name>_<label>.rest; a path in the name is kept."""
+    from mortarcontact.restart import restart_file_name, restart_folder
+
+    monkeypatch.chdir(tmp_path)
+    assert restart_folder("Structure", "", True) == (str(tmp_path / "Structure__restart_files"), "Structure")
+    assert restart_folder("Structure", "saved", True) == (str(tmp_path / "saved"), "Structure")
+    assert restart_folder("runs/Structure", "", False) == (str(tmp_path / "runs"), "Structure")
+    assert restart_file_name("Structure", 0.5) == "Structure_0.5.rest"
