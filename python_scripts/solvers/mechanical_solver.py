@@ -155,8 +155,8 @@ class MechanicalSolver:
         found = self._find(path)
         if found is None:
             places = {os.path.dirname(candidate) or "." for candidate in self._candidates(path)}
-            saved = sorted({os.path.basename(found) for place in places
-                            for found in glob.glob(os.path.join(place, f"{stem}_*.rest"))})
+            saved = sorted({os.path.basename(match) for place in places
+                            for match in glob.glob(os.path.join(place, f"{stem}_*.rest"))})
             raise _core.InputError(f"{where}: restart checkpoint not found; looked for "
                                    + " and ".join(os.path.abspath(c) for c in self._candidates(path))
                                    + (f"{nearest(os.path.basename(path), saved)}; saved: {', '.join(saved)}" if saved
