@@ -356,9 +356,12 @@ ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
       // masters it will touch later in the step; the thin lateral padding still rejects far faces.
       if (with_obb) slave_obb = BuildOrientedBox(slave_geometry, slave.normal, box_factor * slave.length, radius);
       // Tests shared by the search and the coverage walk below: the master faces the slave (opposite
-      // normals, no common node), and its projection on the slave's plane overlaps the slave.
+      // normals, no common node, not behind it by more than a face: the far side of the slave's own
+      // body, whose normals are opposite too, as on a whole-skin interface), and its projection on
+      // the slave's plane overlaps the slave.
       auto opposite = [&](const FaceData& master) {
         return slave.normal.dot(master.normal) < -threshold &&
+               (master.center - slave.center).dot(slave.normal) >= -std::max(slave.length, master.length) &&
                !ShareNode(slave_geometry, master.condition->GetGeometry());
       };
       auto beneath = [&](const FaceData& master) {
