@@ -206,8 +206,8 @@ void ContactSearchProcess::WarnAboutKeysWithoutEffect() const {
                             "the multipliers are not predicted (Kratos does not read the key either)");
   const Parameters octree = settings_["octree_search_parameters"];
   const Parameters octree_defaults = defaults["octree_search_parameters"];
-  for (const char* key : {"debug_obb", "build_from_bounding_box", "lower_bounding_box_coefficient",
-                          "higher_bounding_box_coefficient"})
+  for (const char* key :
+       {"debug_obb", "build_from_bounding_box", "lower_bounding_box_coefficient", "higher_bounding_box_coefficient"})
     NoEffectWarnings::IfGiven(octree, octree_defaults, key,
                               "the oriented boxes are built from the face geometry grown by bounding_box_factor, "
                               "the only key of octree_search_parameters read here");

@@ -120,7 +120,8 @@ void AddParametersToPython(py::module_& m) {
                   "returns whether it differs.")
       .def_static("Warn", &NoEffectWarnings::Warn, py::arg("settings"), py::arg("key"), py::arg("why"),
                   "Warns whatever the value (a value that runs as another one).")
-      .def_static("Reset", &NoEffectWarnings::Reset, "Forgets the keys already reported: a new run reports them again.");
+      .def_static("Reset", &NoEffectWarnings::Reset,
+                  "Forgets the keys already reported: a new run reports them again.");
 }
 
 }  // namespace mc::python

@@ -4,8 +4,8 @@
 #include <mutex>
 #include <set>
 
-#include "core/utilities/logger.h"
 #include "core/utilities/error.h"
+#include "core/utilities/logger.h"
 
 namespace mc {
 namespace {
@@ -37,8 +37,8 @@ void NoEffectWarnings::Warn(const Parameters& settings, const std::string& key, 
     std::lock_guard<std::mutex> lock(ReportedMutex());
     if (!Reported().insert(where).second) return;
   }
-  Logger::Warning(Concat("key '", key, "' = ", value.WriteJsonString(), " at ", where,
-                         " has no effect in mortarcontact: ", why));
+  Logger::Warning(
+      Concat("key '", key, "' = ", value.WriteJsonString(), " at ", where, " has no effect in mortarcontact: ", why));
 }
 
 void NoEffectWarnings::Reset() {

@@ -52,9 +52,9 @@ KEYS_WITHOUT_EFFECT = {
     "delta_time_factor_for_contact": "only the explicit contact solver reads it, and it is not implemented",
 }
 #: Keys of mixed_ulm_solver_parameters accepted without effect.
-MIXED_ULM_KEYS_WITHOUT_EFFECT = {
-    key: "the condensed system is solved by the solver of linear_solver_settings, with its own settings"
-    for key in ("tolerance", "max_iteration_number", "echo_level")}
+MIXED_ULM_KEYS_WITHOUT_EFFECT = dict.fromkeys(
+    ("tolerance", "max_iteration_number", "echo_level"),
+    "the condensed system is solved by the solver of linear_solver_settings, with its own settings")
 
 
 def contact_settings_defaults() -> _core.Parameters:

@@ -89,7 +89,8 @@ LEGACY_FRICTION_KEYS = {
     for kind in ("displacement", "residual") for which in ("relative", "absolute")}
 
 
-_PREDICTION = "only the automatic time-step prediction (time_step_prediction_level > 0) reads it, which is not implemented"
+_PREDICTION = ("only the automatic time-step prediction (time_step_prediction_level > 0) reads it, which is not "
+               "implemented")
 #: Keys of STRUCTURAL_DEFAULTS accepted without effect (issue 18): (sub-block or "", key) -> why;
 #: warned when given a value other than the default (NoEffectWarnings).
 KEYS_WITHOUT_EFFECT = {

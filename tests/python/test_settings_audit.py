@@ -143,6 +143,7 @@ def _accepted_keys() -> dict[str, set[str]]:
     _walk("problem_data", json.loads(PROBLEM_DATA_DEFAULTS), found)
     _walk("solver_settings", json.loads(STRUCTURAL_DEFAULTS), found)
     _walk("solver_settings.contact_settings", json.loads(contact_settings_defaults().WriteJsonString()), found)
+    _walk("solver_settings.mpc_contact_settings", json.loads(MPC_CONTACT_SETTINGS_DEFAULTS), found)
     for (_, name), cls in PROCESS_REGISTRY.items():
         if name in ("alm_contact_process", "penalty_contact_process"):
             block = "contact_process"
@@ -246,15 +247,50 @@ def _normalised_log(text: str) -> str:
     return re.sub(r"\d+(\.\d+)?(e[-+]?\d+)?", "#", text)
 
 
-def _run_captured(folder, capfd, base=contact_case, edit=None):
-    capfd.readouterr()
-    result = _run(folder, base, edit)
-    out, err = capfd.readouterr()
-    return result, out + err
+def _run_logged(folder, base=contact_case, edit=None):
+    """(analysis or the error, the C++ log of the run: warnings and echo output)."""
+    messages = []
+    _core.SetLogSink(lambda level, message: messages.append(message))
+    try:
+        result = _run(folder, base, edit)
+    finally:
+        _core.ResetLogSink()
+    return result, "\n".join(messages)
 
 
-def test_the_default_run_warns_about_nothing(tmp_path, capfd):
-    analysis, log = _run_captured(tmp_path / "default", capfd)
+def _path_of(block: str) -> list:
+    head, _, rest = block.partition(".")
+    return BLOCKS[head] + (rest.split(".") if rest else [])
+
+
+@pytest.fixture(scope="module")
+def default_runs(tmp_path_factory):
+    """(fingerprint, log) of the contact case as it is, quiet or at echo level 1; run once."""
+    cache = {}
+
+    def get(verbose: bool):
+        if verbose not in cache:
+            folder = tmp_path_factory.mktemp("default")
+            result, log = _run_logged(folder, edit=_verbose if verbose else None)
+            cache[verbose] = (_fingerprint(result, folder), log)
+        return cache[verbose]
+    return get
+
+
+@pytest.fixture(scope="module")
+def warnings_of_all_keys(tmp_path_factory):
+    """The log of one run of the contact case with every "warns" key set to its value (but those
+    translated to another key, which run apart)."""
+    rows = [r for r in _of("warns") if r["key"] != "*" and not r["evidence"]]
+
+    def set_all(params):
+        for row in rows:
+            _set(params, row["block"], row["key"], json.loads(row["value"]))
+    return _run_logged(tmp_path_factory.mktemp("warned"), edit=set_all)[1]
+
+
+def test_the_default_run_warns_about_nothing(tmp_path):
+    analysis, log = _run_logged(tmp_path / "default")
     assert not isinstance(analysis, Exception), analysis
     assert "has no effect" not in log, log
 
@@ -264,43 +300,47 @@ def _verbose(params):
 
 
 @pytest.mark.parametrize("row", _of("acts", ("results", "log")), ids=_ids)
-def test_acting_key_changes_the_run(row, tmp_path, capfd):
+def test_acting_key_changes_the_run(row, tmp_path, default_runs):
     """A log is compared at echo level 1 (but for the echo levels themselves)."""
     verbose = row["evidence"] == "log" and row["key"] != "echo_level"
-    base, base_log = _run_captured(tmp_path / "default", capfd, edit=_verbose if verbose else None)
+    base, base_log = default_runs(verbose)
 
     def change(params):
         if verbose:
             _verbose(params)
         _set(params, row["block"], row["key"], json.loads(row["value"]))
-    changed, log = _run_captured(tmp_path / "changed", capfd, edit=change)
+    changed, log = _run_logged(tmp_path, edit=change)
     assert not isinstance(changed, Exception), changed
     assert "has no effect" not in log, log
     if row["evidence"] == "log":
         assert _normalised_log(log) != _normalised_log(base_log)
     else:
-        assert _fingerprint(changed, tmp_path / "changed") != _fingerprint(base, tmp_path / "default")
+        assert _fingerprint(changed, tmp_path) != base
 
 
 @pytest.mark.parametrize("row", [r for r in _of("warns") if r["key"] != "*"], ids=_ids)
-def test_key_without_effect_warns_once(row, tmp_path, capfd):
-    value = json.loads(row["value"])
-    result, log = _run_captured(tmp_path, capfd, edit=lambda p: _set(p, row["block"], row["key"], value))
+def test_key_without_effect_warns_once(row, tmp_path, warnings_of_all_keys):
+    """The warning names the key where the user wrote it: the file and the JSON path."""
+    if row["evidence"]:
+        log = _run_logged(tmp_path, edit=lambda p: _set(p, row["block"], row["key"], json.loads(row["value"])))[1]
+    else:
+        log = warnings_of_all_keys
     named = row["evidence"] or row["key"]
-    warnings = [m for m in NO_EFFECT.finditer(log) if m["key"] == named]
-    assert len(warnings) == 1, f"expected one warning about {named}: {log}"
-    assert warnings[0]["where"].startswith(str(tmp_path)) or "contact_parameters.json" in warnings[0]["where"], log
-    assert re.search(rf"[ .]{named}$", warnings[0]["where"]), warnings[0]["where"]
+    path = _path_of(row["block"])
+    suffix = f"{path[-1]}.{named}" if path else f": {named}"
+    warnings = [m for m in NO_EFFECT.finditer(log) if m["key"] == named and m["where"].endswith(suffix)]
+    assert len(warnings) == 1, f"expected one warning about {suffix}: {log}"
+    assert "contact_parameters.json: " in warnings[0]["where"], warnings[0]["where"]
 
 
 @pytest.mark.parametrize("row", [r for r in _of("rejects") if "::" not in r["evidence"]], ids=_ids)
-def test_rejected_key_stops_the_run_naming_it(row, tmp_path, capfd):
+def test_rejected_key_stops_the_run_naming_it(row, tmp_path):
     if row["block"] in BLOCKS or row["block"].split(".")[0] in BLOCKS:
         block, key = row["block"], row["key"]
         if key == "*":
             block, _, key = block.rpartition(".")
         value = json.loads(row["value"])
-        result, _ = _run_captured(tmp_path, capfd, edit=lambda p: _set(p, block, key, value))
+        result, _ = _run_logged(tmp_path, edit=lambda p: _set(p, block, key, value))
     else:  # a contact process that is not implemented, with its defaults
         try:
             CONTACT_PROCESSES[row["block"]](mc.Model(), _core.Parameters())
@@ -426,7 +466,7 @@ def _increments(analysis) -> list[float]:
     return [record.increment_norm for record in analysis.solver.LastIterationHistory()]
 
 
-def test_use_old_stiffness_in_first_iteration(tmp_path, capfd):
+def test_use_old_stiffness_in_first_iteration(tmp_path):
     """The first iteration of step 2 with the stiffness of step 1 takes another increment; the contact
     strategies build the matrix at every iteration, so there the key warns."""
     two_steps = {"time_stepping": {"time_step": 0.5}}
@@ -434,7 +474,7 @@ def test_use_old_stiffness_in_first_iteration(tmp_path, capfd):
     reused = _increments(_run(tmp_path / "reused", base=_total_lagrangian_square, edit=_solver(
         **two_steps, use_old_stiffness_in_first_iteration=True)))
     assert reused[0] != pytest.approx(fresh[0], rel=1e-3)
-    _, log = _run_captured(tmp_path / "contact", capfd, edit=_solver(use_old_stiffness_in_first_iteration=True))
+    _, log = _run_logged(tmp_path / "contact", edit=_solver(use_old_stiffness_in_first_iteration=True))
     assert [m["key"] for m in NO_EFFECT.finditer(log)] == ["use_old_stiffness_in_first_iteration"], log
 
 
@@ -450,12 +490,12 @@ def test_line_search_advanced_settings(tmp_path):
     assert isinstance(short, mc.SolutionError) and "did not converge" in str(short), short
 
 
-def test_clear_storage_warns_only_without_contact(tmp_path, capfd):
+def test_clear_storage_warns_only_without_contact(tmp_path):
     """Kratos clears the strategy's storage each step; the results are the same without. Contact
     solvers clear it (forced, as Kratos): no warning there."""
-    _, log = _run_captured(tmp_path / "square", capfd, base=square_case, edit=_solver(clear_storage=True))
+    _, log = _run_logged(tmp_path / "square", base=square_case, edit=_solver(clear_storage=True))
     assert [m["key"] for m in NO_EFFECT.finditer(log)] == ["clear_storage"], log
-    _, log = _run_captured(tmp_path / "contact", capfd, edit=_solver(clear_storage=True))
+    _, log = _run_logged(tmp_path / "contact", edit=_solver(clear_storage=True))
     assert "has no effect" not in log, log
 
 
@@ -505,11 +545,11 @@ def test_legacy_builder_keys():
         == "block_lagrange"
 
 
-def test_convergence_table_keys(tmp_path, capfd):
+def test_convergence_table_keys(tmp_path):
     """The contact solvers print their convergence table (fancy_convergence_criterion) at echo
     level 1; without it the criteria print line by line."""
-    _, table = _run_captured(tmp_path / "table", capfd, edit=_solver(echo_level=1))
-    _, lines = _run_captured(tmp_path / "lines", capfd, edit=lambda p: (
+    _, table = _run_logged(tmp_path / "table", edit=_solver(echo_level=1))
+    _, lines = _run_logged(tmp_path / "lines", edit=lambda p: (
         _solver(echo_level=1)(p), _contact(fancy_convergence_criterion=False)(p)))
     assert _normalised_log(table) != _normalised_log(lines)
 
@@ -548,9 +588,9 @@ def test_contact_block_tolerances(criterion, keys):
     assert tolerances(0.123) != tolerances(0.456)
 
 
-def test_silent_strategy(tmp_path, capfd):
-    _, silent = _run_captured(tmp_path / "silent", capfd, edit=_solver(echo_level=2))
-    _, verbose = _run_captured(tmp_path / "verbose", capfd, edit=lambda p: (
+def test_silent_strategy(tmp_path):
+    _, silent = _run_logged(tmp_path / "silent", edit=_solver(echo_level=2))
+    _, verbose = _run_logged(tmp_path / "verbose", edit=lambda p: (
         _solver(echo_level=2)(p), _contact(silent_strategy=False)(p)))
     assert _normalised_log(silent) != _normalised_log(verbose)
 
@@ -820,3 +860,20 @@ def test_clear_inactive_for_post(tmp_path):
         return [root.GetNode(i).GetValue(mc.AUGMENTED_NORMAL_CONTACT_PRESSURE) for i in (3, 4)]
     assert pressure("cleared", True) == [0.0, 0.0]
     assert all(value != 0.0 for value in pressure("kept", False))
+
+
+@pytest.mark.parametrize("spelling", ["octree_with_obb", "OctreeWithOBB"])
+def test_octree_search_type_warns_naming_what_runs(tmp_path, spelling):
+    """Kratos' octree search is not built here: the KD-tree search with the same oriented-box test
+    runs instead, and the warning says so (issue 18)."""
+    _, log = _run_logged(tmp_path, edit=_process(search_parameters={"type_search": spelling}))
+    warnings = [m for m in NO_EFFECT.finditer(log) if m["key"] == "type_search"]
+    assert len(warnings) == 1 and f'"{spelling}"' in warnings[0]["value"], log
+    assert "'in_radius_with_obb'" in log
+
+
+def test_problem_data_echo_level_prints_the_steps(tmp_path, capsys):
+    _run(tmp_path / "quiet")
+    assert "STEP 1" not in capsys.readouterr().out
+    _run(tmp_path / "verbose", edit=lambda p: p["problem_data"].update(echo_level=1))
+    assert "STEP 1  TIME 1" in capsys.readouterr().out
