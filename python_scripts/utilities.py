@@ -6,9 +6,19 @@ import os
 import sys
 import tempfile
 
+from . import _core
+
 
 def warn(message: str) -> None:
     print(f"warning: {message}", file=sys.stderr)
+
+
+def warn_about_keys_without_effect(settings, defaults, reasons: dict) -> None:
+    """``NoEffectWarnings.IfGiven`` for each ``(sub-block or "", key) -> why`` of ``reasons``: the
+    keys a reader accepts without acting on them warn when given a value other than the default."""
+    for (block, key), why in reasons.items():
+        _core.NoEffectWarnings.IfGiven(settings[block] if block else settings, defaults[block] if block else defaults,
+                                       key, why)
 
 
 def nearest(name: str, candidates, cutoff: float = 0.6) -> str:

@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 from .. import _core
+from ..utilities import warn_about_keys_without_effect
 from .search_base_process import SearchBaseProcess
 
 #: normal_variation -> ProcessInfo CONSIDER_NORMAL_VARIATION (spec 4.4)
@@ -65,10 +66,7 @@ class ALMContactProcess(SearchBaseProcess):
         self.normal_variation = variation
         self.axisymmetric = self.settings["alternative_formulations"]["axisymmetric"].GetBool()
         self.condition_stem = self.formulation.ConditionStem(variation in NORMAL_DERIVATIVES, self.axisymmetric)
-        defaults = self.GetDefaultParameters()
-        for (block, key), why in KEYS_WITHOUT_EFFECT.items():
-            _core.NoEffectWarnings.IfGiven(self.settings[block] if block else self.settings,
-                                           defaults[block] if block else defaults, key, why)
+        warn_about_keys_without_effect(self.settings, self.GetDefaultParameters(), KEYS_WITHOUT_EFFECT)
         if self.settings["advance_ALM_parameters"]["adapt_penalty"].GetBool():
             raise _core.NotImplementedFeatureError(
                 f"{self.settings['advance_ALM_parameters'].Where()}.adapt_penalty: the adaptive penalty is not "

@@ -3,6 +3,7 @@ the single source for validation and for the documentation tables."""
 from __future__ import annotations
 
 from .. import _core
+from ..utilities import warn_about_keys_without_effect
 from .contact_mechanical_solver import contact_settings_defaults
 
 STRUCTURAL_DEFAULTS = """{
@@ -179,9 +180,7 @@ def validate_solver_settings(settings: _core.Parameters) -> None:
 
 def _warn_about_keys_without_effect(settings: _core.Parameters) -> None:
     defaults = _core.Parameters(STRUCTURAL_DEFAULTS)
-    for (block, key), why in KEYS_WITHOUT_EFFECT.items():
-        _core.NoEffectWarnings.IfGiven(settings[block] if block else settings, defaults[block] if block else defaults,
-                                       key, why)
+    warn_about_keys_without_effect(settings, defaults, KEYS_WITHOUT_EFFECT)
     contact = settings["contact_settings"]
     if contact.size() > 0 and contact["mortar_type"].GetString():
         _core.NoEffectWarnings.IfGiven(settings, defaults, "use_old_stiffness_in_first_iteration",
