@@ -15,6 +15,7 @@
 #include "core/geometries/reference_element.h"
 #include "core/model/parallel_utilities.h"
 #include "core/model/registry.h"
+#include "core/parameters/no_effect_warnings.h"
 #include "core/utilities/error.h"
 #include "core/utilities/logger.h"
 #include "core/utilities/string_utilities.h"
@@ -161,6 +162,7 @@ ContactSearchProcess::ContactSearchProcess(ModelPart& root, ModelPart& interface
       settings_(std::move(search_parameters)),
       slot_(std::move(slot)) {
   settings_.RecursivelyValidateAndAssignDefaults(GetDefaultParameters());
+  WarnAboutKeysWithoutEffect();
   const std::string type = settings_["type_search"].GetString();
   if (ToLower(type) == "kdop")
     throw NotImplementedError(Concat(settings_.Where(), ".type_search: 'kdop' is not implemented (as in Kratos); use ",
@@ -168,6 +170,10 @@ ContactSearchProcess::ContactSearchProcess(ModelPart& root, ModelPart& interface
   const auto& types = SearchTypeNames();
   if (auto it = types.find(type); it != types.end()) {
     type_search_ = it->second;
+    if (ToLower(type).rfind("octree", 0) == 0)
+      NoEffectWarnings::Warn(settings_, "type_search",
+                             "no octree is built; the search runs as 'in_radius_with_obb' (KD-tree of the master "
+                             "centres plus the same oriented-box test), which finds the same pairs");
   } else {
     type_search_ = "in_radius";
     Logger::Warning(Concat(settings_.Where(), ".type_search: unknown value '", type, "', using 'in_radius'",
@@ -185,6 +191,28 @@ ContactSearchProcess::ContactSearchProcess(ModelPart& root, ModelPart& interface
   if (!(settings_["search_factor"].GetDouble() > 0.0))
     throw InputError(
         Concat(settings_.Where(), ".search_factor: must be positive, got ", settings_["search_factor"].GetDouble()));
+}
+
+void ContactSearchProcess::WarnAboutKeysWithoutEffect() const {
+  const Parameters defaults = GetDefaultParameters();
+  NoEffectWarnings::IfGiven(settings_, defaults, "adapt_search",
+                            "search_factor and active_check_factor are used as given, not scaled by the mesh size");
+  NoEffectWarnings::IfGiven(settings_, defaults, "dynamic_search",
+                            "the search uses the current coordinates, not positions predicted with VELOCITY");
+  NoEffectWarnings::IfGiven(settings_, defaults, "static_check_movement",
+                            "the search runs every database_step_update steps whatever the interface moved");
+  NoEffectWarnings::IfGiven(settings_, defaults, "debug_mode", "the search writes no debug output");
+  NoEffectWarnings::IfGiven(settings_, defaults, "predict_correct_lagrange_multiplier",
+                            "the multipliers are not predicted (Kratos does not read the key either)");
+  const Parameters octree = settings_["octree_search_parameters"];
+  const Parameters octree_defaults = defaults["octree_search_parameters"];
+  for (const char* key :
+       {"debug_obb", "build_from_bounding_box", "lower_bounding_box_coefficient", "higher_bounding_box_coefficient"})
+    NoEffectWarnings::IfGiven(octree, octree_defaults, key,
+                              "the oriented boxes are built from the face geometry grown by bounding_box_factor, "
+                              "the only key of octree_search_parameters read here");
+  NoEffectWarnings::IfGiven(octree, octree_defaults, "OBB_intersection_type",
+                            "the oriented boxes are always intersected with the separating-axis theorem");
 }
 
 void ContactSearchProcess::ClearMortarConditions() {

@@ -75,7 +75,8 @@ class ContactSearchProcess {
   /// Kratos' search_parameters (spec 4.3), every key with its default. Not all act here:
   /// adapt_search, dynamic_search, static_check_movement, debug_mode,
   /// predict_correct_lagrange_multiplier and octree_search_parameters other than
-  /// bounding_box_factor are accepted; database_step_update is the contact process'.
+  /// bounding_box_factor are accepted with a warning when given (NoEffectWarnings), as is
+  /// type_search "octree_with_obb"; database_step_update is the contact process'.
   static Parameters GetDefaultParameters();
 
   /// Clears this slot's pairs, searches, creates the pairs and predicts the active set.
@@ -104,6 +105,8 @@ class ContactSearchProcess {
   void AssignAutomaticRoles(const std::vector<Condition*>& conditions,
                             std::vector<std::vector<std::size_t>>& candidates);
   void PredictActiveSet(const std::vector<std::pair<Condition*, Condition*>>& pairs, ContactSearchStatistics& stats);
+  /// The keys above accepted without effect: a warning for each one given a non-default value.
+  void WarnAboutKeysWithoutEffect() const;
   /// The registered prototype of the pair name for these geometries, and its interned name.
   const PairedCondition& Prototype(const Geometry& slave, const Geometry& master, const std::string** interned);
 

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
+#include "core/parameters/no_effect_warnings.h"
 #include "core/parameters/parameters.h"
 #include "custom_python/python_module.h"
 
@@ -108,6 +109,19 @@ void AddParametersToPython(py::module_& m) {
       .def("WriteJsonString", &Parameters::WriteJsonString, "Compact JSON text.")
       .def("PrettyPrintJsonString", &Parameters::PrettyPrintJsonString, "Indented JSON text.")
       .def("__repr__", &Parameters::PrettyPrintJsonString);
+
+  py::class_<NoEffectWarnings>(m, "NoEffectWarnings",
+                               "The one route for accepted settings that have no effect here: \"key 'X' = value at "
+                               "<file>: <path> has no effect in mortarcontact: <why>\" through the C++ log, once per "
+                               "key per run.")
+      .def_static("IfGiven", &NoEffectWarnings::IfGiven, py::arg("settings"), py::arg("defaults"), py::arg("key"),
+                  py::arg("why"),
+                  "Warns when settings[key] differs from defaults[key] (a template default stays quiet); "
+                  "returns whether it differs.")
+      .def_static("Warn", &NoEffectWarnings::Warn, py::arg("settings"), py::arg("key"), py::arg("why"),
+                  "Warns whatever the value (a value that runs as another one).")
+      .def_static("Reset", &NoEffectWarnings::Reset,
+                  "Forgets the keys already reported: a new run reports them again.");
 }
 
 }  // namespace mc::python

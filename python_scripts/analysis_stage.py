@@ -43,6 +43,8 @@ class StructuralMechanicsAnalysis:
         self.problem_name = problem_data["problem_name"].GetString()
         self.progress = progress
         self.stop_on_non_convergence = stop_on_non_convergence
+        # A new run: settings without effect are reported again, once each.
+        _core.NoEffectWarnings.Reset()
         self.solver = create_solver(model, parameters["solver_settings"], case_dir=case_dir)
         self.processes = []
         self.output_processes = []

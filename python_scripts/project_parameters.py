@@ -6,7 +6,6 @@ import json
 import os
 
 from . import _core
-from .utilities import warn
 
 TOP_LEVEL_KEYS = ["problem_data", "solver_settings", "processes", "output_processes", "modelers",
                   "restart_options", "constraints_data", "constraints_process_list",
@@ -67,8 +66,8 @@ def migrate_project_parameters(params: _core.Parameters) -> None:
             params["processes"].AddValue(key, params[key])
             params.RemoveValue(key)
     if params.Has("output_configuration"):
-        warn(f"{params.Where()}: 'output_configuration' (GiD output of old inputs) is ignored; "
-             "add a vtk_output block to output_processes for ParaView files")
+        _core.NoEffectWarnings.Warn(params, "output_configuration", "GiD output of old inputs is not written; "
+                                    "add a vtk_output block to output_processes for ParaView files")
         params.RemoveValue("output_configuration")
 
     problem_data = params["problem_data"]

@@ -11,6 +11,16 @@ def warn(message: str) -> None:
     print(f"warning: {message}", file=sys.stderr)
 
 
+def warn_about_keys_without_effect(settings, defaults, reasons: dict) -> None:
+    """``NoEffectWarnings.IfGiven`` for each ``(sub-block or "", key) -> why`` of ``reasons``: the
+    keys a reader accepts without acting on them warn when given a value other than the default."""
+    from . import _core  # not at the top: test_contact_strategies loads this package without the extension
+
+    for (block, key), why in reasons.items():
+        _core.NoEffectWarnings.IfGiven(settings[block] if block else settings, defaults[block] if block else defaults,
+                                       key, why)
+
+
 def nearest(name: str, candidates, cutoff: float = 0.6) -> str:
     """' (did you mean ...?)' for the closest candidates, or ''."""
     close = list(dict.fromkeys(difflib.get_close_matches(name, list(candidates), n=3, cutoff=cutoff)))

@@ -19,6 +19,7 @@
 #include "core/linear_solvers/scaling_solver.h"
 #include "core/linear_solvers/size_selecting_solver.h"
 #include "core/linear_solvers/umfpack_solver.h"
+#include "core/parameters/no_effect_warnings.h"
 #include "core/parameters/parameters.h"
 #include "core/utilities/string_utilities.h"
 
@@ -255,7 +256,16 @@ std::unique_ptr<LinearSolver> CreateLinearSolver(const Parameters& user_settings
     if (registered != RegisteredSolvers().end()) return registered->second(user_settings);
   }
   Parameters settings = user_settings.Clone();
-  settings.ValidateAndAssignDefaults(DefaultSettings());
+  const Parameters defaults = DefaultSettings();
+  settings.ValidateAndAssignDefaults(defaults);
+  for (const char* key : {"verbosity", "echo_level"})
+    NoEffectWarnings::IfGiven(user_settings, defaults, key, "the linear solvers print nothing");
+  for (const char* key : {"smoother_type", "krylov_type", "coarsening_type", "block_size",
+                          "use_block_matrices_if_possible", "coarse_enough", "max_levels", "pre_sweeps", "post_sweeps",
+                          "provide_coordinates", "use_gpgpu", "gpgpu_backend"})
+    NoEffectWarnings::IfGiven(user_settings, defaults, key,
+                              "there is no AMG solver: 'amgcl' runs UMFPACK up to a size limit, else BiCGSTAB with "
+                              "an incomplete LU");
   // "max_iteration_number" is the spelling of mixed_ulm_solver_parameters (spec 2.7.1).
   if (user_settings.Has("max_iteration_number") && !user_settings.Has("max_iteration")) {
     settings["max_iteration"].SetValue(settings["max_iteration_number"]);

@@ -2,6 +2,7 @@
 #include "custom_strategies/custom_convergencecriterias/base_mortar_criteria.h"
 
 #include "core/model/model_part.h"
+#include "core/parameters/no_effect_warnings.h"
 #include "core/utilities/logger.h"
 #include "core/variables/kernel_variables.h"
 #include "custom_strategies/custom_convergencecriterias/contact_criteria_utilities.h"
@@ -34,8 +35,13 @@ Parameters BaseMortarConvergenceCriteria::GetDefaultParameters() {
 }
 
 BaseMortarConvergenceCriteria::BaseMortarConvergenceCriteria(Parameters settings) {
-  settings.AddMissingParameters(GetDefaultParameters());
+  const Parameters defaults = GetDefaultParameters();
+  settings.AddMissingParameters(defaults);
   compute_dynamic_factor_ = settings["compute_dynamic_factor"].GetBool();
+  NoEffectWarnings::IfGiven(settings, defaults, "compute_dynamic_factor",
+                            "the contact updater does not compute the dynamic factor (Kratos' UpdateDynamicFactor), "
+                            "DYNAMIC_FACTOR stays 1");
+  NoEffectWarnings::IfGiven(settings, defaults, "gidio_debug", "no per-iteration debug files are written");
   print_ = settings["print_convergence_criterion"].GetBool();
 }
 

@@ -24,9 +24,9 @@ namespace mc {
 ///    (simplified semi-smooth Newton, the set is frozen afterwards). Converged when no node
 ///    changed; the answer is also stored in ProcessInfo[ACTIVE_SET_CONVERGED].
 ///
-/// Settings, keys of Kratos' contact_settings: `compute_dynamic_factor` (false), `gidio_debug`
-/// (false: accepted; per-iteration dumps are not written by this version),
-/// `print_convergence_criterion` (false).
+/// Settings, keys of Kratos' contact_settings: `compute_dynamic_factor` (false: the MortarUpdater
+/// of the contact solver does not compute the factor, so true warns), `gidio_debug` (false:
+/// per-iteration dumps are not written, true warns), `print_convergence_criterion` (false).
 class BaseMortarConvergenceCriteria : public ConvergenceCriteria {
  public:
   static Parameters GetDefaultParameters();

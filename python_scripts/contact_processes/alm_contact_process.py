@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 from .. import _core
+from ..utilities import warn_about_keys_without_effect
 from .search_base_process import SearchBaseProcess
 
 #: normal_variation -> ProcessInfo CONSIDER_NORMAL_VARIATION (spec 4.4)
@@ -12,6 +13,30 @@ NORMAL_VARIATIONS = {
     "no_derivatives_computation_with_normal_update": 3,
 }
 NORMAL_UPDATE = "WithNormalUpdate"
+#: The values whose tangent includes dn/du: the NV conditions. Kratos' "elemental_derivatives"
+#: linearises only each face's own normal, an approximate tangent of the same residual (the
+#: normals follow the mesh in every mode); the NV conditions differentiate the averaged nodal
+#: normals exactly, so they serve both and Newton keeps its quadratic rate.
+NORMAL_DERIVATIVES = ("elemental_derivatives", "nodal_elemental_derivatives")
+_FRICTIONAL = "only the frictional formulations read it, and they are not implemented"
+_EXPLICIT = "only the explicit penalty process reads it, and it is not implemented"
+#: Keys accepted without effect (issue 18): (sub-block or "", key) -> why; warned when given a value
+#: other than the default (NoEffectWarnings).
+KEYS_WITHOUT_EFFECT = {
+    ("", "friction_coefficients"): "FRICTION_COEFFICIENT goes to the pair properties, but " + _FRICTIONAL,
+    ("", "not_normal_update_frictional"): _FRICTIONAL,
+    ("", "frictional_law"): _FRICTIONAL,
+    ("", "tangent_factor"): _FRICTIONAL,
+    ("", "operator_threshold"): _FRICTIONAL,
+    ("", "slip_augmentation_coefficient"): _FRICTIONAL,
+    ("", "slip_threshold"): _FRICTIONAL,
+    ("", "slip_step_reset_frequency"): _FRICTIONAL,
+    ("advance_ALM_parameters", "max_gap_factor"): "only the adaptive penalty (adapt_penalty) reads it, "
+                                                  "which is not implemented",
+    **{("advance_explicit_parameters", key): _EXPLICIT
+       for key in ("manual_max_gap_theshold", "automatic_gap_factor", "max_gap_threshold", "max_gap_factor",
+                   "logistic_exponent_factor")},
+}
 
 
 class ALMContactProcess(SearchBaseProcess):
@@ -40,8 +65,8 @@ class ALMContactProcess(SearchBaseProcess):
             variation = "no_derivatives_computation_with_normal_update"
         self.normal_variation = variation
         self.axisymmetric = self.settings["alternative_formulations"]["axisymmetric"].GetBool()
-        self.condition_stem = self.formulation.ConditionStem(variation == "nodal_elemental_derivatives",
-                                                             self.axisymmetric)
+        self.condition_stem = self.formulation.ConditionStem(variation in NORMAL_DERIVATIVES, self.axisymmetric)
+        warn_about_keys_without_effect(self.settings, self.GetDefaultParameters(), KEYS_WITHOUT_EFFECT)
         if self.settings["advance_ALM_parameters"]["adapt_penalty"].GetBool():
             raise _core.NotImplementedFeatureError(
                 f"{self.settings['advance_ALM_parameters'].Where()}.adapt_penalty: the adaptive penalty is not "

@@ -169,7 +169,7 @@ class VtkOutputProcess(OutputProcess):
     condition ones when conditions are written).
 
     Keys (default): ``model_part_name`` (required), ``file_format`` ("binary"; "ascii",
-    "xdmf"), ``output_precision`` (7; accepted, meshio chooses the digits),
+    "xdmf"), ``output_precision`` (7; warns when given: meshio chooses the digits),
     ``output_control_type`` ("step" or "time"), ``output_interval`` (1.0; legacy
     ``output_frequency``), ``output_sub_model_parts`` (false: true also writes each direct sub
     model part), ``output_path`` ("VTK_Output"; legacy ``folder_name``),
@@ -201,6 +201,8 @@ class VtkOutputProcess(OutputProcess):
         where = s.Where()
         if not s["model_part_name"].GetString():
             raise _core.InputError(f"{where}: vtk_output requires 'model_part_name'")
+        _core.NoEffectWarnings.IfGiven(s, self.GetDefaultParameters(), "output_precision",
+                                       "meshio chooses the digits of the VTU/XDMF values")
         self.file_format = s["file_format"].GetString()
         if self.file_format not in ("binary", "ascii", "xdmf"):
             raise _core.InputError(f"{where}: file_format '{self.file_format}' is not one of binary, ascii, xdmf")

@@ -10,7 +10,7 @@ by component, or a modulus along a direction, assigned inside ``interval`` (at
 A value is a number, an expression of x, y, z, X, Y, Z, t (evaluated at the node or the condition
 centre) or a CSV time table. Keys: ``model_part_name``, ``variable_name`` and the value keys of
 the kind (required); ``interval`` ([0.0, 1e30], "Begin" / "End" allowed); ``constrained`` (nodes
-only); ``local_axes``, ``mesh_id``, ``help`` (ignored).
+only); ``mesh_id``, ``help`` (ignored); ``local_axes`` (warns: global axes only).
 """
 from __future__ import annotations
 
@@ -74,6 +74,8 @@ class AssignmentProcess(Process):
         require_keys(settings, self.NAME, self.required_keys())
         super().__init__(model, settings)
         self.where = self.settings.Where()
+        _core.NoEffectWarnings.IfGiven(self.settings, self.GetDefaultParameters(), "local_axes",
+                                       "values and expressions are taken in the global axes")
         self.model_part = resolve_model_part(model, self.settings["model_part_name"].GetString())
         self.interval = Interval(to_python(self.settings["interval"]), self.where)
         fixes = [False] * 3 if self.ON_CONDITIONS else expand_constrained(to_python(self.settings["constrained"]),

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from .. import _core
 from ..contact_strategies import CRITERIA_SETTINGS, create_contact_convergence_criteria, create_contact_strategy
-from ..utilities import warn
+from ..utilities import warn, warn_about_keys_without_effect
 from .mechanical_solver import MechanicalSolver
 
 #: The solver's own keys of contact_settings (Kratos' names and defaults). The keys of the classes
@@ -38,6 +38,24 @@ CONTACT_SETTINGS = """{
 }"""
 
 
+_FRICTIONAL = "only the frictional formulations read it, and they are not implemented"
+#: The solver's keys accepted without effect (issue 18): (sub-block or "", key) -> why; warned when
+#: given a value other than the default (NoEffectWarnings).
+KEYS_WITHOUT_EFFECT = {
+    ("", "inner_loop_adaptive"): "the time step is not divided by the inner-loop count (INNER_LOOP_ITERATION)",
+    ("", "frictional_decomposed"): _FRICTIONAL,
+    **{("", f"frictional_{block}_contact_{kind}_{which}_tolerance"): _FRICTIONAL
+       for block in ("stick", "slip") for kind in ("displacement", "residual") for which in ("relative", "absolute")},
+    ("", "ratio_normal_tangent_threshold"): _FRICTIONAL,
+    ("", "fallback_if_dual_lm_not_valid"): "no fallback from the dual multipliers is implemented (the key comes "
+                                           "from a secondary reference only)",
+    ("", "delta_time_factor_for_contact"): "only the explicit contact solver reads it, and it is not implemented",
+    **{("mixed_ulm_solver_parameters", key): "the condensed system is solved by the solver of "
+                                             "linear_solver_settings, with its own settings"
+       for key in ("tolerance", "max_iteration_number", "echo_level")},
+}
+
+
 def contact_settings_defaults() -> _core.Parameters:
     """Every key of contact_settings, each declared once by its reader: the solver's, the criteria
     factory's, the block criteria's, the contact strategy's and the active-set criteria's."""
@@ -61,6 +79,8 @@ class ContactMechanicalSolver(MechanicalSolver):
         settings["reform_dofs_at_each_step"].SetBool(True)
         self.sub_step_callbacks = (None, None)
         super().__init__(model, settings, **kwargs)
+        warn_about_keys_without_effect(settings["contact_settings"], _core.Parameters(CONTACT_SETTINGS),
+                                       KEYS_WITHOUT_EFFECT)
 
     def AddVariables(self) -> None:
         super().AddVariables()

@@ -3,7 +3,7 @@ the single source for validation and for the documentation tables."""
 from __future__ import annotations
 
 from .. import _core
-from ..utilities import warn
+from ..utilities import warn_about_keys_without_effect
 from .contact_mechanical_solver import contact_settings_defaults
 
 STRUCTURAL_DEFAULTS = """{
@@ -94,6 +94,25 @@ LEGACY_FRICTION_KEYS = {
     for kind in ("displacement", "residual") for which in ("relative", "absolute")}
 
 
+_PREDICTION = ("only the automatic time-step prediction (time_step_prediction_level > 0) reads it, which is not "
+               "implemented")
+#: Keys of STRUCTURAL_DEFAULTS accepted without effect (issue 18): (sub-block or "", key) -> why;
+#: warned when given a value other than the default (NoEffectWarnings).
+KEYS_WITHOUT_EFFECT = {
+    ("model_import_settings", "skip_timer"): "the import is not timed",
+    ("model_import_settings", "reorder"): "the nodes keep their ids; the linear solvers order the system themselves",
+    ("model_import_settings", "reorder_consecutive"): "the nodes keep their ids",
+    ("", "multi_point_constraints_used"): "there are no multi-point constraints; the builder is the same either way",
+    ("", "delta_time_refresh"): _PREDICTION,
+    ("", "max_delta_time"): _PREDICTION,
+    ("", "fraction_delta_time"): _PREDICTION,
+}
+#: The structural solver keeps its storage between steps; the contact solver clears it, as Kratos.
+CLEAR_STORAGE_WITHOUT_EFFECT = "the strategy keeps its storage between steps (the results are the same)"
+#: The contact strategies build the matrix at every iteration (the contact pairs change it).
+OLD_STIFFNESS_WITHOUT_EFFECT = "the contact strategies build the matrix at every iteration"
+
+
 def translate_legacy_solver_settings(settings: _core.Parameters) -> None:
     """Spec 2.3 in place: block_builder, builder_and_solver_settings.use_block_builder,
     line_search, analysis_type spellings, obsolete computing-part keys."""
@@ -115,9 +134,9 @@ def translate_legacy_solver_settings(settings: _core.Parameters) -> None:
                 if bs.Has(key):
                     bs.RemoveValue(key)
             if not bs.Has("type"):
-                bs.AddString("type", kind)
+                bs.AddValue("type", _core.Parameters(f'"{kind}"'))
         if not bs.Has("type"):
-            bs.AddString("type", "block")
+            bs.AddValue("type", _core.Parameters('"block"'))
     if settings.Has("line_search"):
         if settings["line_search"].GetBool():
             settings.AddValue("solving_strategy_settings", _core.Parameters('{"type": "line_search"}'))
@@ -130,7 +149,7 @@ def translate_legacy_solver_settings(settings: _core.Parameters) -> None:
     for key in DROPPED_KEYS:
         if settings.Has(key):
             if key != "solution_type":
-                warn(f"{where}.{key}: obsolete key ignored; the solve runs on the root model part")
+                _core.NoEffectWarnings.Warn(settings, key, "obsolete; the solve runs on the root model part")
             settings.RemoveValue(key)
     if settings.Has("contact_settings"):
         contact = settings["contact_settings"]
@@ -156,10 +175,22 @@ def validate_solver_settings(settings: _core.Parameters) -> None:
         raise _core.InputError(f"{settings.Where()}.domain_size: must be 2 or 3, "
                                f"got {settings['domain_size'].GetInt()}")
     _check_numbers(settings)
+    _warn_about_keys_without_effect(settings)
     for key in ("volumetric_strain_dofs", "strain_dofs", "pressure_dofs", "displacement_control",
                 "use_orthogonal_subscales"):
         if settings[key].GetBool():
             raise _core.NotImplementedFeatureError(f"{settings.Where()}.{key}: mixed formulations are not implemented")
+
+
+def _warn_about_keys_without_effect(settings: _core.Parameters) -> None:
+    defaults = _core.Parameters(STRUCTURAL_DEFAULTS)
+    warn_about_keys_without_effect(settings, defaults, KEYS_WITHOUT_EFFECT)
+    contact = settings["contact_settings"]
+    if contact.size() > 0 and contact["mortar_type"].GetString():
+        _core.NoEffectWarnings.IfGiven(settings, defaults, "use_old_stiffness_in_first_iteration",
+                                       OLD_STIFFNESS_WITHOUT_EFFECT)
+    else:
+        _core.NoEffectWarnings.IfGiven(settings, defaults, "clear_storage", CLEAR_STORAGE_WITHOUT_EFFECT)
 
 
 TIME_STEPPING_KEYS = ["time_step", "time_step_table", "time_step_intervals"]
