@@ -44,12 +44,13 @@ def value_columns(part, variable_name: str, historical: bool, mask: np.ndarray,
     """``{key: values of the selected nodes}``; array-3 variables split into components. A
     variable that no node holds is reported through ``unset``."""
     variable = variable_by_name(variable_name)
+    if is_array3(variable) or variable.Type() == _core.ValueType.Double:
+        values = nodal_values(part, variable, historical)
+        unset.check(part, variable, historical, values)
+        if is_array3(variable):
+            return {f"{variable_name}_{axis}": values[mask][:, k] for k, axis in enumerate("XYZ")}
+        return {variable_name: values[mask]}
     unset.check(part, variable, historical)
-    if is_array3(variable):
-        values = nodal_values(part, variable, historical)[mask]
-        return {f"{variable_name}_{axis}": values[:, k] for k, axis in enumerate("XYZ")}
-    if variable.Type() == _core.ValueType.Double:
-        return {variable_name: nodal_values(part, variable, historical)[mask]}
     if historical:
         raise _core.InputError(f"{variable_name} is a {variable.Type().name} variable, which cannot be historical; "
                                "set historical_value to false")
@@ -115,3 +116,6 @@ class JsonResultsProcess(Process):
         self.counter = TimeCounter(s["time_frequency"].GetDouble())
         self.model_part = None
         self.unset = UnsetVariableWarning(self.NAME)
+
+    def ExecuteFinalize(self) -> None:
+        self.unset.finish()
