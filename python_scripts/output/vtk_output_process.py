@@ -21,6 +21,7 @@ from .. import _core
 from ..process import OutputProcess
 from ..processes.bulk_data import (
     UnsetVariableWarning,
+    check_historical,
     entity_connectivity,
     integration_point_means,
     nodal_flags,
@@ -242,16 +243,10 @@ class VtkOutputProcess(OutputProcess):
                         for part in parts]
 
     def Check(self) -> None:
-        # Before the first step rather than at the first output, after a solve.
         key = "nodal_solution_step_data_variables"
         for writer in self.writers:
-            for variable in self.variables[key]:
-                source = variable.Source() if variable.IsComponent() else variable
-                if not writer.part.HasNodalSolutionStepVariable(source):
-                    raise _core.InputError(
-                        f"{self.settings[key].Where()}: {source.Name()} is not a historical (solution step) variable "
-                        f"of {writer.part.FullName()}; list values that are not historical, such as the contact "
-                        "results NORMAL_CONTACT_STRESS and CONTACT_PRESSURE, in nodal_data_value_variables")
+            check_historical(writer.part, self.variables[key], self.settings[key].Where(),
+                             "list them in nodal_data_value_variables")
 
     def ExecuteBeforeSolutionLoop(self) -> None:
         if not self.writers:

@@ -14,7 +14,14 @@ import numpy as np
 from .. import _core
 from ..process import Process
 from ..utilities import write_text_atomically
-from .bulk_data import UnsetVariableWarning, is_array3, nodal_flags, nodal_values, variable_by_name
+from .bulk_data import (
+    UnsetVariableWarning,
+    check_historical,
+    is_array3,
+    nodal_flags,
+    nodal_values,
+    variable_by_name,
+)
 from .model_part_resolution import resolve_model_part
 
 
@@ -116,6 +123,11 @@ class JsonResultsProcess(Process):
         self.counter = TimeCounter(s["time_frequency"].GetDouble())
         self.model_part = None
         self.unset = UnsetVariableWarning(self.NAME)
+
+    def Check(self) -> None:
+        if self.historical and self.model_part is not None:
+            check_historical(self.model_part, [variable_by_name(name) for name in self.variables],
+                             self.settings[self.VARIABLES_KEY].Where(), "set historical_value to false")
 
     def ExecuteFinalize(self) -> None:
         self.unset.finish()

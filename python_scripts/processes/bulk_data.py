@@ -86,6 +86,18 @@ class UnsetVariableWarning:
         self.pending.clear()
 
 
+def check_historical(part, variables, where: str, remedy: str) -> None:
+    """InputError for the first of ``variables`` that ``part`` does not store as historical
+    (at Check, before the first step, rather than at the first read, after a solve)."""
+    for variable in variables:
+        source = variable.Source() if variable.IsComponent() else variable
+        if not part.HasNodalSolutionStepVariable(source):
+            raise _core.InputError(
+                f"{where}: {source.Name()} is not a historical (solution step) variable of {part.FullName()}; for "
+                f"values that are not historical, such as the contact results NORMAL_CONTACT_STRESS and "
+                f"CONTACT_PRESSURE, {remedy}")
+
+
 def nodal_flags(part, flag) -> np.ndarray:
     """Whether each node of ``part`` (node-id order) has ``flag`` set."""
     return np.asarray(part.GetNodalFlags(flag), dtype=bool)
