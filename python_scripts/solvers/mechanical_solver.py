@@ -7,6 +7,7 @@ import os
 from .. import _core
 from ..processes.model_part_resolution import resolve_model_part
 from ..utilities import nearest
+from .convergence_history import ConvergenceHistory
 from .mesh_checks import check_imported_mesh
 from .meshio_import import GROUP_KEYS as MESHIO_KEYS
 from .meshio_import import import_mesh, read_mesh
@@ -42,6 +43,7 @@ class MechanicalSolver:
         self._check_names()
         self.strategy = None
         self.pending_fixities = None
+        self.convergence_history = ConvergenceHistory.from_settings(settings["convergence_history"])
         self.AddVariables()
 
     # -- set-up -------------------------------------------------------------------------------
@@ -319,7 +321,11 @@ class MechanicalSolver:
         self.strategy.Predict()
 
     def SolveSolutionStep(self) -> bool:
-        return self.strategy.SolveSolutionStep()
+        converged = self.strategy.SolveSolutionStep()
+        if self.convergence_history:
+            step = self.main_model_part.ProcessInfo.GetValue(_core.STEP)
+            self.convergence_history.add_step(step, self.strategy.GetIterationHistory())
+        return converged
 
     def FinalizeSolutionStep(self) -> None:
         self.strategy.FinalizeSolutionStep()
@@ -328,7 +334,13 @@ class MechanicalSolver:
         self.strategy.Check()
 
     def Finalize(self) -> None:
+        if self.convergence_history:
+            self.convergence_history.finish()
         self.strategy.Clear()
+
+    def OutputFiles(self) -> list[str]:
+        """The convergence history files written so far."""
+        return list(self.convergence_history.written) if self.convergence_history else []
 
     def LastIterationCount(self) -> int:
         return self.strategy.GetIterationNumber()
