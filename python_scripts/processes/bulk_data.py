@@ -32,7 +32,7 @@ def nodal_values(part, variable, historical: bool = True) -> np.ndarray:
 
 
 class UnsetVariableWarning:
-    """Warns, once per variable, that a requested output variable is computed by nothing in the
+    """Warns, once per part and variable, that a requested output variable is computed by nothing in the
     run, so that it is written or checked as zeros:
 
     - a non-historical nodal variable that no node of the part holds when it is first read;
