@@ -13,10 +13,13 @@ namespace mc {
 /// mortar formulations (measured: a requested column is all zeros), so they are ours:
 ///
 ///  - NORMAL_CONTACT_STRESS: the normal traction on the slave body, negative in compression like
-///    the multipliers: the augmented pressure lambda_bar = k lambda_n + eps g that the active set
-///    was decided on (penalty: eps g) where ACTIVE, 0 elsewhere. It is the pressure the mortar
-///    conditions apply; at a converged active node eps g is within the gap tolerance, so it is
-///    k lambda_n for the ALM formulations.
+///    the multipliers, where ACTIVE (0 elsewhere). ALM formulations: the augmented pressure
+///    lambda_bar = k lambda_n + eps g that the active set was decided on; at a converged active
+///    node eps g is within the gap tolerance, so it is k lambda_n. Penalty: the normal force that
+///    the pairs of ComputingContact apply to the node (their right-hand sides) over NODAL_AREA.
+///    eps g, summed over the pairs, is not that traction: each pair applies eps times its own
+///    share of the weighted gap, so where a node's mortar area is split among P pairs, eps g is
+///    up to P times the traction (2.1 times on the Hertz cylinder).
 ///  - CONTACT_PRESSURE: -NORMAL_CONTACT_STRESS, the contact pressure (positive in compression).
 ///  - TANGENTIAL_CONTACT_STRESS: 0, the formulations are frictionless.
 ///  - CONTACT_FORCE: NORMAL_CONTACT_STRESS NODAL_AREA NORMAL, the force on the slave body at the

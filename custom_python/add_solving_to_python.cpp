@@ -127,6 +127,7 @@ void AddSolvingToPython(py::module_& m) {
 
   py::class_<IterationRecord>(m, "IterationRecord", "One Newton iteration as the strategy saw it.")
       .def_readonly("iteration", &IterationRecord::iteration, "Iteration number, from 1.")
+      .def_readonly("time", &IterationRecord::time, "TIME of the step (of the sub-step when the step is split).")
       .def_readonly("residual_norm", &IterationRecord::residual_norm,
                     "|f_ext - f_int| over the free DoFs at the start of the iteration.")
       .def_readonly("increment_norm", &IterationRecord::increment_norm, "|du| applied in the iteration.")
@@ -134,6 +135,8 @@ void AddSolvingToPython(py::module_& m) {
                     "Line-search factor applied to the increment (1: Newton).")
       .def_readonly("criteria", &IterationRecord::criteria, "The CriterionValue measures of the criteria.")
       .def_readonly("converged", &IterationRecord::converged, "Whether the criteria were met.")
+      .def_readonly("active_nodes", &IterationRecord::active_nodes,
+                    "Slave nodes in contact (ACTIVE) after the iteration; -1 without a contact interface.")
       .def("__repr__", [](const IterationRecord& r) {
         return Concat("iteration ", r.iteration, ": |r| = ", r.residual_norm, ", |du| = ", r.increment_norm);
       });
@@ -175,7 +178,8 @@ void AddSolvingToPython(py::module_& m) {
             if (const auto* newton = dynamic_cast<const NewtonRaphsonStrategy*>(&s)) return newton->IterationHistory();
             return std::vector<IterationRecord>{};
           },
-          "The IterationRecord of each iteration of the last step (empty for non-Newton strategies).");
+          "The IterationRecord of each iteration of the last step, the failed attempt and the sub-steps of a split "
+          "step included (empty for non-Newton strategies).");
   py::class_<ImplicitSolvingStrategy, SolvingStrategy, std::shared_ptr<ImplicitSolvingStrategy>>(
       m, "ImplicitSolvingStrategy", "A strategy with a scheme, a builder-and-solver and a DoF set.")
       .def(

@@ -160,6 +160,7 @@ class StructuralMechanicsAnalysis:
             text += f", {failed} not converged"
         text += f", {seconds:.3g} s in the solution loop"
         files = [path for process in self._all_processes() for path in process.OutputFiles()]
+        files += self.solver.OutputFiles()
         return text + (f"; wrote {', '.join(files)}" if files else "; no result files written")
 
     # -- helpers ----------------------------------------------------------------------------

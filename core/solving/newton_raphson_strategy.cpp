@@ -53,6 +53,7 @@ bool NewtonRaphsonStrategy::NewtonIteration(int iteration) {
   SolveIteration(iteration);
   IterationRecord record;
   record.iteration = iteration;
+  record.time = model_part_.GetProcessInfo().GetValue(TIME);
   record.residual_norm = builder_->Residual().norm();
   record.step_length = UpdateDatabase(iteration);
   record.increment_norm = builder_->Increment().norm();

@@ -48,7 +48,10 @@ ResidualBasedNewtonRaphsonContactStrategy::ResidualBasedNewtonRaphsonContactStra
       settings_(settings) {}
 
 void ResidualBasedNewtonRaphsonContactStrategy::InitializeSolutionStep() {
+  // The iterations of the failed attempt and of the sub-steps all belong to the step's history.
+  std::vector<IterationRecord> earlier = in_sub_step_ ? std::move(history_) : std::vector<IterationRecord>{};
   NewtonRaphsonStrategy::InitializeSolutionStep();
+  history_.insert(history_.begin(), std::make_move_iterator(earlier.begin()), std::make_move_iterator(earlier.end()));
   flips_.clear();
   failure_.clear();
   if (!in_sub_step_) {
@@ -108,6 +111,10 @@ bool ResidualBasedNewtonRaphsonContactStrategy::NewtonIteration(int iteration) {
   const std::vector<char> before = ActiveStates();
   const bool converged = NewtonRaphsonStrategy::NewtonIteration(iteration);
   last_changes_ = CountFlips(before);
+  if (FindContactModelPart(model_part_)) {
+    const std::vector<char> after = ActiveStates();
+    history_.back().active_nodes = static_cast<int>(std::count(after.begin(), after.end(), 1));
+  }
   if (settings_.adaptative_strategy) inverted_element_ = FindInvertedElement();
   return converged && inverted_element_ == 0;
 }

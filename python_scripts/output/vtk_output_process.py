@@ -21,6 +21,7 @@ from .. import _core
 from ..process import OutputProcess
 from ..processes.bulk_data import (
     UnsetVariableWarning,
+    check_historical,
     entity_connectivity,
     integration_point_means,
     nodal_flags,
@@ -160,8 +161,9 @@ class VtkOutputProcess(OutputProcess):
     Cells: the elements of the part (``entity_type`` "automatic": the conditions if there are no
     elements; a part with neither is written as vertices). Point data: the historical variables
     ``nodal_solution_step_data_variables`` and the non-historical ``nodal_data_value_variables``
-    (array-3 values as 3-component arrays; a non-historical variable that no node of the part holds is
-    written as zeros with a warning), ``nodal_flags`` as 0/1 arrays. Cell data:
+    (array-3 values as 3-component arrays; a historical variable the part does not store is an input
+    error at ``Check``), ``nodal_flags`` as 0/1 arrays. A requested variable that nothing in the run
+    computes is written as zeros with a warning (``UnsetVariableWarning``). Cell data:
     ``gauss_point_variables_extrapolated_to_nodes`` and ``gauss_point_variables_in_elements``
     are written **per cell as the mean over its integration points** (not extrapolated to the
     nodes); vectors keep their components, matrices (stress / strain tensors) become 9
@@ -242,6 +244,12 @@ class VtkOutputProcess(OutputProcess):
         self.writers = [_PartWriter(part, self.folder, f"{prefix}{part.FullName()}{postfix}", self.file_format)
                         for part in parts]
 
+    def Check(self) -> None:
+        key = "nodal_solution_step_data_variables"
+        for writer in self.writers:
+            check_historical(writer.part, self.variables[key], self.settings[key].Where(),
+                             "list them in nodal_data_value_variables")
+
     def ExecuteBeforeSolutionLoop(self) -> None:
         if not self.writers:
             self.ExecuteInitialize()
@@ -277,6 +285,7 @@ class VtkOutputProcess(OutputProcess):
     def ExecuteFinalize(self) -> None:
         for writer in self.writers:
             writer.close()
+        self.unset.finish()
 
     def OutputFiles(self) -> list[str]:
         return [path for writer in self.writers for path in writer.written()]
@@ -312,8 +321,8 @@ class VtkOutputProcess(OutputProcess):
         point_data = {}
         for key, historical in (("nodal_solution_step_data_variables", True), ("nodal_data_value_variables", False)):
             for variable in self.variables[key]:
-                self.unset.check(part, variable, historical)
                 point_data[variable.Name()] = nodal_values(part, variable, historical=historical)
+                self.unset.check(part, variable, historical, point_data[variable.Name()])
         for flag in self.flags["nodal_flags"]:
             point_data[flag.Name()] = nodal_flags(part, flag).astype(np.float64)
         if self.settings["write_ids"].GetBool():
@@ -321,6 +330,16 @@ class VtkOutputProcess(OutputProcess):
         cell_data = self._cell_data(part, blocks, conditions)
         cells = [(cell_type, connectivity) for cell_type, connectivity, _ in blocks]
         return meshio.Mesh(points, cells, point_data=point_data, cell_data=cell_data)
+
+    def _integration_point_means(self, part, variable, ids, conditions: bool) -> np.ndarray:
+        """The means of one block; zeros, reported once, where its entities do not compute
+        ``variable``."""
+        try:
+            return integration_point_means(part, variable, ids, conditions)
+        except _core.NotImplementedFeatureError as error:
+            self.unset.not_computed(part, variable, str(error))
+            width = {_core.ValueType.Array3: 3, _core.ValueType.Matrix: 9}.get(variable.Type())
+            return np.zeros((len(ids), width) if width else len(ids))
 
     def _cell_data(self, part, blocks, conditions) -> dict[str, list[np.ndarray]]:
         if conditions is None:  # vertices standing for nodes: no entity data
@@ -331,7 +350,7 @@ class VtkOutputProcess(OutputProcess):
         gauss = (self.variables["gauss_point_variables_extrapolated_to_nodes"]
                  + self.variables["gauss_point_variables_in_elements"])
         for variable in gauss:
-            means = [integration_point_means(part, variable, ids, conditions) for _, _, ids in blocks]
+            means = [self._integration_point_means(part, variable, ids, conditions) for _, _, ids in blocks]
             width = max((m.shape[1] if m.ndim == 2 else 0) for m in means)
             if width:  # vectors of different lengths per block: pad to the widest
                 means = [np.pad(m.reshape(len(m), -1), ((0, 0), (0, width - m.reshape(len(m), -1).shape[1])))

@@ -14,7 +14,14 @@ import numpy as np
 from .. import _core
 from ..process import Process
 from ..utilities import write_text_atomically
-from .bulk_data import UnsetVariableWarning, is_array3, nodal_flags, nodal_values, variable_by_name
+from .bulk_data import (
+    UnsetVariableWarning,
+    check_historical,
+    is_array3,
+    nodal_flags,
+    nodal_values,
+    variable_by_name,
+)
 from .model_part_resolution import resolve_model_part
 
 
@@ -44,12 +51,13 @@ def value_columns(part, variable_name: str, historical: bool, mask: np.ndarray,
     """``{key: values of the selected nodes}``; array-3 variables split into components. A
     variable that no node holds is reported through ``unset``."""
     variable = variable_by_name(variable_name)
+    if is_array3(variable) or variable.Type() == _core.ValueType.Double:
+        values = nodal_values(part, variable, historical)
+        unset.check(part, variable, historical, values)
+        if is_array3(variable):
+            return {f"{variable_name}_{axis}": values[mask][:, k] for k, axis in enumerate("XYZ")}
+        return {variable_name: values[mask]}
     unset.check(part, variable, historical)
-    if is_array3(variable):
-        values = nodal_values(part, variable, historical)[mask]
-        return {f"{variable_name}_{axis}": values[:, k] for k, axis in enumerate("XYZ")}
-    if variable.Type() == _core.ValueType.Double:
-        return {variable_name: nodal_values(part, variable, historical)[mask]}
     if historical:
         raise _core.InputError(f"{variable_name} is a {variable.Type().name} variable, which cannot be historical; "
                                "set historical_value to false")
@@ -121,3 +129,11 @@ class JsonResultsProcess(Process):
 
     def LoadRestartState(self, state) -> None:
         self.counter.elapsed = state["elapsed"]
+
+    def Check(self) -> None:
+        if self.historical and self.model_part is not None:
+            check_historical(self.model_part, [variable_by_name(name) for name in self.variables],
+                             self.settings[self.VARIABLES_KEY].Where(), "set historical_value to false")
+
+    def ExecuteFinalize(self) -> None:
+        self.unset.finish()

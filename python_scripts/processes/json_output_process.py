@@ -14,6 +14,7 @@ from ._json_results import (
     value_columns,
     write_json_atomically,
 )
+from .bulk_data import variable_by_name
 
 
 class JsonOutputProcess(JsonResultsProcess):
@@ -84,7 +85,12 @@ class JsonOutputProcess(JsonResultsProcess):
             if flag is not None and not element.Is(flag):
                 continue
             for name in self.gauss_variables:
-                for key, values in gauss_point_columns(element, name, info).items():
+                try:
+                    columns = gauss_point_columns(element, name, info)
+                except _core.NotImplementedFeatureError as error:  # not written for this element
+                    self.unset.not_computed(self.model_part, variable_by_name(name), str(error))
+                    continue
+                for key, values in columns.items():
                     if self.resultant:
                         entry = self.data.setdefault("RESULTANT", {}).setdefault(key, {})
                     else:
@@ -114,3 +120,4 @@ class JsonOutputProcess(JsonResultsProcess):
 
     def ExecuteFinalize(self) -> None:
         self.write()
+        super().ExecuteFinalize()

@@ -10,6 +10,7 @@ from .. import _core
 from ..processes.model_part_resolution import resolve_model_part
 from ..restart import Checkpoint, mesh_record, restart_file_name, restart_folder
 from ..utilities import nearest, warn
+from .convergence_history import ConvergenceHistory
 from .mesh_checks import check_imported_mesh
 from .meshio_import import GROUP_KEYS as MESHIO_KEYS
 from .meshio_import import import_mesh, read_mesh
@@ -47,6 +48,7 @@ class MechanicalSolver:
         self.pending_fixities = None
         self.checkpoint = None  # the restart checkpoint to resume from (input_type "rest")
         self.mesh_record = None  # the mesh file and its import settings, for checkpoints
+        self.convergence_history = ConvergenceHistory.from_settings(settings["convergence_history"])
         self.AddVariables()
 
     # -- set-up -------------------------------------------------------------------------------
@@ -368,7 +370,11 @@ class MechanicalSolver:
         self.strategy.Predict()
 
     def SolveSolutionStep(self) -> bool:
-        return self.strategy.SolveSolutionStep()
+        converged = self.strategy.SolveSolutionStep()
+        if self.convergence_history:
+            step = self.main_model_part.ProcessInfo.GetValue(_core.STEP)
+            self.convergence_history.add_step(step, self.strategy.GetIterationHistory())
+        return converged
 
     def FinalizeSolutionStep(self) -> None:
         self.strategy.FinalizeSolutionStep()
@@ -377,7 +383,13 @@ class MechanicalSolver:
         self.strategy.Check()
 
     def Finalize(self) -> None:
+        if self.convergence_history:
+            self.convergence_history.finish()
         self.strategy.Clear()
+
+    def OutputFiles(self) -> list[str]:
+        """The convergence history files written so far."""
+        return list(self.convergence_history.written) if self.convergence_history else []
 
     def LastIterationCount(self) -> int:
         return self.strategy.GetIterationNumber()

@@ -5,6 +5,7 @@ from __future__ import annotations
 from .. import _core
 from ..utilities import warn_about_keys_without_effect
 from .contact_mechanical_solver import contact_settings_defaults
+from .convergence_history import ConvergenceHistory
 
 STRUCTURAL_DEFAULTS = """{
     "solver_type": "mechanical_solver",
@@ -74,7 +75,8 @@ STRUCTURAL_DEFAULTS = """{
     "max_delta_time": 1.0,
     "fraction_delta_time": 0.333333333333333333333333333333333333,
     "contact_settings": {},
-    "mpc_contact_settings": {}
+    "mpc_contact_settings": {},
+    "convergence_history": {}
 }"""
 
 MPC_CONTACT_SETTINGS_DEFAULTS = """{
@@ -169,6 +171,7 @@ def validate_solver_settings(settings: _core.Parameters) -> None:
                           ("mpc_contact_settings", _core.Parameters(MPC_CONTACT_SETTINGS_DEFAULTS))):
         if settings[key].size() > 0:
             settings[key].RecursivelyValidateAndAssignDefaults(defaults)
+    settings["convergence_history"].ValidateAndAssignDefaults(ConvergenceHistory.GetDefaultParameters())
     if not settings["model_part_name"].GetString():
         raise _core.InputError(f"{settings.Where()}.model_part_name: must name the model part (e.g. \"Structure\")")
     if settings["domain_size"].GetInt() not in (2, 3):

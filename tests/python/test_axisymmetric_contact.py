@@ -17,6 +17,7 @@ from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
 from mortarcontact.project_parameters import read_project_parameters
 
 from case_builder import fix_process, materials, project_parameters, structured_quads, write_case, write_mdpa
+from csma_cases import use_penalty
 
 A, B = 0.5, 1.5          # inner and outer radius
 GAP, PUSH = 1e-3, 0.011  # initial gap and imposed top displacement
@@ -103,3 +104,24 @@ def test_plane_mortar_operators_do_not_pass_the_axisymmetric_patch_test(tmp_path
     """The same rings with the plane mortar conditions: the pressure is no longer uniform."""
     _, pressure = contact_pressures(str(tmp_path), axisymmetric=False)
     assert np.ptp(pressure) > 1e-2 * np.abs(pressure).max()
+
+
+@pytest.mark.parametrize("formulation", ["scalar", "penalty"])
+def test_axisymmetric_contact_pressure_output_is_physical(tmp_path, monkeypatch, formulation):
+    """Issue 15, item 4: CONTACT_PRESSURE (and -NORMAL_CONTACT_STRESS) of the axisymmetric rings is
+    the uniform pressure in stress units, on the ALM and on the penalty formulation."""
+    path = write_rings(str(tmp_path), axisymmetric=True)
+    params = read_project_parameters(path)
+    if formulation == "penalty":
+        use_penalty(params)
+    monkeypatch.chdir(tmp_path)
+    analysis = StructuralMechanicsAnalysis(mc.Model(), params, progress=False)
+    analysis.Run()
+    slave = analysis.model["Structure.contact_slave"]
+    strain = (PUSH - GAP) / (1.0 + (1.0 - GAP))
+    pressure_exact = E * strain / (1.0 + NU * strain) ** 2
+    pressure = slave.GetNodalNonHistoricalValues(mc.CONTACT_PRESSURE)
+    assert np.array_equal(pressure, -slave.GetNodalNonHistoricalValues(mc.NORMAL_CONTACT_STRESS))
+    # The penalty solution is not exact (0.16 % at the ring's edges); eps g summed over the pairs
+    # of a node was up to 3 times the pressure here.
+    assert pressure == pytest.approx(pressure_exact, rel=1e-6 if formulation == "scalar" else 3e-3)

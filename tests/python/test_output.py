@@ -198,3 +198,42 @@ def test_written_files_get_the_mode_of_ordinary_files(tmp_path, umask):
     assert {path.name: oct(path.stat().st_mode & 0o777) for path in written} == \
         {path.name: oct(0o666 & ~umask) for path in written}
     assert not [f for f in os.listdir(tmp_path / "vtk") if f.startswith(".")]
+
+
+def test_requested_variables_that_nothing_computes_are_reported(tmp_path, capsys):
+    """Issue 15, item 4: a warning names each requested variable that nothing in the run computes,
+    the part and the output process: an integration-point value the elements do not compute
+    (NODAL_PAUX, written as zeros), and per part a historical variable that is no unknown and held
+    zero all run (said at the end): REACTION, set on node 1 in the last step only, is reported for
+    the parts without node 1 (top, Parts), not for Structure and bottom. DISPLACEMENT (an unknown,
+    zero here) is not reported."""
+    model, root = square_grid(2, 2)
+    quad_elements(root, 2, 2)
+
+    def react_in_the_last_step(step):
+        if step == 3:
+            root.GetNode(1).SetSolutionStepValue(mc.REACTION, [0.0, -1.0, 0.0])
+
+    process = vtk_process(model, model_part_name="Structure", output_path=str(tmp_path / "vtk"),
+                          output_sub_model_parts=True, nodal_solution_step_data_variables=["DISPLACEMENT", "REACTION"],
+                          gauss_point_variables_in_elements=["NODAL_PAUX"])
+    run_steps(process, root, 3, on_step=react_in_the_last_step)
+    warnings = [line for line in capsys.readouterr().err.splitlines() if line.startswith("warning")]
+    assert len(warnings) == 3, warnings
+    assert "vtk_output_process (Structure): NODAL_PAUX is not computed (SmallDisplacementElement2D4N" in warnings[0]
+    for line, part in zip(warnings[1:], ("Structure.Parts", "Structure.top")):
+        assert f"vtk_output_process ({part}): REACTION is no unknown of the part and was zero" in line
+    mesh = meshio.read(tmp_path / "vtk" / "Structure_3.vtu")
+    assert np.array_equal(mesh.cell_data["NODAL_PAUX"][0].ravel(), np.zeros(4))
+    assert mesh.point_data["REACTION"][0, 1] == -1.0
+
+
+def test_non_historical_variable_listed_as_historical_is_an_error_before_the_first_step(tmp_path):
+    model, _ = square_grid(1, 1)
+    process = vtk_process(model, model_part_name="Structure", output_path=str(tmp_path / "vtk"),
+                          nodal_solution_step_data_variables=["NORMAL_CONTACT_STRESS"])
+    process.ExecuteInitialize()
+    with pytest.raises(mc.InputError, match=r"nodal_solution_step_data_variables: NORMAL_CONTACT_STRESS is not a "
+                                            r"historical .* of Structure; .* in nodal_data_value_variables"):
+        process.Check()
+    assert not (tmp_path / "vtk").exists()

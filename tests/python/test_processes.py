@@ -396,3 +396,22 @@ def test_json_output_round_trip_through_the_check(tmp_path):
     top.SetNodalValues(mc.DISPLACEMENT, np.outer(top.NodeIds(), [2.5, -2.5, 1.3]))
     with pytest.raises(CheckResultError, match="DISPLACEMENT_Z"):
         checker.ExecuteFinalizeSolutionStep()
+
+
+@pytest.mark.parametrize("python_module, file_key", [("json_output_process", "output_file_name"),
+                                                     ("from_json_check_result_process", "input_file_name")])
+def test_json_non_historical_variable_read_as_historical_is_an_error_before_the_first_step(tmp_path, python_module,
+                                                                                           file_key):
+    """Issue 15, item 4: CONTACT_PRESSURE with historical_value true is named, with the fix, at Check."""
+    model, _ = square_grid(1, 1)
+    reference = tmp_path / "reference.json"
+    reference.write_text(json.dumps({"TIME": [1.0]}))
+    variables_key = "output_variables" if python_module == "json_output_process" else "check_variables"
+    item = {"python_module": python_module, "kratos_module": "KratosMultiphysics",
+            "Parameters": {"model_part_name": "Structure", file_key: str(reference),
+                           variables_key: ["DISPLACEMENT_X", "CONTACT_PRESSURE"]}}
+    process = create_process(mc.Parameters(json.dumps(item)), model)
+    process.ExecuteInitialize()
+    with pytest.raises(mc.InputError, match=rf"{variables_key}: CONTACT_PRESSURE is not a historical .* of "
+                                            r"Structure; .* set historical_value to false"):
+        process.Check()

@@ -10,6 +10,7 @@ import re
 from mortarcontact import _core
 from mortarcontact.contact_strategies import CRITERIA_SETTINGS
 from mortarcontact.solvers.contact_mechanical_solver import CONTACT_SETTINGS, contact_settings_defaults
+from mortarcontact.solvers.convergence_history import ConvergenceHistory
 
 REPO = pathlib.Path(__file__).resolve().parents[2]
 
@@ -51,3 +52,18 @@ def test_python_does_not_redeclare_keys_of_cpp_owners():
                 continue
             declaration = re.search(rf'"{key}"\s*:', text)
             assert declaration is None, f"{path.relative_to(REPO)} declares \"{key}\", which C++ owns"
+
+
+def test_convergence_history_keys_have_one_owner():
+    """solver_settings.convergence_history (ours: no Kratos setting has this name) is an empty block
+    in STRUCTURAL_DEFAULTS whose keys ConvergenceHistory alone declares."""
+    keys = ConvergenceHistory.GetDefaultParameters().Keys()
+    assert sorted(keys) == ["file_name", "plot", "write_json"]
+    owner = REPO / "python_scripts" / "solvers" / "convergence_history.py"
+    for path in sorted((REPO / "python_scripts").rglob("*.py")):
+        if path == owner:
+            continue
+        for key in keys:
+            assert re.search(rf'"{key}"\s*:', path.read_text()) is None, f"{path.relative_to(REPO)} declares {key}"
+    solver_settings = (REPO / "python_scripts" / "solvers" / "solver_settings.py").read_text()
+    assert re.search(r'"convergence_history"\s*:\s*\{\}', solver_settings)

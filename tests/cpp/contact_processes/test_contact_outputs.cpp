@@ -18,6 +18,9 @@ struct Interface {
     ModelPart& root = contact.GetRootModelPart();
     root.AddNodalSolutionStepVariable(WEIGHTED_GAP);
     root.AddNodalSolutionStepVariable(NORMAL);
+    // An ALM interface: the traction is the augmented pressure (penalty: the applied force, from
+    // the pairs; tests/python/test_contact_pressure_output.py).
+    root.AddNodalSolutionStepVariable(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE);
     // 1: active, pressed; 2: open (eps g > 0); 3: master; 4: slave outside every overlap.
     const double augmented[] = {-30.0, 4.0, 0.0, 0.0};
     const double gaps[] = {-1e-9, 0.02, 0.0, 0.0};
