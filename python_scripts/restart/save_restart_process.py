@@ -8,7 +8,7 @@ import re
 from .. import _core
 from ..process import OutputProcess
 from ..processes.model_part_resolution import resolve_model_part
-from ..utilities import warn
+from ..utilities import warn_about_keys_without_effect
 from .checkpoint import pretty_time, write_checkpoint
 
 SERIALIZER_TRACES = ("no_trace", "trace_error", "trace_all")
@@ -65,8 +65,8 @@ class SaveRestartProcess(OutputProcess):
             value = s[key].GetString()
             if value not in valid:
                 raise _core.InputError(f"{where}.{key}: \"{value}\" is not one of {', '.join(valid)}")
-        if s["serializer_trace"].GetString() != "no_trace":
-            warn(f"{where}.serializer_trace: no effect here (checkpoints are HDF5 files, not Kratos' serializer's)")
+        warn_about_keys_without_effect(s, self.GetDefaultParameters(), {
+            ("", "serializer_trace"): "checkpoints are HDF5 files, not Kratos' serializer's"})
         self.by_time = s["restart_control_type"].GetString() == "time"
         self.frequency = s["restart_save_frequency"].GetDouble()
         if not 0.0 <= self.frequency < float("inf"):

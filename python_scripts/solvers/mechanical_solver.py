@@ -9,7 +9,7 @@ import os
 from .. import _core
 from ..processes.model_part_resolution import resolve_model_part
 from ..restart import Checkpoint, mesh_record, restart_file_name, restart_folder
-from ..utilities import nearest, warn
+from ..utilities import nearest
 from .convergence_history import ConvergenceHistory
 from .mesh_checks import check_imported_mesh
 from .meshio_import import GROUP_KEYS as MESHIO_KEYS
@@ -151,8 +151,6 @@ class MechanicalSolver:
         name = imports["input_filename"].GetString() or self.main_model_part.Name
         folder, stem = restart_folder(name, imports["input_output_path"].GetString(),
                                       imports["load_restart_files_from_folder"].GetBool())
-        if imports["serializer_trace"].GetString() != "no_trace":
-            warn(f"{where}.serializer_trace: no effect here (checkpoints are HDF5 files, not Kratos' serializer's)")
         path = os.path.relpath(os.path.join(folder, restart_file_name(stem, label)))
         found = self._find(path)
         if found is None:

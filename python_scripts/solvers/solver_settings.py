@@ -104,6 +104,7 @@ KEYS_WITHOUT_EFFECT = {
     ("model_import_settings", "skip_timer"): "the import is not timed",
     ("model_import_settings", "reorder"): "the nodes keep their ids; the linear solvers order the system themselves",
     ("model_import_settings", "reorder_consecutive"): "the nodes keep their ids",
+    ("model_import_settings", "serializer_trace"): "restart checkpoints are HDF5 files, not Kratos' serializer's",
     ("", "multi_point_constraints_used"): "there are no multi-point constraints; the builder is the same either way",
     ("", "delta_time_refresh"): _PREDICTION,
     ("", "max_delta_time"): _PREDICTION,

@@ -194,8 +194,8 @@ def test_time_control_labels_and_max_files(tmp_path, monkeypatch):
     with open(path) as f:
         params = json.load(f)
     params["output_processes"]["restart_processes"][0]["Parameters"] = {
-        "model_part_name": "Structure", "restart_save_frequency": 0.03, "max_files_to_keep": 2,
-        "output_path": "checkpoints"}
+        "model_part_name": "Structure", "restart_control_type": "time", "restart_save_frequency": 0.03,
+        "max_files_to_keep": 2, "output_path": "checkpoints"}
     with open(path, "w") as f:
         json.dump(params, f)
     analysis = run_case(path, progress=False)
@@ -239,7 +239,8 @@ def saved_case(tmp_path, monkeypatch):
 
 def _resume(folder, **changes):
     return run_case(write_case(folder, HERTZ, solver_type=changes.pop("solver_type", "Static"), time_step=0.025,
-                               end_time=0.1, import_settings=resume_settings(changes.pop("label", 2)), **changes),
+                               end_time=0.1, import_settings=changes.pop("import_settings", None)
+                               or resume_settings(changes.pop("label", 2)), **changes),
                     progress=False)
 
 
@@ -381,3 +382,45 @@ def test_file_names_follow_kratos(tmp_path, monkeypatch):
     assert restart_folder("Structure", "saved", True) == (str(tmp_path / "saved"), "Structure")
     assert restart_folder("runs/Structure", "", False) == (str(tmp_path / "runs"), "Structure")
     assert restart_file_name("Structure", 0.5) == "Structure_0.5.rest"
+
+
+def test_folder_keys_of_saving_and_loading(tmp_path, monkeypatch):
+    """save_restart_files_in_folder false saves next to the case, found with
+    load_restart_files_from_folder false only; a legacy io_foldername is found with
+    input_output_path."""
+    monkeypatch.chdir(tmp_path)
+    for place in ({"save_restart_files_in_folder": False}, {"io_foldername": "saved"}):
+        path = write_case(tmp_path, HERTZ, solver_type="Static", time_step=0.025, end_time=0.05)
+        with open(path) as f:
+            params = json.load(f)
+        params["output_processes"]["restart_processes"][0]["Parameters"].update(place)
+        with open(path, "w") as f:
+            json.dump(params, f)
+        run_case(path, progress=False)
+    assert os.path.isfile(tmp_path / "Structure_2.rest") and os.path.isfile(tmp_path / "saved" / "Structure_2.rest")
+    beside = {**resume_settings(2), "load_restart_files_from_folder": False}
+    with pytest.raises(mc.InputError, match="restart checkpoint not found"):
+        _resume(tmp_path, import_settings={**beside, "load_restart_files_from_folder": True})
+    assert _resume(tmp_path, import_settings=beside).step == 4
+    assert _resume(tmp_path, import_settings={**resume_settings(2), "input_output_path": "saved"}).step == 4
+
+
+def test_echo_level_and_serializer_trace_of_the_save_process(tmp_path, monkeypatch, capsys):
+    """echo_level 1 names each checkpoint written; Kratos' serializer_trace is accepted and warns
+    that it has no effect."""
+    monkeypatch.chdir(tmp_path)
+    path = write_case(tmp_path, HERTZ, solver_type="Static", time_step=0.025, end_time=0.05)
+    with open(path) as f:
+        params = json.load(f)
+    params["output_processes"]["restart_processes"][0]["Parameters"].update(echo_level=1, serializer_trace="trace_all")
+    with open(path, "w") as f:
+        json.dump(params, f)
+    messages = []
+    mc._core.SetLogSink(lambda level, message: messages.append(message))
+    try:
+        run_case(path, progress=False)
+    finally:
+        mc._core.ResetLogSink()
+    assert "save_restart_process: wrote" in capsys.readouterr().out
+    assert any("key 'serializer_trace' = \"trace_all\"" in m and "has no effect in mortarcontact" in m
+               for m in messages), messages
