@@ -414,3 +414,19 @@ def test_real_objects():
     assert c.Name() == "mortar_and_criteria"
     assert c.Mechanical().Name() == "displacement_lagrange_multiplier_mixed_contact_criteria"
     assert c.Mortar().Name() == "alm_frictionless_mortar_criteria"
+
+
+def test_legacy_single_friction_block_feeds_stick_and_slip():
+    """Spec 2.7: the frictional_contact_* keys of older CSMA versions are copied to the stick and
+    the slip keys, which the frictional block criteria then read."""
+    from mortarcontact.solvers.solver_settings import validate_solver_settings
+
+    s = mc.Parameters(json.dumps({"model_part_name": "Structure", "domain_size": 2, "contact_settings": {
+        "mortar_type": "ALMContactFrictional", "frictional_contact_residual_absolute_tolerance": 3e-7,
+        "frictional_contact_residual_relative_tolerance": 2e-3}}))
+    validate_solver_settings(s)
+    contact = s["contact_settings"]
+    assert not contact.Has("frictional_contact_residual_absolute_tolerance")
+    real = mc._core.DisplacementLagrangeMultiplierResidualFrictionalContactCriteria(s, contact)
+    assert real.Tolerances()["stick"] == ("residual", 2e-3, 3e-7)
+    assert real.Tolerances()["slip"] == ("residual", 2e-3, 3e-7)
