@@ -28,15 +28,18 @@ CONTACT_SETTINGS = """{
 }"""
 
 
-_FRICTIONAL = "only the frictional formulations read it, and they are not implemented"
-#: The solver's keys accepted without effect (issue 18): (sub-block or "", key) -> why; warned when
-#: given a value other than the default (NoEffectWarnings).
-KEYS_WITHOUT_EFFECT = {
-    ("", "inner_loop_adaptive"): "the time step is not divided by the inner-loop count (INNER_LOOP_ITERATION)",
+_FRICTIONAL = "only the criteria of the frictional multiplier formulations (ALMContactFrictional*) read it"
+#: Read by the criteria with normal, stick and slip multiplier blocks only: without effect on the others.
+FRICTIONAL_KEYS_WITHOUT_EFFECT = {
     ("", "frictional_decomposed"): _FRICTIONAL,
     **{("", f"frictional_{block}_contact_{kind}_{which}_tolerance"): _FRICTIONAL
        for block in ("stick", "slip") for kind in ("displacement", "residual") for which in ("relative", "absolute")},
     ("", "ratio_normal_tangent_threshold"): _FRICTIONAL,
+}
+#: The solver's keys accepted without effect (issue 18): (sub-block or "", key) -> why; warned when
+#: given a value other than the default (NoEffectWarnings).
+KEYS_WITHOUT_EFFECT = {
+    ("", "inner_loop_adaptive"): "the time step is not divided by the inner-loop count (INNER_LOOP_ITERATION)",
     ("", "fallback_if_dual_lm_not_valid"): "no fallback from the dual multipliers is implemented (the key comes "
                                            "from a secondary reference only)",
     ("", "delta_time_factor_for_contact"): "only the explicit contact solver reads it, and it is not implemented",
@@ -69,8 +72,10 @@ class ContactMechanicalSolver(MechanicalSolver):
         settings["reform_dofs_at_each_step"].SetBool(True)
         self.sub_step_callbacks = (None, None)
         super().__init__(model, settings, **kwargs)
-        warn_about_keys_without_effect(settings["contact_settings"], _core.Parameters(CONTACT_SETTINGS),
-                                       KEYS_WITHOUT_EFFECT)
+        without_effect = dict(KEYS_WITHOUT_EFFECT)
+        if self.formulation.multiplier_blocks != 3:
+            without_effect.update(FRICTIONAL_KEYS_WITHOUT_EFFECT)
+        warn_about_keys_without_effect(settings["contact_settings"], contact_settings_defaults(), without_effect)
 
     def AddVariables(self) -> None:
         super().AddVariables()
