@@ -6,6 +6,8 @@
 #include <cmath>
 #include <tuple>
 
+#include <Eigen/LU>
+
 #include "core/model/dof.h"
 #include "core/model/node.h"
 #include "core/utilities/logger.h"
@@ -18,6 +20,8 @@ namespace mc {
 namespace {
 
 using BlockType = MixedULMLinearSolver::BlockType;
+/// The block of K(S_A, LM_A) of one node: at most three components.
+using SmallMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3>;
 
 BlockType Classify(const Dof& dof) {
   if (dof.fixed) return BlockType::kOther;  // an identity row (block builder): nothing to pair
@@ -117,8 +121,7 @@ void MixedULMLinearSolver::BuildStructure(const SparseMatrix& A) {
       slaves.emplace_back(dofs_[static_cast<std::size_t>(i)]->node->Id(),
                           dofs_[static_cast<std::size_t>(i)]->variable->ComponentIndex(), i);
   std::sort(slaves.begin(), slaves.end());
-  pair_slave_.clear();
-  pair_lm_.clear();
+  std::vector<std::tuple<IndexType, int, int, int>> pairs;  // (node id, component, slave row, multiplier)
   lm_inactive_.clear();
   for (int l = 0; l < n; ++l) {
     const BlockType type = types_[static_cast<std::size_t>(l)];
@@ -129,8 +132,26 @@ void MixedULMLinearSolver::BuildStructure(const SparseMatrix& A) {
     const auto it = std::upper_bound(slaves.begin(), slaves.end(), key);
     if (it == slaves.end() || std::get<0>(*it) != std::get<0>(key) || std::get<1>(*it) != std::get<1>(key))
       continue;  // no free slave displacement to pair with: l stays an unknown of the condensed system
-    pair_slave_.push_back(std::get<2>(*it));
-    pair_lm_.push_back(l);
+    pairs.emplace_back(std::get<0>(key), std::get<1>(key), std::get<2>(*it), l);
+  }
+  // The pairs of one node form a group: its block of K(S_A, LM_A) is inverted as a whole.
+  std::sort(pairs.begin(), pairs.end());
+  pair_slave_.clear();
+  pair_lm_.clear();
+  pair_group_.clear();
+  group_start_.assign(1, 0);
+  inv_offset_.assign(1, 0);
+  for (std::size_t q = 0; q < pairs.size(); ++q) {
+    if (q > 0 && std::get<0>(pairs[q]) != std::get<0>(pairs[q - 1])) group_start_.push_back(static_cast<int>(q));
+    pair_slave_.push_back(std::get<2>(pairs[q]));
+    pair_lm_.push_back(std::get<3>(pairs[q]));
+    pair_group_.push_back(static_cast<int>(group_start_.size()) - 1);
+  }
+  group_start_.push_back(static_cast<int>(pairs.size()));
+  if (pairs.empty()) group_start_.assign(1, 0);
+  for (std::size_t g = 0; g + 1 < group_start_.size(); ++g) {
+    const int m = group_start_[g + 1] - group_start_[g];
+    inv_offset_.push_back(inv_offset_.back() + m * m);
   }
   const auto n_pairs = pair_slave_.size();
 
@@ -170,15 +191,23 @@ void MixedULMLinearSolver::BuildStructure(const SparseMatrix& A) {
     const auto it = std::lower_bound(first, last, column);
     return it != last && *it == column ? row_positions_[static_cast<std::size_t>(it - row_columns_.begin())] : -1;
   };
-  pair_pivot_.resize(n_pairs);
-  for (std::size_t q = 0; q < n_pairs; ++q) pair_pivot_[q] = find_in_row(pair_slave_[q], pair_lm_[q]);
+  // K(s_a, l_b) of each group, row-major at inv_offset_ (the layout of its inverse).
+  block_positions_.assign(static_cast<std::size_t>(inv_offset_.back()), -1);
+  for (std::size_t g = 0; g + 1 < group_start_.size(); ++g) {
+    const int first = group_start_[g];
+    const int m = group_start_[g + 1] - first;
+    for (int a = 0; a < m; ++a)
+      for (int b = 0; b < m; ++b)
+        block_positions_[static_cast<std::size_t>(inv_offset_[g] + a * m + b)] = find_in_row(
+            pair_slave_[static_cast<std::size_t>(first + a)], pair_lm_[static_cast<std::size_t>(first + b)]);
+  }
   lm_inactive_diag_.resize(lm_inactive_.size());
   for (std::size_t k = 0; k < lm_inactive_.size(); ++k)
     lm_inactive_diag_[k] = find_in_row(lm_inactive_[k], lm_inactive_[k]);
 
   // Pattern of A' = A_RC - A_RL K_SL^-1 A_SC and, per entry, where its terms come from. Column j
   // of A' holds the R rows of column j of A and, for every pair row s with an entry in column j,
-  // the R rows of the pair's column l.
+  // the R rows of the columns l of the pairs of its group (K_SL^-1 is block diagonal).
   const int* outer = A.outerIndexPtr();
   const int* inner = A.innerIndexPtr();
   const auto nc = cond_to_column_.size();
@@ -205,10 +234,16 @@ void MixedULMLinearSolver::BuildStructure(const SparseMatrix& A) {
       if (const int cr = row_to_cond_[static_cast<std::size_t>(r)]; cr >= 0) terms.push_back({cr, p, {}});
       const int q = slave_pair[static_cast<std::size_t>(r)];
       if (q < 0) continue;
-      const int l = pair_lm_[static_cast<std::size_t>(q)];
-      for (int p2 = outer[l]; p2 < outer[l + 1]; ++p2)
-        if (const int cr = row_to_cond_[static_cast<std::size_t>(inner[p2])]; cr >= 0)
-          terms.push_back({cr, -1, {p2, p, q}});
+      const int g = pair_group_[static_cast<std::size_t>(q)];
+      const int first = group_start_[static_cast<std::size_t>(g)];
+      const int m = group_start_[static_cast<std::size_t>(g) + 1] - first;
+      for (int b = 0; b < m; ++b) {
+        const int l = pair_lm_[static_cast<std::size_t>(first + b)];
+        const int inverse = inv_offset_[static_cast<std::size_t>(g)] + b * m + (q - first);
+        for (int p2 = outer[l]; p2 < outer[l + 1]; ++p2)
+          if (const int cr = row_to_cond_[static_cast<std::size_t>(inner[p2])]; cr >= 0)
+            terms.push_back({cr, -1, {p2, p, inverse}});
+      }
     }
     std::stable_sort(terms.begin(), terms.end(), [](const Term& a, const Term& b) { return a.row < b.row; });
     for (std::size_t k = 0; k < terms.size();) {
@@ -234,7 +269,8 @@ void MixedULMLinearSolver::BuildStructure(const SparseMatrix& A) {
   if (inner_state_ == InnerState::kCondensed && (old_outer != new_outer || old_inner != new_inner))
     inner_state_ = InnerState::kNone;
 
-  inv_pivot_.resize(static_cast<Eigen::Index>(n_pairs));
+  inv_block_.resize(static_cast<Eigen::Index>(inv_offset_.back()));
+  group_work_.resize(static_cast<Eigen::Index>(n_pairs));
   b_work_.resize(n);
   b_condensed_.resize(static_cast<Eigen::Index>(nc));
   x_condensed_.setZero(static_cast<Eigen::Index>(nc));
@@ -261,21 +297,46 @@ std::string MixedULMLinearSolver::CheckDiagonalBlocks(const SparseMatrix& A) {
         return k;
     return -1;
   };
-  for (std::size_t q = 0; q < pair_slave_.size(); ++q) {
-    const int s = pair_slave_[q];
-    const int l = pair_lm_[q];
-    const double largest = row_max(s);
-    const double pivot = pair_pivot_[q] >= 0 ? v[pair_pivot_[q]] : 0.0;
-    if (!(std::abs(pivot) > kDiagonalTolerance * largest))
-      return Concat("K(S_A, LM_A) has no pivot for ", DofName(s), ": entry at ", DofName(l), " is ", pivot,
-                    " against a row maximum of ", largest);
-    const int k = first_off(s, kDiagonalTolerance * largest,
-                            [&](int c) { return c != l && eliminated_pair_[static_cast<std::size_t>(c)] >= 0; });
-    if (k >= 0)
-      return Concat("K(S_A, LM_A) is not diagonal: row ", DofName(s), " has ",
-                    v[row_positions_[static_cast<std::size_t>(k)]], " at ",
-                    DofName(row_columns_[static_cast<std::size_t>(k)]), " (pivot ", pivot, " at ", DofName(l), ")");
-    inv_pivot_[static_cast<Eigen::Index>(q)] = 1.0 / pivot;
+  for (std::size_t g = 0; g + 1 < group_start_.size(); ++g) {
+    const int first = group_start_[g];
+    const int m = group_start_[g + 1] - first;
+    SmallMatrix block(m, m);
+    double block_max = 0.0;
+    for (int a = 0; a < m; ++a) {
+      const int s = pair_slave_[static_cast<std::size_t>(first + a)];
+      const double largest = row_max(s);
+      double pivot = 0.0;  // the largest entry of the row within the group
+      for (int b = 0; b < m; ++b) {
+        const int position = block_positions_[static_cast<std::size_t>(inv_offset_[g] + a * m + b)];
+        block(a, b) = position >= 0 ? v[position] : 0.0;
+        pivot = std::max(pivot, std::abs(block(a, b)));
+      }
+      block_max = std::max(block_max, pivot);
+      const int l = pair_lm_[static_cast<std::size_t>(first + a)];
+      if (!(pivot > kDiagonalTolerance * largest))
+        return Concat("K(S_A, LM_A) has no pivot for ", DofName(s), ": its largest entry at the multipliers of node ",
+                      dofs_[static_cast<std::size_t>(l)]->node->Id(), " is ", pivot, " against a row maximum of ",
+                      largest);
+      // Dual multipliers couple a slave row to the multipliers of its own node only.
+      const int k = first_off(s, kDiagonalTolerance * largest, [&](int c) {
+        const int q = eliminated_pair_[static_cast<std::size_t>(c)];
+        return q >= 0 && pair_group_[static_cast<std::size_t>(q)] != static_cast<int>(g);
+      });
+      if (k >= 0)
+        return Concat("K(S_A, LM_A) is not diagonal node by node: row ", DofName(s), " has ",
+                      v[row_positions_[static_cast<std::size_t>(k)]], " at ",
+                      DofName(row_columns_[static_cast<std::size_t>(k)]), " (multipliers of node ",
+                      dofs_[static_cast<std::size_t>(l)]->node->Id(), " expected)");
+    }
+    Eigen::FullPivLU<SmallMatrix> lu(block);
+    lu.setThreshold(kDiagonalTolerance);
+    if (!lu.isInvertible())
+      return Concat("K(S_A, LM_A) is singular at the multipliers of node ",
+                    dofs_[static_cast<std::size_t>(pair_lm_[static_cast<std::size_t>(first)])]->node->Id(),
+                    " (largest entry ", block_max, ")");
+    const SmallMatrix inverse = lu.inverse();
+    for (int b = 0; b < m; ++b)
+      for (int a = 0; a < m; ++a) inv_block_[inv_offset_[g] + b * m + a] = inverse(b, a);
   }
   for (std::size_t k = 0; k < lm_inactive_.size(); ++k) {
     const int i = lm_inactive_[k];
@@ -289,6 +350,20 @@ std::string MixedULMLinearSolver::CheckDiagonalBlocks(const SparseMatrix& A) {
                     DofName(row_columns_[static_cast<std::size_t>(e)]));
   }
   return {};
+}
+
+void MixedULMLinearSolver::ApplyInverseBlocks(Vector& values) const {
+  double local[3];
+  for (std::size_t g = 0; g + 1 < group_start_.size(); ++g) {
+    const int first = group_start_[g];
+    const int m = group_start_[g + 1] - first;
+    for (int a = 0; a < m; ++a) local[a] = values[first + a];
+    for (int b = 0; b < m; ++b) {
+      double sum = 0.0;
+      for (int a = 0; a < m; ++a) sum += inv_block_[inv_offset_[g] + b * m + a] * local[a];
+      values[first + b] = sum;
+    }
+  }
 }
 
 // Solve -----------------------------------------------------------------------------------------
@@ -340,15 +415,18 @@ void MixedULMLinearSolver::SolveCondensed(const SparseMatrix& A, Vector& x, cons
     double value = cond_source_[k] >= 0 ? v[cond_source_[k]] : 0.0;
     for (int c = cond_offsets_[k]; c < cond_offsets_[k + 1]; ++c) {
       const Correction& t = corrections_[static_cast<std::size_t>(c)];
-      value -= v[t.rl] * v[t.sc] * inv_pivot_[t.pair];
+      value -= v[t.rl] * v[t.sc] * inv_block_[t.inverse];
     }
     cv[k] = value;
   }
   for (int r = 0; r < n; ++r)
     if (const int cr = row_to_cond_[static_cast<std::size_t>(r)]; cr >= 0) b_condensed_[cr] = b_work_[r];
+  for (std::size_t q = 0; q < pair_slave_.size(); ++q)
+    group_work_[static_cast<Eigen::Index>(q)] = b_work_[pair_slave_[q]];
+  ApplyInverseBlocks(group_work_);
   for (std::size_t q = 0; q < pair_slave_.size(); ++q) {
     const int l = pair_lm_[q];
-    const double factor = b_work_[pair_slave_[q]] * inv_pivot_[static_cast<Eigen::Index>(q)];
+    const double factor = group_work_[static_cast<Eigen::Index>(q)];
     for (int p = outer[l]; p < outer[l + 1]; ++p)
       if (const int cr = row_to_cond_[static_cast<std::size_t>(inner[p])]; cr >= 0) b_condensed_[cr] -= v[p] * factor;
   }
@@ -371,7 +449,7 @@ void MixedULMLinearSolver::SolveCondensed(const SparseMatrix& A, Vector& x, cons
   for (std::size_t k = 0; k < cond_to_column_.size(); ++k)
     x[cond_to_column_[k]] = x_condensed_[static_cast<Eigen::Index>(k)];
 
-  // Active multipliers from their slave rows (eq. 4.40b).
+  // Active multipliers from their slave rows (eq. 4.40b), node by node.
   for (std::size_t q = 0; q < pair_slave_.size(); ++q) {
     const int s = pair_slave_[q];
     const int t = tracked_row_[static_cast<std::size_t>(s)];
@@ -381,8 +459,10 @@ void MixedULMLinearSolver::SolveCondensed(const SparseMatrix& A, Vector& x, cons
       if (column_to_cond_[static_cast<std::size_t>(c)] >= 0)
         sum -= v[row_positions_[static_cast<std::size_t>(k)]] * x[c];
     }
-    x[pair_lm_[q]] = sum * inv_pivot_[static_cast<Eigen::Index>(q)];
+    group_work_[static_cast<Eigen::Index>(q)] = sum;
   }
+  ApplyInverseBlocks(group_work_);
+  for (std::size_t q = 0; q < pair_slave_.size(); ++q) x[pair_lm_[q]] = group_work_[static_cast<Eigen::Index>(q)];
   last_condensed_ = true;
   fallback_reason_.clear();
 }

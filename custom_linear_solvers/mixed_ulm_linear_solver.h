@@ -17,22 +17,26 @@ namespace mc {
 ///   N other | M master | S_A, S_I active / inactive slave displacements |
 ///   LM_A, LM_I active / inactive multipliers (nodal ACTIVE flag).
 /// Each S_A row s is paired with the LM_A unknown l of the same node and component. With dual
-/// multipliers K_{S_A,LM_A} = k D_AA^T is diagonal in that pairing, so row s gives
-///   dlambda_l = (b_s - sum_{c != l} K_sc dx_c) / K_sl                        (eq. 4.40b)
-/// and eliminating dlambda_l from every other row r (r -= K_rl / K_sl * row s) leaves a square
-/// system in displacements whose S_A rows are the former LM_A rows (eqs. 4.38-4.39: P for the
-/// master rows, C for the multiplier rows). The LM_I rows are diagonal (k^2/eps I): dlambda_I is
-/// solved first and its columns move to the right-hand side. The inner solver then solves
+/// multipliers D is diagonal, so K_{S_A,LM_A} couples the slave rows of a node to the multipliers
+/// of that node only: block diagonal with one small block B_j per node (d x d, d the number of
+/// its pairs). B_j = k D_jj I for frictionless components and sticking nodes; for a slipping
+/// node the Coulomb traction makes it full (its normal and the slip direction enter). The slave
+/// rows of node j give
+///   dlambda_j = B_j^-1 (b_S - sum_{c not in LM_A} K_Sc dx_c)                  (eq. 4.40b)
+/// and eliminating dlambda_j from every other row leaves a square system in displacements whose
+/// S_A rows are the former LM_A rows (eqs. 4.38-4.39: P for the master rows, C for the
+/// multiplier rows). The LM_I rows are diagonal (k^2/eps I): dlambda_I is solved first and its
+/// columns move to the right-hand side. The inner solver then solves
 ///   A' = A_RC - A_RL K_SL^-1 A_SC,   R = rows \ (S_A, LM_I),  C = columns \ (LM_A, LM_I).
 ///
 /// Fixed DoFs (identity rows of the block builder, absent rows of the elimination builder) are
 /// "other": a fixed multiplier leaves its slave row unpaired and vice versa; unpaired rows and
 /// unknowns stay in the condensed system, which is exact for them too.
 ///
-/// The result equals the monolithic solution. When the pairing is not diagonal (off-diagonal
-/// |K_sl'| > kDiagonalTolerance * row max, e.g. a dual basis of a partially covered slave
-/// element) or an LM_I row is not diagonal, the full system is solved by the inner solver and
-/// the reason is logged once.
+/// The result equals the monolithic solution. When K_{S_A,LM_A} is not block diagonal by node
+/// (an entry at another node's multiplier |K_sl'| > kDiagonalTolerance * row max, e.g. a dual
+/// basis of a partially covered slave element), a block is singular, or an LM_I row is not
+/// diagonal, the full system is solved by the inner solver and the reason is logged once.
 ///
 /// Work per solve with an unchanged pattern and active set: one pass over precomputed index
 /// lists (no search, no allocation); the inner solver is initialized again only when the
@@ -41,8 +45,8 @@ class MixedULMLinearSolver : public LinearSolver {
  public:
   enum class BlockType : std::uint8_t { kOther, kMaster, kSlaveInactive, kSlaveActive, kLmInactive, kLmActive };
 
-  /// Relative size of an entry of K_{S_A,LM_A} (or of an LM_I row) off the pairing, against the
-  /// largest entry of its row, below which the block counts as diagonal.
+  /// Relative size of an entry of K_{S_A,LM_A} off the node's block (or of an LM_I row off the
+  /// diagonal), against the largest entry of its row, below which it counts as zero.
   static constexpr double kDiagonalTolerance = 1e-10;
 
   explicit MixedULMLinearSolver(std::unique_ptr<LinearSolver> inner);
@@ -81,17 +85,21 @@ class MixedULMLinearSolver : public LinearSolver {
 
  private:
   enum class InnerState { kNone, kFull, kCondensed };
-  /// One term K_rl K_sc / K_sl of a condensed entry: positions in A's values and the pair.
+  /// One term K_rl (B^-1)_ls K_sc of a condensed entry: positions in A's values and the index
+  /// of (B^-1)_ls in inv_block_.
   struct Correction {
     int rl;
     int sc;
-    int pair;
+    int inverse;
   };
 
   void BuildStructure(const SparseMatrix& A);
   void BuildRowLists(const SparseMatrix& A);
-  /// Empty when the pairing and the LM_I rows are diagonal; else the reason, naming the DoFs.
+  /// Empty when K_{S_A,LM_A} is block diagonal by node with invertible blocks (stored inverted
+  /// in inv_block_) and the LM_I rows are diagonal; else the reason, naming the DoFs.
   std::string CheckDiagonalBlocks(const SparseMatrix& A);
+  /// values (one per pair, grouped by node) := B^-1 values, block by block.
+  void ApplyInverseBlocks(Vector& values) const;
   /// Solves A x = b with the inner solver; `warn` logs the reason (once per solver).
   void SolveFull(const SparseMatrix& A, Vector& x, const Vector& b, std::string reason, bool warn);
   void SolveCondensed(const SparseMatrix& A, Vector& x, const Vector& b);
@@ -111,7 +119,10 @@ class MixedULMLinearSolver : public LinearSolver {
   // Structure (BuildStructure), rebuilt when the pattern or the classification changes.
   std::vector<int> pair_slave_;        ///< row s of each pair
   std::vector<int> pair_lm_;           ///< column l of each pair
-  std::vector<int> pair_pivot_;        ///< position of K_sl in A's values
+  std::vector<int> pair_group_;        ///< node group of each pair
+  std::vector<int> group_start_;       ///< first pair of each group (+ end)
+  std::vector<int> inv_offset_;        ///< start of each group's m x m block in inv_block_ (+ end)
+  std::vector<int> block_positions_;   ///< position of K(s_a, l_b) in A's values, -1 if absent
   std::vector<int> lm_inactive_;       ///< LM_I rows
   std::vector<int> lm_inactive_diag_;  ///< position of their diagonal (-1 if absent)
   std::vector<int> row_to_cond_;       ///< condensed row of each row of A, -1 if eliminated
@@ -129,7 +140,8 @@ class MixedULMLinearSolver : public LinearSolver {
   std::vector<Correction> corrections_;
 
   // Work vectors.
-  Vector inv_pivot_;
+  Vector inv_block_;   ///< B^-1 of each group, row-major: (B^-1)(b, a) at inv_offset_ + b m + a
+  Vector group_work_;  ///< one value per pair
   Vector b_work_;
   Vector b_condensed_;
   Vector x_condensed_;

@@ -7,11 +7,13 @@
 #include "core/solving/builder_and_solver.h"
 #include "core/solving/scheme.h"
 #include "custom_python/python_module.h"
+#include "custom_strategies/custom_convergencecriterias/alm_frictional_mortar_criteria.h"
 #include "custom_strategies/custom_convergencecriterias/alm_frictionless_components_mortar_criteria.h"
 #include "custom_strategies/custom_convergencecriterias/alm_frictionless_mortar_criteria.h"
 #include "custom_strategies/custom_convergencecriterias/block_contact_criteria.h"
 #include "custom_strategies/custom_convergencecriterias/mesh_tying_mortar_criteria.h"
 #include "custom_strategies/custom_convergencecriterias/mortar_and_criteria.h"
+#include "custom_strategies/custom_convergencecriterias/penalty_frictional_mortar_criteria.h"
 #include "custom_strategies/custom_convergencecriterias/penalty_frictionless_mortar_criteria.h"
 #include "custom_strategies/custom_strategies/contact_mortar_updater.h"
 #include "custom_strategies/custom_strategies/line_search_contact_strategy.h"
@@ -26,9 +28,10 @@ void BindBlockCriteria(py::module_& m, const char* name, const char* doc) {
   py::class_<Criteria, BlockContactCriteria, std::shared_ptr<Criteria>>(m, name, doc)
       .def(py::init<Parameters>(), py::arg("settings") = Parameters(),
            "Validates settings against its defaults (unknown keys rejected with the nearest valid one).")
-      .def(py::init<const Parameters&, const Parameters&>(), py::arg("solver_settings"), py::arg("contact_settings"),
+      .def(py::init<const Parameters&, const Parameters&, bool>(), py::arg("solver_settings"),
+           py::arg("contact_settings"), py::arg("pure_slip") = false,
            "The criterion of a contact solver: displacement tolerances from solver_settings, the rest from "
-           "contact_settings.")
+           "contact_settings; pure_slip (frictional criteria): every tangential multiplier counts as slip.")
       .def_static("GetDefaultParameters", &Criteria::GetDefaultParameters, "Kratos' keys and defaults.");
 }
 
@@ -37,6 +40,15 @@ void BindMortarCriteria(py::module_& m, const char* name, const char* doc) {
   py::class_<Criteria, BaseMortarConvergenceCriteria, std::shared_ptr<Criteria>>(m, name, doc)
       .def(py::init<Parameters>(), py::arg("settings") = Parameters(),
            "Reads its keys of contact_settings (missing ones get their defaults).");
+}
+
+template <class Criteria>
+void BindFrictionalMortarCriteria(py::module_& m, const char* name, const char* doc) {
+  py::class_<Criteria, BaseMortarConvergenceCriteria, std::shared_ptr<Criteria>>(m, name, doc)
+      .def(py::init<Parameters, bool>(), py::arg("settings") = Parameters(), py::arg("pure_slip") = false,
+           "Reads its keys of contact_settings (missing ones get their defaults); pure_slip: every active node "
+           "slips (the PureSlip formulations).")
+      .def("PureSlip", &Criteria::PureSlip, "Whether every active node is kept slipping.");
 }
 
 }  // namespace
@@ -67,7 +79,8 @@ void AddContactStrategiesToPython(py::module_& m) {
       .def(
           "Tolerances",
           [](const BlockContactCriteria& c) {
-            static constexpr std::array<const char*, kDofFamilies> kNames = {"displacement", "rotation", "multiplier"};
+            static constexpr std::array<const char*, kDofFamilies> kNames = {"displacement", "rotation", "multiplier",
+                                                                             "stick", "slip"};
             py::dict tolerances;
             for (std::size_t f = 0; f < kDofFamilies; ++f)
               if (const auto& block = c.Configuration(static_cast<DofFamily>(f)))
@@ -76,7 +89,15 @@ void AddContactStrategiesToPython(py::module_& m) {
                     block->relative_tolerance, block->absolute_tolerance);
             return tolerances;
           },
-          "{family: (measure, relative tolerance, absolute tolerance)} of the families the criterion measures.")
+          "{family: (measure, relative tolerance, absolute tolerance)} of the families the criterion measures "
+          "(frictional criteria: multiplier is the normal block, stick and slip the tangential ones).")
+      .def("PureSlip", &BlockContactCriteria::PureSlip,
+           "Frictional criteria: whether every tangential multiplier counts as slip.")
+      .def("RatioNormalTangentThreshold", &BlockContactCriteria::RatioNormalTangentThreshold,
+           "Frictional criteria: tangential blocks below this fraction of the normal one are accepted (0 otherwise).")
+      .def_static("Create", &BlockContactCriteria::Create, py::arg("settings"),
+                  "The criterion named by settings['name'] (Kratos' names; the residual frictional one in both "
+                  "spellings), validated against its defaults.")
       .def_static("GetContactSettingsDefaults", &BlockContactCriteria::GetContactSettingsDefaults,
                   "The keys of contact_settings the block criteria read (ensure_contact, rotation and multiplier "
                   "tolerances) with Kratos' defaults.");
@@ -93,6 +114,18 @@ void AddContactStrategiesToPython(py::module_& m) {
   BindBlockCriteria<DisplacementLagrangeMultiplierMixedContactCriteria>(
       m, "DisplacementLagrangeMultiplierMixedContactCriteria",
       "displacement_lagrange_multiplier_mixed_contact_criteria: displacement residual, multiplier increment");
+  BindBlockCriteria<DisplacementLagrangeMultiplierFrictionalContactCriteria>(
+      m, "DisplacementLagrangeMultiplierFrictionalContactCriteria",
+      "displacement_lagrangemultiplier_frictional_contact_criteria: displacement increment; multiplier increment "
+      "split into normal, stick-tangent and slip-tangent blocks");
+  BindBlockCriteria<DisplacementLagrangeMultiplierResidualFrictionalContactCriteria>(
+      m, "DisplacementLagrangeMultiplierResidualFrictionalContactCriteria",
+      "displacement_lagrangemultiplier_ressidual_frictional_contact_criteria (sic): residuals, the multiplier split "
+      "into normal, stick-tangent and slip-tangent blocks");
+  BindBlockCriteria<DisplacementLagrangeMultiplierMixedFrictionalContactCriteria>(
+      m, "DisplacementLagrangeMultiplierMixedFrictionalContactCriteria",
+      "displacement_lagrangemultiplier_mixed_frictional_contact_criteria: displacement residual; multiplier "
+      "increments in normal, stick-tangent and slip-tangent blocks");
 
   py::class_<BaseMortarConvergenceCriteria, ConvergenceCriteria, std::shared_ptr<BaseMortarConvergenceCriteria>>(
       m, "BaseMortarConvergenceCriteria", "base_mortar_criteria: mortar quantities refresh, no active set.")
@@ -101,7 +134,13 @@ void AddContactStrategiesToPython(py::module_& m) {
       .def("SetMortarUpdater", &BaseMortarConvergenceCriteria::SetMortarUpdater, py::arg("updater"),
            "The MortarUpdater refreshing normals, weighted gap, dynamic factor and penalty.")
       .def("LastChangedNodes", &BaseMortarConvergenceCriteria::LastChangedNodes,
-           "Ids of the slave nodes that changed state at the last evaluation of the active set.")
+           "Ids of the slave nodes that changed state (ACTIVE or SLIP) at the last evaluation of the active set.")
+      .def("LastChangeCount", &BaseMortarConvergenceCriteria::LastChangeCount,
+           "Slave nodes that switched ACTIVE at the last evaluation.")
+      .def("LastSlipChangeCount", &BaseMortarConvergenceCriteria::LastSlipChangeCount,
+           "Active nodes that switched between stick and slip at the last evaluation (0 without friction).")
+      .def("HasSlipSet", &BaseMortarConvergenceCriteria::HasSlipSet,
+           "Whether the criterion also updates a stick/slip set (frictional formulations).")
       .def_static("GetDefaultParameters", &BaseMortarConvergenceCriteria::GetDefaultParameters,
                   "Its keys of contact_settings with their defaults.");
   BindMortarCriteria<ALMFrictionlessMortarConvergenceCriteria>(
@@ -113,6 +152,14 @@ void AddContactStrategiesToPython(py::module_& m) {
   BindMortarCriteria<PenaltyFrictionlessMortarConvergenceCriteria>(
       m, "PenaltyFrictionlessMortarConvergenceCriteria",
       "penalty_frictionless_mortar_criteria: a node is active when its weighted gap is negative.");
+  BindFrictionalMortarCriteria<ALMFrictionalMortarConvergenceCriteria>(
+      m, "ALMFrictionalMortarConvergenceCriteria",
+      "alm_frictional_mortar_criteria: active set (k n . lambda + eps g < 0) and Coulomb stick/slip set (thesis eqs. "
+      "4.75-4.77), converged when neither changed; ACTIVE_SET_CONVERGED and SLIP_SET_CONVERGED reported separately.");
+  BindFrictionalMortarCriteria<PenaltyFrictionalMortarConvergenceCriteria>(
+      m, "PenaltyFrictionalMortarConvergenceCriteria",
+      "penalty_frictional_mortar_criteria: active set (negative weighted gap) and Coulomb stick/slip set, converged "
+      "when the changes of both sum to zero.");
   py::class_<MeshTyingMortarConvergenceCriteria, ConvergenceCriteria,
              std::shared_ptr<MeshTyingMortarConvergenceCriteria>>(m, "MeshTyingMortarConvergenceCriteria",
                                                                   "mesh_tying_mortar_criteria: always converged")

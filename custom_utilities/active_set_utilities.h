@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Primal-dual active set of the frictionless mortar formulations (thesis eqs. 4.41-4.44).
+// Primal-dual active set of the mortar formulations: frictionless (thesis eqs. 4.41-4.44) and
+// Coulomb frictional with its stick/slip set (eqs. 4.75-4.77).
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -46,6 +48,48 @@ constexpr double ActivationPressure(double scale_factor, double augmented_pressu
   return augmented_pressure / scale_factor;
 }
 
+/// Coulomb friction. With the unit normal n, the tangential multiplier lambda_t = lambda - (n . lambda) n
+/// and the weighted slip s (tangential), the augmented tangent pressure is
+///   lbar_t = k lambda_t + c eps s,   c = c_tau (stick node), c_slip c_tau (slip node)
+/// (k = 0 and c = c_tau for the penalty formulation). The node slips when |lbar_t| exceeds the
+/// Coulomb limit -mu lbar_n times theta, theta = 1 for a sticking node and 1 - SLIP_THRESHOLD for
+/// one that already slips: the small hysteresis keeps a node at the limit from chattering.
+
+/// The part of `v` orthogonal to the unit `normal`.
+inline Array3 TangentialPart(const Array3& v, const Array3& normal) { return v - normal.dot(v) * normal; }
+
+/// lbar_t = k lambda_t + c eps s.
+inline Array3 AugmentedTangentPressure(double scale_factor, const Array3& tangent_multiplier, double coefficient,
+                                       double penalty, const Array3& weighted_slip) {
+  return scale_factor * tangent_multiplier + coefficient * penalty * weighted_slip;
+}
+
+/// theta of the slip test: 1 for a sticking node, 1 - slip_threshold for a slipping one.
+constexpr double SlipTestFactor(bool was_slip, double slip_threshold) noexcept {
+  return was_slip ? 1.0 - slip_threshold : 1.0;
+}
+
+/// |lbar_t| > theta (-mu lbar_n). Without friction (mu = 0) any tangent pressure slips.
+inline bool IsSlip(double tangent_pressure_norm, double friction_coefficient, double augmented_normal_pressure,
+                   double theta) noexcept {
+  return tangent_pressure_norm > theta * (-friction_coefficient * augmented_normal_pressure);
+}
+
+/// The tangent traction of a slipping node: the Coulomb limit -mu lbar_n along `direction`
+/// (normalised here; a zero direction gives a zero traction).
+inline Array3 CoulombLimit(double friction_coefficient, double augmented_normal_pressure, const Array3& direction) {
+  const double norm = direction.norm();
+  if (!(norm > 0.0)) return Array3::Zero();
+  return (-friction_coefficient * augmented_normal_pressure / norm) * direction;
+}
+
+/// What an update changed: nodes that switched ACTIVE and (frictional formulations) active nodes
+/// that switched between stick and slip (SLIP).
+struct SetChanges {
+  std::size_t active = 0;
+  std::size_t slip = 0;
+};
+
 /// Nodes whose ACTIVE flag was changed by the last call of the functions below, if requested.
 using ChangedNodes = std::vector<IndexType>;
 
@@ -62,6 +106,24 @@ std::size_t ComputeALMFrictionlessComponentsActiveSet(ModelPart& contact_part, C
 
 /// Penalty: lambda_bar = eps g, i.e. the sign of the weighted gap.
 std::size_t ComputePenaltyFrictionlessActiveSet(ModelPart& contact_part, ChangedNodes* changed = nullptr);
+
+/// Vector ALM with Coulomb friction, on the SLAVE nodes of `contact_part`: AUGMENTED_NORMAL_CONTACT_PRESSURE
+/// and AUGMENTED_TANGENT_CONTACT_PRESSURE (non-historical) as above, ACTIVE from lbar_n; a node that
+/// switches on starts from lambda = n lbar_n / k + lbar_t / k (normal part only when mu = 0). An
+/// active node is set SLIP by the slip test, and then its tangent pressure is stored at the
+/// Coulomb limit along its tangential multiplier. With `pure_slip` every active node is SLIP
+/// (a node the test finds sticking is reported at echo level >= 1) and no stick/slip change is
+/// counted. Inactive nodes lose SLIP and their WEIGHTED_SLIP. FRICTION_COEFFICIENT is nodal
+/// (non-historical); TANGENT_FACTOR, SLIP_THRESHOLD, SLIP_AUGMENTATION_COEFFICIENT come from the
+/// ProcessInfo (the last two 0 when absent). `changed`: the nodes whose ACTIVE or SLIP changed.
+SetChanges ComputeALMFrictionalActiveSet(ModelPart& contact_part, bool pure_slip, int echo_level = 0,
+                                         ChangedNodes* changed = nullptr);
+
+/// Penalty with Coulomb friction: lbar_n = eps g, lbar_t = c_tau eps s, slip when
+/// |lbar_t| > -mu lbar_n (no hysteresis); otherwise as ComputeALMFrictionalActiveSet, the slip
+/// traction directed along lbar_t.
+SetChanges ComputePenaltyFrictionalActiveSet(ModelPart& contact_part, bool pure_slip, int echo_level = 0,
+                                             ChangedNodes* changed = nullptr);
 
 }  // namespace ActiveSetUtilities
 }  // namespace mc

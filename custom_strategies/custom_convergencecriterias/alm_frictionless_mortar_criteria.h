@@ -15,8 +15,8 @@ class ALMFrictionlessMortarConvergenceCriteria : public BaseMortarConvergenceCri
   std::string Name() const override { return "alm_frictionless_mortar_criteria"; }
 
  protected:
-  std::size_t UpdateActiveSet(ModelPart& contact_part, ActiveSetUtilities::ChangedNodes* changed) override {
-    return ActiveSetUtilities::ComputeALMFrictionlessActiveSet(contact_part, changed);
+  SetChanges UpdateActiveSet(ModelPart& contact_part, ActiveSetUtilities::ChangedNodes* changed) override {
+    return {ActiveSetUtilities::ComputeALMFrictionlessActiveSet(contact_part, changed), 0};
   }
 };
 

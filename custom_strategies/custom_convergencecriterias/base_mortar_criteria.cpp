@@ -63,8 +63,10 @@ bool BaseMortarConvergenceCriteria::PostCriteria(ModelPart& model_part, const Do
   ModelPart* contact = FindContactModelPart(model_part);
   ProcessInfo& info = model_part.GetProcessInfo();
   changed_.clear();
+  changes_ = {};
   if (!contact) {
     info.SetValue(ACTIVE_SET_CONVERGED, true);
+    if (HasSlipSet()) info.SetValue(SLIP_SET_CONVERGED, true);
     return true;
   }
   if (contact->HasNodalSolutionStepVariable(WEIGHTED_GAP) && updater_) {
@@ -73,15 +75,21 @@ bool BaseMortarConvergenceCriteria::PostCriteria(ModelPart& model_part, const Do
         node->FastGetSolutionStepValue(WEIGHTED_GAP, 1) = node->FastGetSolutionStepValue(WEIGHTED_GAP);
     RecomputeWeightedGap(model_part, *contact, *updater_);
   }
-  if (model_part.Is(INTERACTION) || info.GetValue(NL_ITERATION_NUMBER) == 1) UpdateActiveSet(*contact, &changed_);
-  const bool converged = changed_.empty();
+  if (model_part.Is(INTERACTION) || info.GetValue(NL_ITERATION_NUMBER) == 1)
+    changes_ = UpdateActiveSet(*contact, &changed_);
+  const bool converged = changes_.active + changes_.slip == 0;
   info.SetValue(ACTIVE_SET_CONVERGED, converged);
-  if (echo_level_ >= 1 && print_) Logger::Info(Concat(Name(), ": ", changed_.size(), " slave node(s) changed state"));
+  if (HasSlipSet()) info.SetValue(SLIP_SET_CONVERGED, changes_.slip == 0);
+  if (echo_level_ >= 1 && print_)
+    Logger::Info(Concat(Name(), ": ", changes_.active, " slave node(s) changed contact state",
+                        HasSlipSet() ? Concat(", ", changes_.slip, " changed between stick and slip") : ""));
   return converged;
 }
 
 std::vector<CriterionValue> BaseMortarConvergenceCriteria::LastValues() const {
-  return {{"active set changes", static_cast<double>(changed_.size()), 0.0}};
+  std::vector<CriterionValue> values{{"active set changes", static_cast<double>(changes_.active), 0.0}};
+  if (HasSlipSet()) values.push_back({"slip set changes", static_cast<double>(changes_.slip), 0.0});
+  return values;
 }
 
 }  // namespace mc

@@ -22,7 +22,9 @@ namespace mc {
 ///    recomputed at the updated coordinates, then UpdateActiveSet of the derived class runs if
 ///    the computing model part Is(INTERACTION) (full semi-smooth Newton) or at iteration 1
 ///    (simplified semi-smooth Newton, the set is frozen afterwards). Converged when no node
-///    changed; the answer is also stored in ProcessInfo[ACTIVE_SET_CONVERGED].
+///    changed, neither ACTIVE nor (frictional formulations, HasSlipSet) SLIP; ProcessInfo
+///    [ACTIVE_SET_CONVERGED] stores that answer and [SLIP_SET_CONVERGED] whether no node
+///    switched between stick and slip.
 ///
 /// Settings, keys of Kratos' contact_settings: `compute_dynamic_factor` (false), `gidio_debug`
 /// (false: accepted; per-iteration dumps are not written by this version),
@@ -39,28 +41,36 @@ class BaseMortarConvergenceCriteria : public ConvergenceCriteria {
                    const Vector& b) override;
   bool PostCriteria(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A, const Vector& dx,
                     const Vector& b) override;
-  /// {"active set changes", number of nodes that changed at the last check, 0}.
+  /// {"active set changes", ACTIVE changes at the last check, 0} and, with a slip set,
+  /// {"slip set changes", SLIP changes, 0}.
   std::vector<CriterionValue> LastValues() const override;
+  /// Whether the formulation has a stick/slip set (frictional): the SLIP/STICK CONV column.
+  virtual bool HasSlipSet() const noexcept { return false; }
 
   void SetMortarUpdater(std::shared_ptr<MortarUpdater> updater) noexcept { updater_ = std::move(updater); }
   const std::shared_ptr<MortarUpdater>& GetMortarUpdater() const noexcept { return updater_; }
-  /// Ids of the slave nodes that changed state at the last evaluation of the set.
+  /// Ids of the slave nodes that changed state (ACTIVE or SLIP) at the last evaluation of the set.
   const ActiveSetUtilities::ChangedNodes& LastChangedNodes() const noexcept { return changed_; }
-  std::size_t LastChangeCount() const noexcept { return changed_.size(); }
+  /// Nodes that switched ACTIVE at the last check.
+  std::size_t LastChangeCount() const noexcept { return changes_.active; }
+  /// Active nodes that switched between stick and slip at the last check (0 without friction).
+  std::size_t LastSlipChangeCount() const noexcept { return changes_.slip; }
   bool ComputeDynamicFactor() const noexcept { return compute_dynamic_factor_; }
   bool PrintConvergenceCriterion() const noexcept { return print_; }
 
  protected:
-  /// The NCP update of the derived formulation on the contact sub-model-part; returns the
-  /// number of nodes that changed. The base class has no active set.
-  virtual std::size_t UpdateActiveSet(ModelPart& contact_part, ActiveSetUtilities::ChangedNodes* changed) {
+  using SetChanges = ActiveSetUtilities::SetChanges;
+  /// The NCP update of the derived formulation on the contact sub-model-part; returns what
+  /// changed (the frictionless ones: ACTIVE only). The base class has no active set.
+  virtual SetChanges UpdateActiveSet(ModelPart& contact_part, ActiveSetUtilities::ChangedNodes* changed) {
     if (changed) changed->clear();
-    return 0;
+    return {};
   }
 
  private:
   std::shared_ptr<MortarUpdater> updater_;
   ActiveSetUtilities::ChangedNodes changed_;
+  SetChanges changes_;
   bool compute_dynamic_factor_ = false;
   bool print_ = false;
 };

@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "custom_strategies/custom_convergencecriterias/block_contact_criteria.h"
 
-#include <cassert>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "core/model/model_part.h"
 #include "core/utilities/logger.h"
+#include "core/utilities/string_utilities.h"
 #include "core/variables/kernel_variables.h"
 
 namespace mc {
@@ -15,58 +16,102 @@ namespace {
 
 using Measure = BlockContactCriteria::Measure;
 
-/// How one family is measured by a criterion, and the prefix of its tolerance keys
-/// (`<prefix>_relative_tolerance`, `<prefix>_absolute_tolerance`).
+/// How one family is measured by a criterion and its tolerance keys: `relative` and `absolute`
+/// in the criterion's own settings; read from contact_settings the absolute one is
+/// `contact_absolute` (only Kratos' mixed frictional criterion names them differently).
 struct BlockKeys {
   Measure measure;
-  const char* prefix;
+  const char* relative;
+  const char* absolute;
+  const char* contact_absolute = nullptr;
   double relative_default = 1e-4;
   double absolute_default = 1e-9;
+  const char* ContactAbsolute() const { return contact_absolute ? contact_absolute : absolute; }
 };
 
 /// One criterion: Kratos' name and its blocks, indexed by DofFamily (none: not measured).
+/// Frictional rows split the vector multipliers into normal / stick / slip blocks.
 struct CriterionRow {
   const char* name;
   std::array<std::optional<BlockKeys>, kDofFamilies> blocks;
+  bool frictional = false;
 };
 
-constexpr BlockKeys kDisplacementIncrement{Measure::kIncrement, "displacement"};
-constexpr BlockKeys kDisplacementResidual{Measure::kResidual, "residual"};
-constexpr BlockKeys kRotationIncrement{Measure::kIncrement, "rotation"};
-constexpr BlockKeys kRotationResidual{Measure::kResidual, "rotation_residual"};
-constexpr BlockKeys kMultiplierIncrement{Measure::kIncrement, "contact_displacement"};
-constexpr BlockKeys kMultiplierResidual{Measure::kResidual, "contact_residual"};
+constexpr BlockKeys kDisplacementIncrement{Measure::kIncrement, "displacement_relative_tolerance",
+                                           "displacement_absolute_tolerance"};
+constexpr BlockKeys kDisplacementResidual{Measure::kResidual, "residual_relative_tolerance",
+                                          "residual_absolute_tolerance"};
+constexpr BlockKeys kRotationIncrement{Measure::kIncrement, "rotation_relative_tolerance",
+                                       "rotation_absolute_tolerance"};
+constexpr BlockKeys kRotationResidual{Measure::kResidual, "rotation_residual_relative_tolerance",
+                                      "rotation_residual_absolute_tolerance"};
+constexpr BlockKeys kMultiplierIncrement{Measure::kIncrement, "contact_displacement_relative_tolerance",
+                                         "contact_displacement_absolute_tolerance"};
+constexpr BlockKeys kMultiplierResidual{Measure::kResidual, "contact_residual_relative_tolerance",
+                                        "contact_residual_absolute_tolerance"};
+constexpr BlockKeys kStickIncrement{Measure::kIncrement, "frictional_stick_contact_displacement_relative_tolerance",
+                                    "frictional_stick_contact_displacement_absolute_tolerance"};
+constexpr BlockKeys kStickResidual{Measure::kResidual, "frictional_stick_contact_residual_relative_tolerance",
+                                   "frictional_stick_contact_residual_absolute_tolerance"};
+constexpr BlockKeys kSlipIncrement{Measure::kIncrement, "frictional_slip_contact_displacement_relative_tolerance",
+                                   "frictional_slip_contact_displacement_absolute_tolerance"};
+constexpr BlockKeys kSlipResidual{Measure::kResidual, "frictional_slip_contact_residual_relative_tolerance",
+                                  "frictional_slip_contact_residual_absolute_tolerance"};
+// Kratos' mixed frictional criterion: the absolute tolerance of a tangential increment block is
+// its key "..._residual_relative_tolerance" (default 1e-9), fed from "..._residual_absolute_tolerance".
+constexpr BlockKeys kStickIncrementMixed{
+    Measure::kIncrement, "frictional_stick_contact_displacement_relative_tolerance",
+    "frictional_stick_contact_residual_relative_tolerance", "frictional_stick_contact_residual_absolute_tolerance"};
+constexpr BlockKeys kSlipIncrementMixed{Measure::kIncrement, "frictional_slip_contact_displacement_relative_tolerance",
+                                        "frictional_slip_contact_residual_relative_tolerance",
+                                        "frictional_slip_contact_residual_absolute_tolerance"};
 
 /// The table, indexed by BlockCriterion.
-constexpr std::array<CriterionRow, 5> kCriteria = {{
-    {"displacement_contact_criteria", {kDisplacementIncrement, kRotationIncrement, std::nullopt}},
-    {"displacement_residual_contact_criteria", {kDisplacementResidual, kRotationResidual, std::nullopt}},
+constexpr std::array<CriterionRow, 8> kCriteria = {{
+    {"displacement_contact_criteria", {kDisplacementIncrement, kRotationIncrement}},
+    {"displacement_residual_contact_criteria", {kDisplacementResidual, kRotationResidual}},
     {"displacement_lagrangemultiplier_contact_criteria",
      {kDisplacementIncrement, kRotationIncrement, kMultiplierIncrement}},
     {"displacement_lagrangemultiplier_residual_contact_criteria",
      {kDisplacementResidual, kRotationResidual, kMultiplierResidual}},
     {"displacement_lagrange_multiplier_mixed_contact_criteria",
      {kDisplacementResidual, kRotationResidual, kMultiplierIncrement}},
+    {"displacement_lagrangemultiplier_frictional_contact_criteria",
+     {kDisplacementIncrement, kRotationIncrement, kMultiplierIncrement, kStickIncrement, kSlipIncrement},
+     true},
+    {"displacement_lagrangemultiplier_ressidual_frictional_contact_criteria",
+     {kDisplacementResidual, kRotationResidual, kMultiplierResidual, kStickResidual, kSlipResidual},
+     true},
+    {"displacement_lagrangemultiplier_mixed_frictional_contact_criteria",
+     {kDisplacementResidual, kRotationResidual, kMultiplierIncrement, kStickIncrementMixed, kSlipIncrementMixed},
+     true},
 }};
+
+// The correct spelling of Kratos' "ressidual" frictional criterion, accepted by Create.
+constexpr const char* kResidualFrictionalSpelledRight =
+    "displacement_lagrangemultiplier_residual_frictional_contact_criteria";
+constexpr double kRatioNormalTangentDefault = 1e-4;
 
 const CriterionRow& RowOf(BlockCriterion criterion) { return kCriteria[static_cast<std::size_t>(criterion)]; }
 
-std::string RelativeKey(const BlockKeys& keys) { return Concat(keys.prefix, "_relative_tolerance"); }
-std::string AbsoluteKey(const BlockKeys& keys) { return Concat(keys.prefix, "_absolute_tolerance"); }
+bool IsTangential(std::size_t family) {
+  return family == static_cast<std::size_t>(DofFamily::kStickMultiplier) ||
+         family == static_cast<std::size_t>(DofFamily::kSlipMultiplier);
+}
 
 /// The tolerances of `criterion`: the displacement family's from `displacement_source`, the
-/// others from `other_source`.
+/// others from `other_source` (`contact`: a contact_settings block, with its key names).
 BlockContactCriteria::Blocks ReadBlocks(BlockCriterion criterion, const Parameters& displacement_source,
-                                        const Parameters& other_source) {
+                                        const Parameters& other_source, bool contact) {
   const CriterionRow& row = RowOf(criterion);
   BlockContactCriteria::Blocks blocks;
   for (std::size_t f = 0; f < kDofFamilies; ++f) {
     if (!row.blocks[f]) continue;
     const BlockKeys& keys = *row.blocks[f];
-    const Parameters& source =
-        f == static_cast<std::size_t>(DofFamily::kDisplacement) ? displacement_source : other_source;
-    const std::string relative = RelativeKey(keys);
-    const std::string absolute = AbsoluteKey(keys);
+    const bool displacement = f == static_cast<std::size_t>(DofFamily::kDisplacement);
+    const Parameters& source = displacement ? displacement_source : other_source;
+    const std::string relative = keys.relative;
+    const std::string absolute = contact && !displacement ? keys.ContactAbsolute() : keys.absolute;
     BlockContactCriteria::Block block{keys.measure, source[relative].GetDouble(), source[absolute].GetDouble()};
     if (!(block.relative_tolerance >= 0.0) || !(block.absolute_tolerance >= 0.0))
       throw InputError(Concat(source.Where(), ": ", relative, " = ", block.relative_tolerance, " and ", absolute, " = ",
@@ -74,6 +119,20 @@ BlockContactCriteria::Blocks ReadBlocks(BlockCriterion criterion, const Paramete
     blocks[f] = block;
   }
   return blocks;
+}
+
+/// Residual measures need the residual at the updated state.
+bool MeasuresResidual(const BlockContactCriteria::Blocks& blocks) {
+  return std::any_of(blocks.begin(), blocks.end(),
+                     [](const auto& block) { return block && block->measure == Measure::kResidual; });
+}
+
+double ReadRatioNormalTangent(BlockCriterion criterion, const Parameters& settings) {
+  if (!RowOf(criterion).frictional) return 0.0;
+  const double ratio = settings["ratio_normal_tangent_threshold"].GetDouble();
+  if (!(ratio >= 0.0))
+    throw InputError(Concat(settings.Where(), ".ratio_normal_tangent_threshold: ", ratio, " must not be negative"));
+  return ratio;
 }
 
 /// `settings`, validated in place against the defaults of `criterion`.
@@ -86,8 +145,9 @@ constexpr double kTiny = std::numeric_limits<double>::epsilon();
 // Relative size of an increment that no longer changes the unknowns (a few hundred ulps).
 constexpr double kRoundOffIncrement = 256.0 * std::numeric_limits<double>::epsilon();
 
-// The symbol of the unknown of each family, in the column names ("|du|/|u|", "|r_lm|^2/n").
-constexpr std::array<const char*, kDofFamilies> kSymbol = {"u", "w", "lm"};
+// The symbol of the unknown of each family, in the column names ("|du|/|u|", "|r_lm|^2/n"); the
+// frictional rows call the normal multiplier "lm_n".
+constexpr std::array<const char*, kDofFamilies> kSymbol = {"u", "w", "lm", "lm_st", "lm_sl"};
 
 }  // namespace
 
@@ -97,11 +157,13 @@ Parameters BlockContactCriteria::GetDefaultParameters(BlockCriterion criterion) 
   defaults.AddString("name", row.name);
   defaults.AddBool("ensure_contact", false);
   defaults.AddBool("print_convergence_criterion", false);
+  if (row.frictional) defaults.AddBool("pure_slip", false);
   for (const auto& keys : row.blocks) {
     if (!keys) continue;
-    defaults.AddDouble(RelativeKey(*keys), keys->relative_default);
-    defaults.AddDouble(AbsoluteKey(*keys), keys->absolute_default);
+    defaults.AddDouble(keys->relative, keys->relative_default);
+    defaults.AddDouble(keys->absolute, keys->absolute_default);
   }
+  if (row.frictional) defaults.AddDouble("ratio_normal_tangent_threshold", kRatioNormalTangentDefault);
   return defaults;
 }
 
@@ -114,46 +176,81 @@ Parameters BlockContactCriteria::GetContactSettingsDefaults() {
     for (std::size_t f = 0; f < kDofFamilies; ++f) {
       if (!row.blocks[f] || f == static_cast<std::size_t>(DofFamily::kDisplacement)) continue;
       const BlockKeys& keys = *row.blocks[f];
-      if (defaults.Has(RelativeKey(keys))) continue;
-      defaults.AddDouble(RelativeKey(keys), keys.relative_default);
-      defaults.AddDouble(AbsoluteKey(keys), keys.absolute_default);
+      if (!defaults.Has(keys.relative)) defaults.AddDouble(keys.relative, keys.relative_default);
+      if (!defaults.Has(keys.ContactAbsolute())) defaults.AddDouble(keys.ContactAbsolute(), keys.absolute_default);
     }
+  defaults.AddDouble("ratio_normal_tangent_threshold", kRatioNormalTangentDefault);
   return defaults;
 }
 
+std::shared_ptr<BlockContactCriteria> BlockContactCriteria::Create(Parameters settings) {
+  std::vector<std::string> names;
+  for (const CriterionRow& row : kCriteria) names.emplace_back(row.name);
+  names.emplace_back(kResidualFrictionalSpelledRight);
+  if (!settings.Has("name"))
+    throw InputError(Concat(settings.Where(), ": \"name\" is missing: it selects the block contact criterion"));
+  std::string name = settings["name"].GetString();
+  if (name == kResidualFrictionalSpelledRight) {
+    name = RowOf(BlockCriterion::kDisplacementLagrangeMultiplierResidualFrictional).name;
+    settings["name"].SetString(name);
+  }
+  for (std::size_t i = 0; i < kCriteria.size(); ++i)
+    if (name == kCriteria[i].name)
+      return std::make_shared<BlockContactCriteria>(static_cast<BlockCriterion>(i), std::move(settings));
+  throw InputError(
+      Concat(settings["name"].Where(), ": unknown block contact criterion \"", name, "\"", DidYouMean(name, names)));
+}
+
 BlockContactCriteria::BlockContactCriteria(BlockCriterion criterion, Parameters settings)
-    : BlockContactCriteria(criterion, Validated(criterion, settings), settings) {}
+    : criterion_(criterion),
+      blocks_(ReadBlocks(criterion, Validated(criterion, settings), settings, false)),
+      ensure_contact_(settings["ensure_contact"].GetBool()),
+      print_(settings["print_convergence_criterion"].GetBool()),
+      pure_slip_(RowOf(criterion).frictional && settings["pure_slip"].GetBool()),
+      ratio_normal_tangent_threshold_(ReadRatioNormalTangent(criterion, settings)) {
+  if (MeasuresResidual(blocks_)) SetActualizeRHSFlag(true);
+}
 
 BlockContactCriteria::BlockContactCriteria(BlockCriterion criterion, const Parameters& solver_settings,
-                                           const Parameters& contact_settings)
+                                           const Parameters& contact_settings, bool pure_slip)
     : criterion_(criterion),
-      blocks_(ReadBlocks(criterion, solver_settings, contact_settings)),
+      blocks_(ReadBlocks(criterion, solver_settings, contact_settings, true)),
       ensure_contact_(contact_settings["ensure_contact"].GetBool()),
-      print_(contact_settings["print_convergence_criterion"].GetBool()) {
-  assert(blocks_[static_cast<std::size_t>(DofFamily::kDisplacement)].has_value());
-  for (std::size_t f = 0; f < kDofFamilies; ++f)
-    if (blocks_[f] && blocks_[f]->measure == Measure::kResidual) SetActualizeRHSFlag(true);
+      print_(contact_settings["print_convergence_criterion"].GetBool()),
+      pure_slip_(RowOf(criterion).frictional && pure_slip),
+      ratio_normal_tangent_threshold_(ReadRatioNormalTangent(criterion, contact_settings)) {
+  if (MeasuresResidual(blocks_)) SetActualizeRHSFlag(true);
 }
 
 std::string BlockContactCriteria::Name() const { return RowOf(criterion_).name; }
 
 void BlockContactCriteria::InitializeSolutionStep(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A,
                                                   const Vector& dx, const Vector& b) {
-  initial_residual_set_ = false;
+  initial_residual_known_.fill(false);
   std::array<bool, kDofFamilies> has{};
   for (const Dof* dof : dofs)
     if (!dof->fixed) has[static_cast<std::size_t>(FamilyOf(*dof->variable))] = true;
   for (std::size_t f = 0; f < kDofFamilies; ++f) {
     results_[f] = BlockResult{};
-    // Displacements and multipliers always have their columns; rotations only when solved for.
-    const bool shown = f != static_cast<std::size_t>(DofFamily::kRotation) || has[f];
+    // Displacements and multipliers always have their columns; rotations only when solved for;
+    // the stick block not in pure slip, where every node slips.
+    const bool shown = f == static_cast<std::size_t>(DofFamily::kRotation)          ? has[f]
+                       : f == static_cast<std::size_t>(DofFamily::kStickMultiplier) ? !pure_slip_
+                                                                                    : true;
     results_[f].present = blocks_[f].has_value() && shown;
   }
 }
 
 bool BlockContactCriteria::PostCriteria(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A,
                                         const Vector& dx, const Vector& b) {
-  const FamilySumsArray sums = SumByFamily(dofs, dx, b);
+  const bool frictional = RowOf(criterion_).frictional;
+  const MultiplierSplit split = !frictional  ? MultiplierSplit::kNone
+                                : pure_slip_ ? MultiplierSplit::kFrictionalPureSlip
+                                             : MultiplierSplit::kFrictional;
+  const FamilySumsArray sums = SumByFamily(dofs, dx, b, split);
+  // Tangential absolute values are per multiplier DoF, as the normal one (Kratos' choice), so the
+  // two compare in the ratio test.
+  const auto multiplier_count = static_cast<double>(sums[static_cast<std::size_t>(DofFamily::kMultiplier)].count);
   const ProcessInfo& info = model_part.GetProcessInfo();
   bool converged = true;
   for (std::size_t f = 0; f < kDofFamilies; ++f) {
@@ -164,7 +261,15 @@ bool BlockContactCriteria::PostCriteria(ModelPart& model_part, const DofsArray& 
     r.present = r.present || s.count > 0;
     if (!r.present) continue;
     const bool multiplier = f == static_cast<std::size_t>(DofFamily::kMultiplier);
+    const bool tangential = IsTangential(f);
     const double value_norm = std::sqrt(s.value);
+    if (tangential && value_norm < kTiny) {
+      // No node in this state, or no tangential traction: nothing to converge.
+      r.ratio = 0.0;
+      r.absolute = 0.0;
+      r.converged = true;
+      continue;
+    }
     if (multiplier && value_norm < kTiny) {
       if (ensure_contact_)
         throw SolutionError(Concat(Name(),
@@ -192,12 +297,22 @@ bool BlockContactCriteria::PostCriteria(ModelPart& model_part, const DofsArray& 
       // compares sum r^2 / sum r0^2 and sum r^2 / n): a Kratos file's residual tolerances keep
       // their meaning, and its cases stop at the same iteration.
       norm = s.residual;
-      if (!initial_residual_set_) initial_residual_[f] = norm;
+      // The first check of the step is the reference; a tangential block's is its first check
+      // with nodes in its state (the stick and slip sets change within a step).
+      if (!initial_residual_known_[f]) {
+        initial_residual_[f] = norm;
+        initial_residual_known_[f] = true;
+      }
       reference = initial_residual_[f];
     }
     r.ratio = norm / (reference < kTiny ? 1.0 : reference);
-    r.absolute = s.count > 0 ? norm / static_cast<double>(s.count) : 0.0;
+    const double count = tangential ? multiplier_count : static_cast<double>(s.count);
+    r.absolute = count > 0 ? norm / count : 0.0;
     r.converged = r.ratio <= block.relative_tolerance || r.absolute <= block.absolute_tolerance;
+    // A tangential block far below the normal one is accepted (ratio_normal_tangent_threshold).
+    const BlockResult& normal = results_[static_cast<std::size_t>(DofFamily::kMultiplier)];
+    if (tangential && !r.converged && normal.absolute > 0.0)
+      r.converged = r.absolute <= ratio_normal_tangent_threshold_ * normal.absolute;
     // A residual can only be reduced to the round-off of the terms that form it (k times the
     // weighted gap is ~1e9 x 1e-16 for stiff contact). When the Newton increment of this block no
     // longer changes its unknowns, the state already solved the equations: accept it. Kratos has
@@ -206,7 +321,10 @@ bool BlockContactCriteria::PostCriteria(ModelPart& model_part, const DofsArray& 
       r.converged = std::sqrt(s.increment) <= kRoundOffIncrement * value_norm;
     converged = converged && r.converged;
   }
-  initial_residual_set_ = true;
+  // Displacement, rotation and normal blocks keep the first check's reference even if they had
+  // nothing to measure then (no contact yet: the reference is 1).
+  for (std::size_t f = 0; f < kDofFamilies; ++f)
+    if (!IsTangential(f)) initial_residual_known_[f] = true;
   if (echo_level_ >= 1 && print_)
     Logger::Info(Concat(Name(), FormatLine(info.GetValue(NL_ITERATION_NUMBER), LastValues(), converged)));
   return converged;
@@ -217,7 +335,8 @@ std::vector<CriterionValue> BlockContactCriteria::LastValues() const {
   for (std::size_t f = 0; f < kDofFamilies; ++f) {
     if (!blocks_[f] || !results_[f].present) continue;
     const Block& block = *blocks_[f];
-    const char* x = kSymbol[f];
+    const char* x =
+        f == static_cast<std::size_t>(DofFamily::kMultiplier) && RowOf(criterion_).frictional ? "lm_n" : kSymbol[f];
     const bool increment = block.measure == Measure::kIncrement;
     values.push_back({increment ? Concat("|d", x, "|/|", x, "|") : Concat("|r_", x, "|^2/|r_", x, "0|^2"),
                       results_[f].ratio, block.relative_tolerance});

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -13,15 +14,29 @@
 namespace mc {
 
 /// The block criteria of Kratos' contact application. Each is a row of the table in
-/// block_contact_criteria.cpp: its Kratos name and, per DoF family, the measure and the prefix
-/// of the tolerance keys. Kratos' names and keys:
+/// block_contact_criteria.cpp: its Kratos name and, per DoF family, the measure and its tolerance
+/// keys. Kratos' names and key prefixes (`<prefix>_relative_tolerance`, `_absolute_tolerance`):
 ///
-///   criterion                                                  displacement  rotation            multiplier
-///   displacement_contact_criteria                              displacement  rotation            -
-///   displacement_residual_contact_criteria                     residual      rotation_residual   -
-///   displacement_lagrangemultiplier_contact_criteria           displacement  rotation            contact_displacement
-///   displacement_lagrangemultiplier_residual_contact_criteria  residual      rotation_residual   contact_residual
-///   displacement_lagrange_multiplier_mixed_contact_criteria    residual      rotation_residual   contact_displacement
+///   criterion                                              displacement  rotation           multiplier (normal)
+///   displacement_contact_criteria                          displacement  rotation           -
+///   displacement_residual_contact_criteria                 residual      rotation_residual  -
+///   displacement_lagrangemultiplier_contact_criteria       displacement  rotation           contact_displacement
+///   displacement_lagrangemultiplier_residual_contact_criteria
+///                                                          residual      rotation_residual  contact_residual
+///   displacement_lagrange_multiplier_mixed_contact_criteria
+///                                                          residual      rotation_residual  contact_displacement
+///
+/// and the frictional rows, whose vector multipliers are split into normal, stick-tangent and
+/// slip-tangent blocks (SumByFamily):
+///
+///   displacement_lagrangemultiplier_frictional_contact_criteria: increments, the tangential
+///     blocks frictional_{stick,slip}_contact_displacement
+///   displacement_lagrangemultiplier_ressidual_frictional_contact_criteria (Kratos' spelling; the
+///     correct "residual" is accepted by Create): residuals, frictional_{stick,slip}_contact_residual
+///   displacement_lagrangemultiplier_mixed_frictional_contact_criteria: displacement residual,
+///     multiplier increments. As in Kratos, its own settings name the absolute tolerance of a
+///     tangential block frictional_{stick,slip}_contact_residual_relative_tolerance (default
+///     1e-9); read from contact_settings it is frictional_{stick,slip}_contact_residual_absolute_tolerance.
 ///
 /// (`displacement`, `contact_displacement`: increments; `residual`, `contact_residual`:
 /// residuals). The mixed criterion is usually the most robust for ALM: the multiplier residual
@@ -32,6 +47,9 @@ enum class BlockCriterion {
   kDisplacementLagrangeMultiplier,
   kDisplacementLagrangeMultiplierResidual,
   kDisplacementLagrangeMultiplierMixed,
+  kDisplacementLagrangeMultiplierFrictional,
+  kDisplacementLagrangeMultiplierResidualFrictional,
+  kDisplacementLagrangeMultiplierMixedFrictional,
 };
 
 /// The engine of the block criteria: the free DoFs are split into families (displacement,
@@ -46,11 +64,16 @@ enum class BlockCriterion {
 ///
 /// A family converges when ratio <= relative tolerance or absolute <= absolute tolerance; the
 /// criterion converges when every family does. A multiplier family whose values are all zero
-/// (no node in contact) counts as converged, or is an error with `ensure_contact`.
+/// (no node in contact) counts as converged, or is an error with `ensure_contact`. In the
+/// frictional rows a tangential block that misses its tolerances is still accepted when its
+/// absolute value is at most `ratio_normal_tangent_threshold` times the normal block's: the
+/// tangential multipliers are orders smaller than the normal ones and would stall the iterations.
+/// A tangential block without values (no node sticks, or none slips) is converged.
 ///
 /// Settings (Kratos' names and defaults): `ensure_contact` (false), `print_convergence_criterion`
-/// (false) and, per family of the row, `<prefix>_relative_tolerance` (1e-4) and
-/// `<prefix>_absolute_tolerance` (1e-9).
+/// (false), per family of the row its relative (1e-4) and absolute (1e-9) tolerance, and in the
+/// frictional rows `pure_slip` (false: own settings only; for a contact solver it comes from
+/// the mortar criterion of the formulation) and `ratio_normal_tangent_threshold` (1e-4).
 class BlockContactCriteria : public ConvergenceCriteria {
  public:
   enum class Measure { kIncrement, kResidual };
@@ -74,13 +97,19 @@ class BlockContactCriteria : public ConvergenceCriteria {
   BlockContactCriteria(BlockCriterion criterion, Parameters settings);
   /// The criterion of a contact solver: the displacement tolerances are the mechanical solver's
   /// keys of `solver_settings`, the other keys are read from `contact_settings` (both already
-  /// validated by their owners; see GetContactSettingsDefaults).
-  BlockContactCriteria(BlockCriterion criterion, const Parameters& solver_settings, const Parameters& contact_settings);
+  /// validated by their owners; see GetContactSettingsDefaults). `pure_slip`: frictional rows.
+  BlockContactCriteria(BlockCriterion criterion, const Parameters& solver_settings, const Parameters& contact_settings,
+                       bool pure_slip = false);
   /// Kratos' defaults of `criterion`, keys in Kratos' order.
   static Parameters GetDefaultParameters(BlockCriterion criterion);
-  /// The keys of `contact_settings` that the block criteria read, over every row: `ensure_contact`
-  /// and the rotation and multiplier tolerances (their one declaration).
+  /// The keys of `contact_settings` that the block criteria read, over every row: `ensure_contact`,
+  /// the rotation and multiplier tolerances and `ratio_normal_tangent_threshold` (their one
+  /// declaration).
   static Parameters GetContactSettingsDefaults();
+  /// The criterion named by `settings["name"]` (Kratos' names; for the residual frictional one
+  /// both spellings), built from `settings` as the first constructor does. An unknown name is an
+  /// InputError naming the nearest ones.
+  static std::shared_ptr<BlockContactCriteria> Create(Parameters settings);
 
   std::string Name() const override;
   void InitializeSolutionStep(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A, const Vector& dx,
@@ -88,7 +117,7 @@ class BlockContactCriteria : public ConvergenceCriteria {
   bool PostCriteria(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A, const Vector& dx,
                     const Vector& b) override;
   /// Ratio and absolute value of each present family, in the order displacement, rotation,
-  /// multiplier: the columns of the convergence table.
+  /// multiplier (normal), stick, slip: the columns of the convergence table.
   std::vector<CriterionValue> LastValues() const override;
 
   const BlockResult& Result(DofFamily family) const noexcept { return results_[static_cast<std::size_t>(family)]; }
@@ -97,15 +126,21 @@ class BlockContactCriteria : public ConvergenceCriteria {
   }
   bool EnsureContact() const noexcept { return ensure_contact_; }
   bool PrintConvergenceCriterion() const noexcept { return print_; }
+  /// Frictional rows: the tangential multipliers are all counted as slip.
+  bool PureSlip() const noexcept { return pure_slip_; }
+  /// Frictional rows: the accepted ratio of a tangential block to the normal one (0 otherwise).
+  double RatioNormalTangentThreshold() const noexcept { return ratio_normal_tangent_threshold_; }
 
  private:
   BlockCriterion criterion_;
   Blocks blocks_;
   bool ensure_contact_;
   bool print_;
+  bool pure_slip_;
+  double ratio_normal_tangent_threshold_;
   std::array<BlockResult, kDofFamilies> results_{};
   std::array<double, kDofFamilies> initial_residual_{};
-  bool initial_residual_set_ = false;
+  std::array<bool, kDofFamilies> initial_residual_known_{};
 };
 
 /// One row of the table as a type of its own, so that each criterion keeps its Kratos class name
@@ -115,8 +150,9 @@ class NamedBlockContactCriteria final : public BlockContactCriteria {
  public:
   explicit NamedBlockContactCriteria(Parameters settings = Parameters())
       : BlockContactCriteria(kCriterion, std::move(settings)) {}
-  NamedBlockContactCriteria(const Parameters& solver_settings, const Parameters& contact_settings)
-      : BlockContactCriteria(kCriterion, solver_settings, contact_settings) {}
+  NamedBlockContactCriteria(const Parameters& solver_settings, const Parameters& contact_settings,
+                            bool pure_slip = false)
+      : BlockContactCriteria(kCriterion, solver_settings, contact_settings, pure_slip) {}
   static Parameters GetDefaultParameters() { return BlockContactCriteria::GetDefaultParameters(kCriterion); }
 };
 
@@ -128,5 +164,11 @@ using DisplacementLagrangeMultiplierResidualContactCriteria =
     NamedBlockContactCriteria<BlockCriterion::kDisplacementLagrangeMultiplierResidual>;
 using DisplacementLagrangeMultiplierMixedContactCriteria =
     NamedBlockContactCriteria<BlockCriterion::kDisplacementLagrangeMultiplierMixed>;
+using DisplacementLagrangeMultiplierFrictionalContactCriteria =
+    NamedBlockContactCriteria<BlockCriterion::kDisplacementLagrangeMultiplierFrictional>;
+using DisplacementLagrangeMultiplierResidualFrictionalContactCriteria =
+    NamedBlockContactCriteria<BlockCriterion::kDisplacementLagrangeMultiplierResidualFrictional>;
+using DisplacementLagrangeMultiplierMixedFrictionalContactCriteria =
+    NamedBlockContactCriteria<BlockCriterion::kDisplacementLagrangeMultiplierMixedFrictional>;
 
 }  // namespace mc

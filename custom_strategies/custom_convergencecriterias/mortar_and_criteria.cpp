@@ -53,6 +53,9 @@ std::vector<std::string> MortarAndConvergenceCriteria::TableHeader() const {
   for (const auto& v : mechanical_->LastValues()) header.push_back(v.name);
   header.emplace_back("CONVERGENCE");
   header.emplace_back("ACTIVE SET CONV");
+  if (const auto* base_mortar = dynamic_cast<const BaseMortarConvergenceCriteria*>(mortar_.get());
+      base_mortar && base_mortar->HasSlipSet())
+    header.emplace_back("SLIP/STICK CONV");
   return header;
 }
 
@@ -93,17 +96,22 @@ bool MortarAndConvergenceCriteria::PostCriteria(ModelPart& model_part, const Dof
   if (condition_number_) last_row_.push_back(Scientific(condition_number_value_));
   for (const auto& v : mechanical_->LastValues()) last_row_.push_back(Scientific(v.value));
   last_row_.push_back(YesNo(mechanical_converged_, 0));
-  last_row_.push_back(YesNo(active_set_converged_, changes));
+  const bool slip_set = base_mortar && base_mortar->HasSlipSet();
+  const std::size_t slip_changes = slip_set ? base_mortar->LastSlipChangeCount() : 0;
+  // Frictional: the active set alone (the mortar answer also needs the stick/slip set).
+  const std::string active_set_cell = YesNo(base_mortar ? changes == 0 : active_set_converged_, changes);
+  last_row_.push_back(active_set_cell);
+  if (slip_set) last_row_.push_back(YesNo(slip_changes == 0, slip_changes));
 
   if (echo_level_ >= 1) {
     if (print_table_) {
       Logger::Info(FormatRow(last_row_));
       if (converged) Logger::Info(Concat("  converged at iteration ", iteration));
     } else {
-      Logger::Info(Concat(FormatLine(iteration, LastValues(), mechanical_converged_), ", active set ",
-                          YesNo(active_set_converged_, changes)));
+      Logger::Info(Concat(FormatLine(iteration, LastValues(), mechanical_converged_), ", active set ", active_set_cell,
+                          slip_set ? Concat(", stick/slip set ", YesNo(slip_changes == 0, slip_changes)) : ""));
     }
-    if (print_ && changes > 0) {
+    if (print_ && base_mortar && !base_mortar->LastChangedNodes().empty()) {
       std::string ids;
       for (IndexType id : base_mortar->LastChangedNodes()) ids += Concat(ids.empty() ? "" : ", ", id);
       Logger::Detail(Concat("  slave nodes that changed state: ", ids));

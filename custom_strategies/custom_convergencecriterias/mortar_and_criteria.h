@@ -17,11 +17,12 @@ namespace mc {
 /// contact solvers printed through mc::Logger (echo level >= 1):
 ///
 ///   ITER | COND.NUM. | <ratio and absolute of each block of the mechanical criterion> |
-///   CONVERGENCE | ACTIVE SET CONV
+///   CONVERGENCE | ACTIVE SET CONV [| SLIP/STICK CONV]
 ///
 /// The block columns are the names of the mechanical criterion's LastValues ("|du|/|u|", ...),
 /// with a second header line giving their tolerances; CONVERGENCE is the mechanical answer and
-/// ACTIVE SET CONV the mortar one ("no (3)": three nodes changed). COND.NUM. (only with a
+/// ACTIVE SET CONV the mortar one ("no (3)": three nodes changed); SLIP/STICK CONV, for a
+/// frictional mortar criterion, the nodes that switched between stick and slip. COND.NUM. (only with a
 /// ConditionNumberUtility, `condn_convergence_criterion`) is the condition number of the
 /// system matrix, a slow diagnostic. `print_convergence_criterion` also lists the slave nodes
 /// whose state changed.

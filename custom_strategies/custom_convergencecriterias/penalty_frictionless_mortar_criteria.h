@@ -15,8 +15,8 @@ class PenaltyFrictionlessMortarConvergenceCriteria : public BaseMortarConvergenc
   std::string Name() const override { return "penalty_frictionless_mortar_criteria"; }
 
  protected:
-  std::size_t UpdateActiveSet(ModelPart& contact_part, ActiveSetUtilities::ChangedNodes* changed) override {
-    return ActiveSetUtilities::ComputePenaltyFrictionlessActiveSet(contact_part, changed);
+  SetChanges UpdateActiveSet(ModelPart& contact_part, ActiveSetUtilities::ChangedNodes* changed) override {
+    return {ActiveSetUtilities::ComputePenaltyFrictionlessActiveSet(contact_part, changed), 0};
   }
 };
 

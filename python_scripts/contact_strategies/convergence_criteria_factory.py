@@ -10,7 +10,11 @@ contact factory does (spec 3.2):
   it is ANDed with the mortar criterion (no table).
 
 Names are matched case-insensitively. The mortar criterion and the multiplier blocks are the
-formulation's (``ContactFormulation``).
+formulation's (``ContactFormulation``): with three blocks (frictional ALM) and
+``frictional_decomposed`` the increment, residual and mixed criteria split the multipliers into
+normal, stick and slip blocks, every tangential one counted as slip when the mortar criterion is
+pure slip; ``contact_and_criterion`` and ``contact_or_criterion`` keep one multiplier block, as in
+Kratos.
 """
 from __future__ import annotations
 
@@ -25,8 +29,12 @@ ALL_CRITERIA = CONTACT_CRITERIA + STRUCTURAL_CRITERIA + ("adaptative_remesh_crit
 #: and the active-set criteria declare and read theirs (see contact_settings_defaults()).
 CRITERIA_SETTINGS = """{
     "condn_convergence_criterion": false,
-    "fancy_convergence_criterion": true
+    "fancy_convergence_criterion": true,
+    "frictional_decomposed": true
 }"""
+
+#: multiplier_blocks of the frictional ALM formulations: normal, stick and slip.
+FRICTIONAL_BLOCKS = 3
 
 
 def _core_module(core):
@@ -48,7 +56,7 @@ def _block_criterion(cls, solver_settings):
     return cls(solver_settings, _contact_settings(solver_settings))
 
 
-def _contact_mechanical_criterion(name, solver_settings, formulation, core):
+def _contact_mechanical_criterion(name, solver_settings, formulation, mortar, core):
     s = solver_settings
     if formulation.multiplier_blocks == 0:
         # Penalty formulations have no multipliers: displacement (and rotation) blocks only; mixed
@@ -62,11 +70,27 @@ def _contact_mechanical_criterion(name, solver_settings, formulation, core):
         residual = lambda: _block_criterion(core.DisplacementLagrangeMultiplierResidualContactCriteria, s)  # noqa: E731
         mixed = lambda: _block_criterion(core.DisplacementLagrangeMultiplierMixedContactCriteria, s)  # noqa: E731
 
-    return {"contact_displacement_criterion": displacement,
-            "contact_residual_criterion": residual,
-            "contact_mixed_criterion": mixed,
-            "contact_and_criterion": lambda: core.AndCriteria(residual(), displacement()),
-            "contact_or_criterion": lambda: core.OrCriteria(residual(), displacement())}[name]()
+    criteria = {"contact_displacement_criterion": displacement,
+                "contact_residual_criterion": residual,
+                "contact_mixed_criterion": mixed,
+                "contact_and_criterion": lambda: core.AndCriteria(residual(), displacement()),
+                "contact_or_criterion": lambda: core.OrCriteria(residual(), displacement())}
+    contact = _contact_settings(s)
+    if formulation.multiplier_blocks == FRICTIONAL_BLOCKS and _value(contact, "frictional_decomposed", "Bool"):
+        # The pure-slip choice is the formulation's, made once when its mortar criterion was built.
+        pure_slip = mortar.PureSlip()
+
+        def frictional(cls):
+            return lambda: cls(s, contact, pure_slip=pure_slip)
+
+        criteria.update({
+            "contact_displacement_criterion":
+                frictional(core.DisplacementLagrangeMultiplierFrictionalContactCriteria),
+            "contact_residual_criterion":
+                frictional(core.DisplacementLagrangeMultiplierResidualFrictionalContactCriteria),
+            "contact_mixed_criterion":
+                frictional(core.DisplacementLagrangeMultiplierMixedFrictionalContactCriteria)})
+    return criteria[name]()
 
 
 def _structural_criterion(name, solver_settings, core):
@@ -100,9 +124,10 @@ def create_contact_convergence_criteria(solver_settings, formulation, echo_level
                                               "which is not implemented")
     contact = _contact_settings(solver_settings)
     if name in CONTACT_CRITERIA:
-        mechanical = _contact_mechanical_criterion(name, solver_settings, formulation, core)
+        mortar = formulation.CreateActiveSetCriterion(contact)
+        mechanical = _contact_mechanical_criterion(name, solver_settings, formulation, mortar, core)
         criteria = core.MortarAndConvergenceCriteria(
-            mechanical, formulation.CreateActiveSetCriterion(contact),
+            mechanical, mortar,
             print_convergence_criterion=_value(contact, "print_convergence_criterion", "Bool"),
             condition_number=_value(contact, "condn_convergence_criterion", "Bool"),
             print_table=_value(contact, "fancy_convergence_criterion", "Bool"))

@@ -13,17 +13,7 @@ from .mechanical_solver import MechanicalSolver
 #: that read the block themselves are theirs: see contact_settings_defaults().
 CONTACT_SETTINGS = """{
     "mortar_type": "",
-    "frictional_decomposed": true,
     "inner_loop_adaptive": false,
-    "frictional_stick_contact_displacement_relative_tolerance": 1.0e-4,
-    "frictional_stick_contact_displacement_absolute_tolerance": 1.0e-9,
-    "frictional_stick_contact_residual_relative_tolerance": 1.0e-4,
-    "frictional_stick_contact_residual_absolute_tolerance": 1.0e-9,
-    "frictional_slip_contact_displacement_relative_tolerance": 1.0e-4,
-    "frictional_slip_contact_displacement_absolute_tolerance": 1.0e-9,
-    "frictional_slip_contact_residual_relative_tolerance": 1.0e-4,
-    "frictional_slip_contact_residual_absolute_tolerance": 1.0e-9,
-    "ratio_normal_tangent_threshold": 1.0e-4,
     "silent_strategy": true,
     "simplified_semi_smooth_newton": false,
     "rescale_linear_solver": false,

@@ -99,12 +99,19 @@ def _fake_core():
     for name in ("DisplacementContactCriteria", "DisplacementResidualContactCriteria",
                  "DisplacementLagrangeMultiplierContactCriteria",
                  "DisplacementLagrangeMultiplierResidualContactCriteria",
-                 "DisplacementLagrangeMultiplierMixedContactCriteria", "ALMFrictionlessMortarConvergenceCriteria",
-                 "ALMFrictionlessComponentsMortarConvergenceCriteria", "PenaltyFrictionlessMortarConvergenceCriteria",
+                 "DisplacementLagrangeMultiplierMixedContactCriteria",
+                 "DisplacementLagrangeMultiplierFrictionalContactCriteria",
+                 "DisplacementLagrangeMultiplierResidualFrictionalContactCriteria",
+                 "DisplacementLagrangeMultiplierMixedFrictionalContactCriteria",
+                 "ALMFrictionlessMortarConvergenceCriteria", "ALMFrictionlessComponentsMortarConvergenceCriteria",
+                 "PenaltyFrictionlessMortarConvergenceCriteria",
                  "MeshTyingMortarConvergenceCriteria", "MortarAndConvergenceCriteria", "AndCriteria", "OrCriteria",
                  "DisplacementCriteria", "ResidualCriteria", "BlockBuilderAndSolver", "EliminationBuilderAndSolver",
                  "LinearStrategy", "ResidualBasedNewtonRaphsonContactStrategy", "LineSearchContactStrategy"):
         setattr(core, name, type(name, (Recorded,), {}))
+    core.ALMFrictionalMortarConvergenceCriteria = type(
+        "ALMFrictionalMortarConvergenceCriteria", (Recorded,),
+        {"PureSlip": lambda self: self.kwargs.get("pure_slip", False)})
     return core
 
 
@@ -121,7 +128,16 @@ def settings(criterion="contact_mixed_criterion", mortar_type="ALMContactFrictio
         "rotation_relative_tolerance": 3e-4, "rotation_absolute_tolerance": 3e-9,
         "rotation_residual_relative_tolerance": 4e-4, "rotation_residual_absolute_tolerance": 4e-9,
         "contact_displacement_relative_tolerance": 5e-4, "contact_displacement_absolute_tolerance": 5e-9,
-        "contact_residual_relative_tolerance": 6e-4, "contact_residual_absolute_tolerance": 6e-9}
+        "contact_residual_relative_tolerance": 6e-4, "contact_residual_absolute_tolerance": 6e-9,
+        "frictional_stick_contact_displacement_relative_tolerance": 7e-4,
+        "frictional_stick_contact_displacement_absolute_tolerance": 7e-9,
+        "frictional_stick_contact_residual_relative_tolerance": 8e-4,
+        "frictional_stick_contact_residual_absolute_tolerance": 8e-9,
+        "frictional_slip_contact_displacement_relative_tolerance": 9e-4,
+        "frictional_slip_contact_displacement_absolute_tolerance": 9e-9,
+        "frictional_slip_contact_residual_relative_tolerance": 1.1e-3,
+        "frictional_slip_contact_residual_absolute_tolerance": 1.1e-8,
+        "ratio_normal_tangent_threshold": 0.5}
     base_contact.update(contact)
     return FakeParameters({
         "convergence_criterion": criterion, "contact_settings": base_contact,
@@ -138,6 +154,13 @@ ROT_INC = {"rotation": ("increment", 3e-4, 3e-9)}
 ROT_RES = {"rotation": ("residual", 4e-4, 4e-9)}
 LM_INC = {"multiplier": ("increment", 5e-4, 5e-9)}
 LM_RES = {"multiplier": ("residual", 6e-4, 6e-9)}
+STICK_INC = {"stick": ("increment", 7e-4, 7e-9)}
+STICK_RES = {"stick": ("residual", 8e-4, 8e-9)}
+SLIP_INC = {"slip": ("increment", 9e-4, 9e-9)}
+SLIP_RES = {"slip": ("residual", 1.1e-3, 1.1e-8)}
+# Kratos' mixed frictional criterion: increments, with the residual absolute tolerances.
+STICK_MIXED = {"stick": ("increment", 7e-4, 8e-9)}
+SLIP_MIXED = {"slip": ("increment", 9e-4, 1.1e-8)}
 
 
 #: what the tests need of the registered formulations (ContactFormulation): multiplier blocks and
@@ -148,14 +171,20 @@ FORMULATIONS = {
     "ComponentsMeshTying": (1, "MeshTyingMortarConvergenceCriteria"),
     "ScalarMeshTying": (1, "MeshTyingMortarConvergenceCriteria"),
     "PenaltyContactFrictionless": (0, "PenaltyFrictionlessMortarConvergenceCriteria"),
+    # multiplier_blocks = 3 is what the frictional ALM entries of the registry declare.
+    "ALMContactFrictional": (3, "ALMFrictionalMortarConvergenceCriteria"),
+    "ALMContactFrictionalPureSlip": (3, "ALMFrictionalMortarConvergenceCriteria"),
 }
 
 
 class FakeFormulation:
     def __init__(self, mortar_type):
         self.multiplier_blocks, self.criterion = FORMULATIONS[mortar_type]
+        self.pure_slip = mortar_type.endswith("PureSlip")
 
     def CreateActiveSetCriterion(self, contact_settings):
+        if self.multiplier_blocks == 3:
+            return getattr(core, self.criterion)(contact_settings, pure_slip=self.pure_slip)
         return getattr(core, self.criterion)(contact_settings)
 
 
@@ -172,8 +201,9 @@ def expect(criterion, cls, tolerances):
     solver_settings, contact_settings = criterion.args
     assert contact_settings.data is solver_settings.data["contact_settings"]
     real_settings = mc.Parameters(json.dumps(solver_settings.data))
-    real = getattr(mc._core, cls)(real_settings, real_settings["contact_settings"])
+    real = getattr(mc._core, cls)(real_settings, real_settings["contact_settings"], **criterion.kwargs)
     assert real.Tolerances() == tolerances
+    return real
 
 
 # -- table rows: "otherwise" column (ALM scalar / components, mesh tying) -----------------------
@@ -210,6 +240,54 @@ def test_mortar_settings_come_from_contact_settings():
     assert c.args[1].settings()["compute_dynamic_factor"] is True
     assert c.kwargs == {"print_convergence_criterion": True, "condition_number": True, "print_table": False}
     assert c.args[0].args[1].data["print_convergence_criterion"] is True
+
+
+# -- "ALMContactFrictional* and frictional_decomposed" column ------------------------------------
+@pytest.mark.parametrize("mortar_type", ["ALMContactFrictional", "ALMContactFrictionalPureSlip"])
+def test_frictional_rows(mortar_type):
+    pure_slip = mortar_type.endswith("PureSlip")
+    c = build("contact_displacement_criterion", mortar_type)
+    assert type(c.args[1]).__name__ == "ALMFrictionalMortarConvergenceCriteria"
+    assert c.args[1].PureSlip() is pure_slip
+    assert c.args[0].kwargs == {"pure_slip": pure_slip}
+    real = expect(c.args[0], "DisplacementLagrangeMultiplierFrictionalContactCriteria",
+                  {**DISP_INC, **ROT_INC, **LM_INC, **STICK_INC, **SLIP_INC})
+    assert real.PureSlip() is pure_slip
+    assert real.RatioNormalTangentThreshold() == 0.5
+    expect(build("contact_residual_criterion", mortar_type).args[0],
+           "DisplacementLagrangeMultiplierResidualFrictionalContactCriteria",
+           {**DISP_RES, **ROT_RES, **LM_RES, **STICK_RES, **SLIP_RES})
+    expect(build("contact_mixed_criterion", mortar_type).args[0],
+           "DisplacementLagrangeMultiplierMixedFrictionalContactCriteria",
+           {**DISP_RES, **ROT_RES, **LM_INC, **STICK_MIXED, **SLIP_MIXED})
+    # and / or keep one multiplier block, as in Kratos.
+    combined = build("contact_and_criterion", mortar_type).args[0]
+    expect(combined.args[0], "DisplacementLagrangeMultiplierResidualContactCriteria", {**DISP_RES, **ROT_RES, **LM_RES})
+    expect(combined.args[1], "DisplacementLagrangeMultiplierContactCriteria", {**DISP_INC, **ROT_INC, **LM_INC})
+
+
+def test_frictional_decomposed_false_keeps_one_multiplier_block():
+    c = build("contact_mixed_criterion", "ALMContactFrictional", frictional_decomposed=False)
+    expect(c.args[0], "DisplacementLagrangeMultiplierMixedContactCriteria", {**DISP_RES, **ROT_RES, **LM_INC})
+
+
+def test_real_frictional_composition():
+    """The real classes, with a stand-in for the frictional registry entry (friction-process
+    registers the real one with multiplier_blocks = 3)."""
+    class Frictional:
+        multiplier_blocks = 3
+
+        @staticmethod
+        def CreateActiveSetCriterion(contact_settings):
+            return mc._core.ALMFrictionalMortarConvergenceCriteria(contact_settings, pure_slip=True)
+
+    s = mc.Parameters(json.dumps({**settings(mortar_type="ALMContactFrictionalPureSlip").data,
+                                  "convergence_criterion": "contact_residual_criterion"}))
+    c = cs.create_contact_convergence_criteria(s, Frictional(), core=mc._core)
+    assert c.Mechanical().Name() == "displacement_lagrangemultiplier_ressidual_frictional_contact_criteria"
+    assert c.Mechanical().PureSlip()
+    assert c.Mortar().Name() == "alm_frictional_mortar_criteria"
+    assert c.Mortar().HasSlipSet()
 
 
 # -- "Penalty" column ------------------------------------------------------------------------------
@@ -336,3 +414,19 @@ def test_real_objects():
     assert c.Name() == "mortar_and_criteria"
     assert c.Mechanical().Name() == "displacement_lagrange_multiplier_mixed_contact_criteria"
     assert c.Mortar().Name() == "alm_frictionless_mortar_criteria"
+
+
+def test_legacy_single_friction_block_feeds_stick_and_slip():
+    """Spec 2.7: the frictional_contact_* keys of older CSMA versions are copied to the stick and
+    the slip keys, which the frictional block criteria then read."""
+    from mortarcontact.solvers.solver_settings import validate_solver_settings
+
+    s = mc.Parameters(json.dumps({"model_part_name": "Structure", "domain_size": 2, "contact_settings": {
+        "mortar_type": "ALMContactFrictional", "frictional_contact_residual_absolute_tolerance": 3e-7,
+        "frictional_contact_residual_relative_tolerance": 2e-3}}))
+    validate_solver_settings(s)
+    contact = s["contact_settings"]
+    assert not contact.Has("frictional_contact_residual_absolute_tolerance")
+    real = mc._core.DisplacementLagrangeMultiplierResidualFrictionalContactCriteria(s, contact)
+    assert real.Tolerances()["stick"] == ("residual", 2e-3, 3e-7)
+    assert real.Tolerances()["slip"] == ("residual", 2e-3, 3e-7)

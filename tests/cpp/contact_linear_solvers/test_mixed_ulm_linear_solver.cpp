@@ -5,7 +5,9 @@
 // monolithic UMFPACK solution to 1e-10; a non-diagonal K_{S_A,LM_A} or LM_I row takes the
 // full-system fallback and still matches; fixed multipliers and slave displacements (block
 // and elimination builders) are handled; the builder hook provides the DoFs at every solve and
-// refuses master-slave constraints.
+// refuses master-slave constraints. Issue 12: frictional active nodes, whose multiplier block is
+// full (stick: constraint rows on every component; slip: K_{S_A,LM_A} full within the node),
+// still condense and match.
 #include <gtest/gtest.h>
 
 #include <iostream>
@@ -140,6 +142,50 @@ TYPED_TEST(CondensationTest, NonDiagonalSlaveMultiplierBlockFallsBackToFullSyste
   EXPECT_TRUE(solver.LastSolveWasCondensed()) << solver.FallbackReason();
   const Vector difference = x_small - SolveMonolithic(A, b);
   EXPECT_LE(difference.lpNorm<Eigen::Infinity>() / reference.lpNorm<Eigen::Infinity>(), 1e-10);
+}
+
+// A frictional system: node 1 slips (its 2x2 / 3x3 block of K_{S_A,LM_A} gets off-diagonal
+// entries, as the Coulomb traction -mu lbar_n dir does), node 2 sticks (its multiplier rows get
+// entries at every multiplier component of the node and at the master displacements, as the
+// stick constraint k T(lambda) + c_tau eps s does), the others stay as they are.
+TYPED_TEST(CondensationTest, FrictionalSlipAndStickBlocksCondense) {
+  constexpr int kDim = TypeParam::kDim;
+  constexpr int kSlave = TypeParam::kSlave;
+  AssembledSystem<typename TypeParam::System> assembled(std::vector<bool>(kSlave, true));
+  auto& [system, A, residual, dofs] = assembled;
+  const Vector b = RandomRhs(residual, 17);
+  const Variable<double>* u[3] = {&DISPLACEMENT_X, &DISPLACEMENT_Y, &DISPLACEMENT_Z};
+  const Variable<double>* lm[3] = {&VECTOR_LAGRANGE_MULTIPLIER_X, &VECTOR_LAGRANGE_MULTIPLIER_Y,
+                                   &VECTOR_LAGRANGE_MULTIPLIER_Z};
+  const Node& slip = *system.slaves[0];
+  const Node& stick = *system.slaves[1];
+  for (int a = 0; a < kDim; ++a) {
+    const double pivot = A.coeff(RowOf(dofs, slip, *u[a]), RowOf(dofs, slip, *lm[a]));
+    ASSERT_NE(pivot, 0.0);
+    for (int c = 0; c < kDim; ++c) {
+      if (c != a) A.coeffRef(RowOf(dofs, slip, *u[a]), RowOf(dofs, slip, *lm[c])) = (0.3 + 0.1 * a - 0.2 * c) * pivot;
+      A.coeffRef(RowOf(dofs, stick, *lm[a]), RowOf(dofs, stick, *lm[c])) += 0.5 + 0.25 * a - 0.125 * c;
+      A.coeffRef(RowOf(dofs, stick, *lm[a]), RowOf(dofs, *system.masters[0], *u[c])) += 0.2 * (a + 1) - 0.1 * c;
+    }
+  }
+  A.makeCompressed();
+  const Vector reference = SolveMonolithic(A, b);
+  MixedULMLinearSolver solver = MakeMixed();
+  const Vector x = SolveMixed(solver, A, dofs, b);
+  ASSERT_TRUE(solver.LastSolveWasCondensed()) << solver.FallbackReason();
+  EXPECT_EQ(solver.NumberOfPairs(), kDim * kSlave);
+  EXPECT_EQ(solver.CondensedSize(), A.rows() - kDim * kSlave);
+  EXPECT_LE(RelativeDifference(x, reference), 1e-10);
+
+  // A singular slip block (two equal rows) cannot be condensed: full system, named node.
+  for (int c = 0; c < kDim; ++c)
+    A.coeffRef(RowOf(dofs, slip, *u[1]), RowOf(dofs, slip, *lm[c])) =
+        A.coeff(RowOf(dofs, slip, *u[0]), RowOf(dofs, slip, *lm[c]));
+  const Vector x_singular = SolveMixed(solver, A, dofs, b);
+  EXPECT_FALSE(solver.LastSolveWasCondensed());
+  EXPECT_NE(solver.FallbackReason().find("singular at the multipliers of node 1"), std::string::npos)
+      << solver.FallbackReason();
+  EXPECT_LE(RelativeDifference(x_singular, SolveMonolithic(A, b)), 1e-10);
 }
 
 TYPED_TEST(CondensationTest, NonDiagonalInactiveMultiplierRowFallsBack) {
