@@ -7,9 +7,11 @@
 #include "core/linear_solvers/linear_solver.h"
 #include "core/utilities/string_utilities.h"
 #include "custom_formulations/contact_formulation.h"
+#include "custom_strategies/custom_convergencecriterias/alm_frictional_mortar_criteria.h"
 #include "custom_strategies/custom_convergencecriterias/alm_frictionless_components_mortar_criteria.h"
 #include "custom_strategies/custom_convergencecriterias/alm_frictionless_mortar_criteria.h"
 #include "custom_strategies/custom_convergencecriterias/mesh_tying_mortar_criteria.h"
+#include "custom_strategies/custom_convergencecriterias/penalty_frictional_mortar_criteria.h"
 #include "custom_strategies/custom_convergencecriterias/penalty_frictionless_mortar_criteria.h"
 
 namespace mc {
@@ -19,6 +21,11 @@ namespace {
 template <class TCriterion>
 ContactFormulation::CriterionFactory Criterion() {
   return [](Parameters settings) { return std::make_shared<TCriterion>(std::move(settings)); };
+}
+
+template <class TCriterion>
+ContactFormulation::CriterionFactory FrictionalCriterion(bool pure_slip) {
+  return [pure_slip](Parameters settings) { return std::make_shared<TCriterion>(std::move(settings), pure_slip); };
 }
 
 void RegisterAll() {
@@ -74,7 +81,6 @@ void RegisterAll() {
 
   // Coulomb friction (spec 2.10): the same conditions for both, a node sticks or slips by its SLIP
   // flag; pure slip only makes every active node slip.
-  const std::string friction = "the frictional conditions and active-set criteria are not merged yet";
   for (const bool pure_slip : {false, true}) {
     const std::string suffix = pure_slip ? "PureSlip" : "";
     ContactFormulation::Register(D{
@@ -91,7 +97,7 @@ void RegisterAll() {
         .axisymmetric = true,
         .pure_slip = pure_slip,
         .buffer_size = 3,
-        .not_implemented = friction,
+        .active_set_criterion = FrictionalCriterion<ALMFrictionalMortarConvergenceCriteria>(pure_slip),
     });
     ContactFormulation::Register(D{
         .mortar_type = "PenaltyContactFrictional" + suffix,
@@ -107,7 +113,7 @@ void RegisterAll() {
         .axisymmetric = true,
         .pure_slip = pure_slip,
         .buffer_size = 3,
-        .not_implemented = friction,
+        .active_set_criterion = FrictionalCriterion<PenaltyFrictionalMortarConvergenceCriteria>(pure_slip),
     });
   }
   for (const std::string& mortar_type : {"ScalarMeshTying", "ComponentsMeshTying"})

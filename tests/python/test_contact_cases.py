@@ -168,20 +168,17 @@ FRICTIONAL_KRATOS_TOLERANCE = {
 KRATOS_FAILS = {"friction_block_test": "Kratos 10.4.4 stops at step 38 (t = 0.19): its linear solver finds the "
                                        "matrix structurally singular (zero column 748)"}
 REFERENCE_ONLY_TOLERANCE = {"friction_block_test": 1e-2}
-NOT_MERGED = ("the frictional pair conditions (branch friction-kernels) and the frictional active-set criteria "
-              "(branch friction-criteria) are not merged: the frictional mortar_type values raise "
-              "NotImplementedFeatureError")
-#: What else a case needs beyond friction itself.
-ALSO_MISSING = {"hyper_simple_stick_patch_test": "; and advance_ALM_parameters.adapt_penalty (true in this case) "
-                                                  "is not implemented"}
+#: What a case needs that is not implemented.
+MISSING = {"hyper_simple_stick_patch_test": "advance_ALM_parameters.adapt_penalty (true in this case) is not "
+                                            "implemented"}
 #: Hundreds of steps: run with -m slow.
 SLOW = {"mesh_moving_matching_test", "friction_block_test"}
 
 
 def _frictional_params(case: str):
     name = os.path.basename(case)
-    marks = [pytest.mark.xfail(strict=True, raises=mc.NotImplementedFeatureError,
-                               reason=NOT_MERGED + ALSO_MISSING.get(name, ""))]
+    marks = [pytest.mark.xfail(strict=True, raises=mc.NotImplementedFeatureError, reason=MISSING[name])] \
+        if name in MISSING else []
     if name in SLOW:
         marks.append(pytest.mark.slow)
     return pytest.param(case, id=name, marks=marks)
