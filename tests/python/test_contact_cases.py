@@ -16,6 +16,7 @@ import pytest
 import mortarcontact as mc
 from mortarcontact.analysis_stage import ConvergenceFailure, StructuralMechanicsAnalysis
 from mortarcontact.cases import hertz
+from mortarcontact.processes.from_json_check_result_process import CheckResultError
 from mortarcontact.project_parameters import read_project_parameters
 
 from csma_cases import (
@@ -175,6 +176,13 @@ KNOWN_FAILURES = {
     "hyper_simple_slip_patch_test": (ConvergenceFailure, "penalty friction: step 1 not converged in 10 iterations "
                                                          "although |r_u|^2/|r_u0|^2 = 5.8e-11 and neither set changes "
                                                          "(Kratos 10.4: 4 iterations); to investigate"),
+    "mesh_moving_matching_test": (CheckResultError, "pure slip on a moving mesh: its own json check fails at t = 1 "
+                                                    "(u_x of nodes 15, 20, 26 off by 2.6e-3, tolerance 1e-3); to "
+                                                    "investigate against Kratos 10.4, which meets the t = 17.3 "
+                                                    "reference to 6.4e-3"),
+    "friction_block_test": (CheckResultError, "3D friction block: REACTION_X at t = 0.1 about 1.56 times the "
+                                              "reference (-115.3 against -74.0 at node 4); to investigate (Kratos "
+                                              "10.4 cannot run it)"),
 }
 #: Hundreds of steps: run with -m slow.
 SLOW = {"mesh_moving_matching_test", "friction_block_test"}
