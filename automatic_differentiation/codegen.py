@@ -3,15 +3,18 @@
 C++ emission (sympy's C++ printer with common-subexpression elimination).
 
 A formulation describes, for one slave node j, the residual functional R_j of each branch
-(active / inactive) in terms of the symbols below. From it this module derives
+(active / inactive; frictional: slip / stick / inactive) in terms of the symbols below. From it
+this module derives
   rhs        = dR_j/dw                  (w = test functions, in the DoF order)
   lhs (part) = -d rhs / d unknowns       (explicit dependence: the multipliers)
   cD, cM, cG = -d rhs / dD(j, :), -d rhs / dM(j, :), -d rhs / dg_j
+  cS         = -d rhs / ds_j             (frictional: the weighted slip, another intermediate)
   cN         = -d rhs / dn_j             (explicit dependence on the slave nodal normal)
 and the C++ code contracts cD, cM, cG with the derivative arrays dD[q], dM[q],
-d_weighted_gap(j, q) of MortarPairKinematics (chain rule), so that lhs = -d rhs / d dofs exactly
-at fixed normals. When asked (normal variation) it also adds cN and the same contraction over the
-normal indices q to the sensitivity S = -d rhs / d n, which the NV conditions chain with dn/du.
+d_weighted_gap(j, q) of MortarPairKinematics and cS with ds_j/dq (chain rule), so that
+lhs = -d rhs / d dofs exactly at fixed normals. When asked (normal variation) it also adds cN and
+the same contraction over the normal indices q to the sensitivity S = -d rhs / d n, which the NV
+conditions chain with dn/du.
 """
 
 from __future__ import annotations
@@ -45,6 +48,10 @@ class Case:
 CASES = [Case(2, 2, 2), Case(3, 3, 3), Case(3, 4, 4), Case(3, 3, 4), Case(3, 4, 3)]
 
 
+def dot(a, b):
+    return sum(x * y for x, y in zip(a, b))
+
+
 def S(name: str) -> sympy.Symbol:
     """A real symbol printed verbatim (its name is the C++ expression that holds the value)."""
     return sympy.Symbol(name, real=True)
@@ -64,6 +71,14 @@ class Symbols:
         self.eps = [S(f"eps({j})") for j in range(n)]
         self.df = [S(f"df({j})") for j in range(n)]
         self.k = S("k")
+        # Friction: nodal coefficient mu_j, tangent factor c_tau, slip augmentation c_slip, and the
+        # weighted slip s_j, an intermediate like g_j (its total derivative: AddSlipChainRule).
+        self.mu = [S(f"mu({j})") for j in range(n)]
+        self.ct = S("ct")
+        self.cs = S("cslip")
+        self.s = [[S(f"s({j}, {c})") for c in range(d)] for j in range(n)]
+        # Unit directions a / |a| (Direction): node j -> (direction symbols, 1/|a| symbol, a).
+        self.directions = {}
         # The weighted gap enters as an intermediate: its total derivative is d_weighted_gap.
         self.g = [S(f"g({j})") for j in range(n)]
         # Test functions: master u, slave u, multipliers (symbolic only).
@@ -81,6 +96,23 @@ class Symbols:
     def weighted_gap(self, j):
         """g_j = -n_j . (D x1 - M x2)_j, positive when open, as an intermediate symbol."""
         return self.g[j]
+
+    def weighted_slip(self, j):
+        """s_j = T_j [(D - D_n) x1 - (M - M_n) x2]_j (tangential), as an intermediate symbol."""
+        return self.s[j]
+
+    def direction(self, j, a):
+        """The unit vector a / |a| of slave node j as symbols dir0.. (C++ locals of the branch, after
+        a0.. = a and inv_norm = 1/|a|): the derivatives go through d(a/|a|)/da = (I - dir dir^T) / |a|
+        instead of expanding the square root into every entry."""
+        dirs = [S(f"dir{c}") for c in range(len(a))]
+        self.directions[j] = (dirs, S("inv_norm"), list(a))
+        return dirs
+
+    def tangential(self, j, v):
+        """T_j v = v - n_j (n_j . v)."""
+        nv = dot(self.n1[j], v)
+        return [vc - nc * nv for vc, nc in zip(v, self.n1[j])]
 
     def test_jump(self, j):
         """(D w1 - M w2)_j: the virtual relative displacement weighted by the dual basis of j."""
@@ -117,6 +149,8 @@ class _Printer(CXX11CodePrinter):
             return f"({b})*({b})" if not base.is_Symbol else f"{b}*{b}"
         if exp == -1:
             return f"1.0/{self.parenthesize(base, 100)}"
+        if exp == sympy.Rational(-1, 2):
+            return f"1.0/std::sqrt({self._print(base)})"
         if exp == -2:
             b = self._print(base)
             return f"1.0/({b}*{b})"
@@ -139,19 +173,41 @@ class Branch:
     cD: dict  # (row, b) -> expr          (= -d rhs/d D(j, b))
     cM: dict  # (row, l) -> expr          (= -d rhs/d M(j, l))
     cG: dict  # row -> expr               (= -d rhs/d g(j))
+    cS: dict  # (row, c) -> expr          (= -d rhs/d s(j, c))
     cN: dict  # (row, c) -> expr          (= -d rhs/d n1(j, c), explicit)
+    prelude: list  # (symbol, expr): the branch's locals (directions), defined before its code
 
 
 def derive(sym: Symbols, j: int, functional, multipliers: bool) -> Branch:
     dofs = sym.dofs(multipliers)
-    rhs, explicit, cD, cM, cG, cN = {}, {}, {}, {}, {}, {}
+    rhs, explicit, cD, cM, cG, cS, cN = {}, {}, {}, {}, {}, {}, {}
+    prelude = []
+    direction = sym.directions.get(j) if any(functional.has(d) for d in sym.directions.get(j, ([],))[0]) else None
+    if direction:
+        dirs, inv_norm, a = direction
+        components = [S(f"a{c}") for c in range(len(a))]
+        norm = sympy.sqrt(sum(ac**2 for ac in components))
+        prelude = [*zip(components, a), (inv_norm, 1 / norm), *((d, ac * inv_norm) for d, ac in zip(dirs, components))]
+
+    def diff(expr, y):
+        """Total derivative, through the direction symbols when the branch has any."""
+        out = sympy.diff(expr, y)
+        if direction:
+            da = [sympy.diff(ac, y) for ac in a]
+            if any(x != 0 for x in da):
+                for c, dc in enumerate(dirs):
+                    partial = sympy.diff(expr, dc)
+                    if partial != 0:
+                        out += partial * inv_norm * (da[c] - dc * sum(de * x for de, x in zip(dirs, da)))
+        return out
+
     for row, (w, _) in enumerate(dofs):
         r = sympy.diff(functional, w)
         if r == 0:
             continue
         rhs[row] = r
         for col, (_, u) in enumerate(dofs):
-            e = -sympy.diff(r, u)
+            e = -diff(r, u)
             if e != 0:
                 explicit[(row, col)] = e
         for b in range(sym.case.slave):
@@ -166,10 +222,13 @@ def derive(sym: Symbols, j: int, functional, multipliers: bool) -> Branch:
         if e != 0:
             cG[row] = e
         for c in range(sym.case.dim):
-            e = -sympy.diff(r, sym.n1[j][c])
+            e = -diff(r, sym.s[j][c])
+            if e != 0:
+                cS[(row, c)] = e
+            e = -diff(r, sym.n1[j][c])
             if e != 0:
                 cN[(row, c)] = e
-    return Branch(rhs, explicit, cD, cM, cG, cN)
+    return Branch(rhs, explicit, cD, cM, cG, cS, cN, prelude)
 
 
 def _cse_lines(exprs, indent: str, prefix: str = "t"):
@@ -180,9 +239,14 @@ def _cse_lines(exprs, indent: str, prefix: str = "t"):
     return lines, reduced
 
 
+def _prelude_lines(branch: Branch, indent: str):
+    return [f"{indent}const double {cxx(s)} = {cxx(e)};" for s, e in branch.prelude]
+
+
 def emit_rhs_branch(branch: Branch, indent: str):
     rows = sorted(branch.rhs)
     lines, reduced = _cse_lines([branch.rhs[r] for r in rows], indent)
+    lines = _prelude_lines(branch, indent) + lines
     lines += [f"{indent}rhs[{r}] += {cxx(e)};" for r, e in zip(rows, reduced)]
     return lines
 
@@ -192,13 +256,16 @@ def emit_lhs_branch(branch: Branch, j: int, indent: str):
     keys_d = sorted(branch.cD)
     keys_m = sorted(branch.cM)
     keys_g = sorted(branch.cG)
+    keys_s = sorted(branch.cS)
     exprs = [branch.explicit[k] for k in keys_x] + [branch.cD[k] for k in keys_d]
-    exprs += [branch.cM[k] for k in keys_m] + [branch.cG[k] for k in keys_g]
+    exprs += [branch.cM[k] for k in keys_m] + [branch.cG[k] for k in keys_g] + [branch.cS[k] for k in keys_s]
     lines, reduced = _cse_lines(exprs, indent)
+    lines = _prelude_lines(branch, indent) + lines
     reduced = list(reduced)
     red_x, reduced = reduced[: len(keys_x)], reduced[len(keys_x) :]
     red_d, reduced = reduced[: len(keys_d)], reduced[len(keys_d) :]
-    red_m, red_g = reduced[: len(keys_m)], reduced[len(keys_m) :]
+    red_m, reduced = reduced[: len(keys_m)], reduced[len(keys_m) :]
+    red_g, red_s = reduced[: len(keys_g)], reduced[len(keys_g) :]
     lines += [f"{indent}lhs({r}, {c}) += {cxx(e)};" for (r, c), e in zip(keys_x, red_x)]
     chain = bool(keys_d or keys_m or keys_g)
     zero = [f"{indent}cD.setZero();", f"{indent}cM.setZero();", f"{indent}cG.setZero();"]
@@ -208,8 +275,12 @@ def emit_lhs_branch(branch: Branch, j: int, indent: str):
         lines += [f"{indent}cM({r}, {l}) = {cxx(e)};" for (r, l), e in zip(keys_m, red_m)]
         lines += [f"{indent}cG({r}) = {cxx(e)};" for r, e in zip(keys_g, red_g)]
         lines.append(f"{indent}AddOperatorChainRule(kinematics, {j}, cD, cM, cG, lhs);")
+    if keys_s:
+        lines.append(f"{indent}cS.setZero();")
+        lines += [f"{indent}cS({r}, {c}) = {cxx(e)};" for (r, c), e in zip(keys_s, red_s)]
+        lines.append(f"{indent}AddSlipChainRule(data, {j}, cS, lhs);")
     keys_n = sorted(branch.cN)
-    if chain or keys_n:
+    if chain or keys_n or keys_s:
         # Normal variation only: the explicit normal partials get their own CSE (prefix s) so
         # that the fixed-normal tangent pays nothing for them.
         inner = indent + "  "
@@ -221,6 +292,8 @@ def emit_lhs_branch(branch: Branch, j: int, indent: str):
         lines.append(f"{inner}cN.setZero();")
         lines += [f"{inner}cN({r}, {c}) = {cxx(e)};" for (r, c), e in zip(keys_n, red_n)]
         lines.append(f"{inner}AddNormalChainRule(kinematics, {j}, cD, cM, cG, cN, *normal_sensitivity);")
+        if keys_s:
+            lines.append(f"{inner}AddSlipNormalChainRule(data, {j}, cS, *normal_sensitivity);")
         lines.append(f"{indent}}}")
     return lines
 
@@ -228,8 +301,7 @@ def emit_lhs_branch(branch: Branch, j: int, indent: str):
 def used_names(lines) -> set:
     """The input names (C++ locals) that the emitted lines refer to."""
     text = "\n".join(lines)
-    names = {name for name in ("D", "M", "x1", "x2", "n1", "g", "lm", "eps", "df")
+    names = {name for name in ("D", "M", "x1", "x2", "n1", "g", "lm", "eps", "df", "mu", "s")
              if re.search(rf"(?<![A-Za-z0-9_]){name}\(", text)}
-    if re.search(r"(?<![A-Za-z0-9_])k(?![A-Za-z0-9_(])", text):
-        names.add("k")
+    names |= {name for name in ("k", "ct", "cslip") if re.search(rf"(?<![A-Za-z0-9_]){name}(?![A-Za-z0-9_(])", text)}
     return names

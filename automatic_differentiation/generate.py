@@ -4,7 +4,8 @@
     python automatic_differentiation/generate.py [--output-dir DIR]
 
 One translation unit per (formulation, dimension, slave nodes, master nodes) with the local RHS
-and LHS kernels of the frictionless mortar contact conditions, plus the header declaring them.
+and LHS kernels of the mortar contact conditions (frictionless and frictional), plus the header
+declaring them.
 The output depends only on the formulations and the sympy version (bit for bit).
 """
 
@@ -25,8 +26,11 @@ FORMULATIONS = [
     "ALM_frictionless_mortar_condition",
     "ALM_frictionless_components_mortar_condition",
     "penalty_frictionless_mortar_condition",
+    "ALM_frictional_mortar_condition",
+    "penalty_frictional_mortar_condition",
 ]
-HEADER = "frictionless_mortar_kernels.h"
+HEADER = "mortar_kernels.h"
+DATA = "MortarKernelData"
 
 
 def load(folder: str):
@@ -45,7 +49,7 @@ def local_size(f, case: codegen.Case) -> int:
 
 def preamble(names: set, f, kinematics: bool) -> list:
     lines = []
-    if kinematics or names & {"D", "M", "x1", "x2", "n1", "g"}:
+    if kinematics or names & {"D", "M", "x1", "x2", "n1", "g", "s"}:
         lines.append("  const auto& kinematics = *data.kinematics;")
     sources = {
         "D": "kinematics.D",
@@ -57,36 +61,50 @@ def preamble(names: set, f, kinematics: bool) -> list:
         "lm": "data.vector_multiplier" if f.VECTOR_MULTIPLIER else "data.normal_pressure",
         "eps": "data.penalty",
         "df": "data.dynamic_factor",
+        "mu": "data.friction_coefficient",
+        "s": "data.weighted_slip",
     }
     for name, source in sources.items():
         if name in names:
             lines.append(f"  const auto& {name} = {source};")
-    if "k" in names:
-        lines.append("  const double k = data.scale_factor;")
+    scalars = {"k": "data.scale_factor", "ct": "data.tangent_factor", "cslip": "data.slip_augmentation"}
+    for name, source in scalars.items():
+        if name in names:
+            lines.append(f"  const double {name} = {source};")
     return lines
 
 
+def branches(f) -> list:
+    """(C++ guard of slave node {j}, functional) in if / else-if / else order: frictionless nodes
+    are active or inactive, frictional ones slip, stick (both ACTIVE) or inactive."""
+    if getattr(f, "FRICTIONAL", False):
+        return [("data.active[{j}] && data.slip[{j}]", f.slip), ("data.active[{j}]", f.stick), (None, f.inactive)]
+    return [("data.active[{j}]", f.active), (None, f.inactive)]
+
+
 def node_branches(f, sym, case, emit) -> list:
-    """One if/else per slave node: the node's contribution depends on its own ACTIVE flag."""
+    """One if / else chain per slave node: the node's contribution depends on its own flags only
+    (never 2^n or 3^n cases)."""
     lines = []
     for j in range(case.slave):
-        bodies = []
-        for functional in (f.active(sym, j), f.inactive(sym, j)):
-            body = emit(codegen.derive(sym, j, functional, f.MULTIPLIERS), j) if functional != 0 else []
-            bodies.append(body)
         lines.append(f"  // slave node {j}")
-        lines.append(f"  if (data.active[{j}]) {{")
-        lines += bodies[0]
-        if bodies[1]:
-            lines.append("  } else {")
-            lines += bodies[1]
+        opened = False
+        for guard, branch in branches(f):
+            functional = branch(sym, j)
+            body = emit(codegen.derive(sym, j, functional, f.MULTIPLIERS), j) if functional != 0 else []
+            if guard is not None:
+                lines.append(f"  {'} else if' if opened else 'if'} ({guard.format(j=j)}) {{")
+                opened = True
+            elif body:
+                lines.append("  } else {")
+            lines += body
         lines.append("  }")
     return lines
 
 
 def translation_unit(folder: str, f, case: codegen.Case) -> str:
     sym = codegen.Symbols(case, f.VECTOR_MULTIPLIER)
-    data_type = f"FrictionlessMortarData<{case.dim}, {case.slave}, {case.master}>"
+    data_type = f"{DATA}<{case.dim}, {case.slave}, {case.master}>"
     size = local_size(f, case)
 
     rhs_body = node_branches(f, sym, case, lambda b, j: codegen.emit_rhs_branch(b, "    "))
@@ -116,6 +134,8 @@ def translation_unit(folder: str, f, case: codegen.Case) -> str:
         out.append(f"  Eigen::Matrix<double, {size}, {case.master}> cM;")
         out.append(f"  Eigen::Matrix<double, {size}, 1> cG;")
         out.append(f"  Eigen::Matrix<double, {size}, {case.dim}> cN;")
+        if getattr(f, "FRICTIONAL", False):
+            out.append(f"  Eigen::Matrix<double, {size}, {case.dim}> cS;")
     out += lhs_body
     out += ["}", "", "}  // namespace mc::generated", ""]
     return "\n".join(out)
@@ -125,7 +145,7 @@ def header(modules) -> str:
     out = [
         "// SPDX-License-Identifier: BSD-3-Clause",
         codegen.STAMP.format(source="automatic_differentiation/codegen.py"),
-        "// Local kernels of the frictionless mortar contact conditions, one overload per geometry case.",
+        "// Local kernels of the mortar contact conditions, one overload per formulation and geometry case.",
         "// RHS: adds the pair's residual (external-force sign) to rhs; LHS: adds -d rhs/d dofs to lhs at",
         "// fixed slave normals and, given normal_sensitivity, -d rhs/d n (columns: slave node-major",
         "// normal components) to it. All expect zeroed, correctly sized arguments (DoF order: master u,",
@@ -133,15 +153,16 @@ def header(modules) -> str:
         "#pragma once",
         "",
         "#include <cassert>",
+        "#include <cmath>",
         "",
-        '#include "custom_conditions/frictionless_mortar_data.h"',
+        '#include "custom_conditions/mortar_kernel_data.h"',
         "",
         "namespace mc::generated {",
         "",
     ]
     for _, f in modules:
         for case in codegen.CASES:
-            data_type = f"FrictionlessMortarData<{case.dim}, {case.slave}, {case.master}>"
+            data_type = f"{DATA}<{case.dim}, {case.slave}, {case.master}>"
             out.append(f"void {f.FUNCTION}RHS(const {data_type}& data, Vector& rhs);")
             out.append(f"void {f.FUNCTION}LHS(const {data_type}& data, Matrix& lhs, "
                        "Matrix* normal_sensitivity = nullptr);")

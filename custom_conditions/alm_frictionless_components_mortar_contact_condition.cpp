@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "custom_conditions/alm_frictionless_components_mortar_contact_condition.h"
 
-#include "custom_conditions/generated/frictionless_mortar_kernels.h"
-#include "custom_utilities/contact_variables.h"
+#include "custom_conditions/generated/mortar_kernels.h"
 #include "custom_utilities/mortar_geometry_cases.h"
 
 namespace mc {
@@ -19,23 +18,6 @@ ALMFrictionlessComponentsMortarContactCondition<TDim, TNumNodes, TNumNodesMaster
     IndexType id, Condition& slave, Condition& master, Properties* properties) const {
   return this->template CreatePairedOfType<ALMFrictionlessComponentsMortarContactCondition>(id, slave, master,
                                                                                             properties);
-}
-
-template <int TDim, int TNumNodes, int TNumNodesMaster>
-const Variable<double>&
-ALMFrictionlessComponentsMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::MultiplierVariable(int c) const {
-  static const Variable<double>* const components[3] = {&VECTOR_LAGRANGE_MULTIPLIER_X, &VECTOR_LAGRANGE_MULTIPLIER_Y,
-                                                        &VECTOR_LAGRANGE_MULTIPLIER_Z};
-  return *components[c];
-}
-
-template <int TDim, int TNumNodes, int TNumNodesMaster>
-void ALMFrictionlessComponentsMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::GatherMultipliers(
-    Data& data) const {
-  const Geometry& slave = this->GetGeometry();
-  for (int j = 0; j < TNumNodes; ++j)
-    data.vector_multiplier.row(j) =
-        slave[j].FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER).template head<TDim>().transpose();
 }
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>

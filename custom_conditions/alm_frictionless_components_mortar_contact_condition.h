@@ -33,8 +33,8 @@ class ALMFrictionlessComponentsMortarContactCondition
  protected:
   const char* Stem() const override { return "ALMFrictionlessComponentsMortarContactCondition"; }
   int MultiplierComponents() const override { return TDim; }
-  const Variable<double>& MultiplierVariable(int c) const override;
-  void GatherMultipliers(Data& data) const override;
+  const Variable<double>& MultiplierVariable(int c) const override { return Base::VectorMultiplierComponent(c); }
+  void GatherMultipliers(Data& data) const override { this->GatherVectorMultipliers(data); }
   void AddRHS(const Data& data, Vector& rhs) const override;
   void AddLHS(const Data& data, Matrix& lhs, Matrix* normal_sensitivity) const override;
 };

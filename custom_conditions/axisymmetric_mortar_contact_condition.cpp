@@ -14,6 +14,14 @@ template <int D, int S, int M>
 const char* AxisymmetricStem(const PenaltyFrictionlessMortarContactCondition<D, S, M>*) {
   return "PenaltyFrictionlessAxisymMortarContactCondition";
 }
+template <int D, int S, int M>
+const char* AxisymmetricStem(const ALMFrictionalMortarContactCondition<D, S, M>*) {
+  return "ALMFrictionalAxisymMortarContactCondition";
+}
+template <int D, int S, int M>
+const char* AxisymmetricStem(const PenaltyFrictionalMortarContactCondition<D, S, M>*) {
+  return "PenaltyFrictionalAxisymMortarContactCondition";
+}
 
 }  // namespace
 
@@ -37,5 +45,7 @@ std::unique_ptr<PairedCondition> AxisymmetricMortarContactCondition<TFormulation
 
 template class AxisymmetricMortarContactCondition<ALMFrictionlessMortarContactCondition<2, 2, 2>>;
 template class AxisymmetricMortarContactCondition<PenaltyFrictionlessMortarContactCondition<2, 2, 2>>;
+template class AxisymmetricMortarContactCondition<ALMFrictionalMortarContactCondition<2, 2, 2>>;
+template class AxisymmetricMortarContactCondition<PenaltyFrictionalMortarContactCondition<2, 2, 2>>;
 
 }  // namespace mc

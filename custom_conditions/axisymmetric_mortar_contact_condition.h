@@ -3,12 +3,14 @@
 
 #include <memory>
 
+#include "custom_conditions/alm_frictional_mortar_contact_condition.h"
 #include "custom_conditions/alm_frictionless_mortar_contact_condition.h"
+#include "custom_conditions/penalty_frictional_mortar_contact_condition.h"
 #include "custom_conditions/penalty_frictionless_mortar_contact_condition.h"
 
 namespace mc {
 
-/// The axisymmetric variant of a 2D frictionless mortar formulation
+/// The axisymmetric variant of a 2D mortar formulation
 /// (alternative_formulations.axisymmetric, spec 4.4 and 6.2; x = radius, y = axis): the same
 /// residual and exact tangent, with every mortar integral (D, M, weighted gap, nodal area) taken
 /// over the surface of revolution, i.e. weighted by 2 pi r at each integration point, and the dual
@@ -36,8 +38,16 @@ using ALMFrictionlessAxisymMortarContactCondition =
 template <int TDim, int TNumNodes, int TNumNodesMaster>
 using PenaltyFrictionlessAxisymMortarContactCondition =
     AxisymmetricMortarContactCondition<PenaltyFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>>;
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+using ALMFrictionalAxisymMortarContactCondition =
+    AxisymmetricMortarContactCondition<ALMFrictionalMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>>;
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+using PenaltyFrictionalAxisymMortarContactCondition =
+    AxisymmetricMortarContactCondition<PenaltyFrictionalMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>>;
 
 extern template class AxisymmetricMortarContactCondition<ALMFrictionlessMortarContactCondition<2, 2, 2>>;
 extern template class AxisymmetricMortarContactCondition<PenaltyFrictionlessMortarContactCondition<2, 2, 2>>;
+extern template class AxisymmetricMortarContactCondition<ALMFrictionalMortarContactCondition<2, 2, 2>>;
+extern template class AxisymmetricMortarContactCondition<PenaltyFrictionalMortarContactCondition<2, 2, 2>>;
 
 }  // namespace mc

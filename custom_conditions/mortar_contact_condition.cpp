@@ -46,6 +46,21 @@ const Variable<double>& MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>
 }
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
+const Variable<double>& MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::VectorMultiplierComponent(int c) {
+  static const Variable<double>* const components[3] = {&VECTOR_LAGRANGE_MULTIPLIER_X, &VECTOR_LAGRANGE_MULTIPLIER_Y,
+                                                        &VECTOR_LAGRANGE_MULTIPLIER_Z};
+  return *components[c];
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+void MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::GatherVectorMultipliers(Data& data) const {
+  const Geometry& slave = GetGeometry();
+  for (int j = 0; j < TNumNodes; ++j)
+    data.vector_multiplier.row(j) =
+        slave[j].FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER).template head<TDim>().transpose();
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
 void MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::GetDofList(DofsVectorType& dofs,
                                                                           const ProcessInfo&) const {
   const Geometry& slave = GetGeometry();
@@ -175,6 +190,7 @@ void MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::CalculatePairSyst
   } else {
     kinematics.ComputeValues(x1, x2, n1, settings);
   }
+  CompleteKernelData(data, info);
 
   if (rhs) AddRHS(data, *rhs);
   if (lhs) AddLHS(data, *lhs, normal_sensitivity);
@@ -186,15 +202,17 @@ void MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::AddExplicitContri
   typename Kinematics::SlaveMatrix x1, n1;
   typename Kinematics::MasterMatrix x2;
   GatherKinematicsInput(x1, x2, n1);
-  if (!kinematics.ComputeValues(x1, x2, n1, IntegrationSettings(info))) return;
-  Geometry& slave = GetGeometry();
-  for (int j = 0; j < TNumNodes; ++j) {
-    Node& node = slave[j];
-    AtomicAdd(node.GetSolutionStepValue(WEIGHTED_GAP), kinematics.weighted_gap(j));
-    // A sliver's area does not count: a node covered by slivers alone keeps NODAL_AREA = 0 and is
-    // ISOLATED: its multiplier row would carry D_jj of the order of the sliver's area.
-    if (!kinematics.sliver) AtomicAdd(node.GetValueRef(NODAL_AREA), kinematics.nodal_area(j));
+  if (kinematics.ComputeValues(x1, x2, n1, IntegrationSettings(info))) {
+    Geometry& slave = GetGeometry();
+    for (int j = 0; j < TNumNodes; ++j) {
+      Node& node = slave[j];
+      AtomicAdd(node.GetSolutionStepValue(WEIGHTED_GAP), kinematics.weighted_gap(j));
+      // A sliver's area does not count: a node covered by slivers alone keeps NODAL_AREA = 0 and is
+      // ISOLATED: its multiplier row would carry D_jj of the order of the sliver's area.
+      if (!kinematics.sliver) AtomicAdd(node.GetValueRef(NODAL_AREA), kinematics.nodal_area(j));
+    }
   }
+  AddExplicitNodalValues(kinematics, info);
 }
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>

@@ -10,7 +10,7 @@
 
 #include <string>
 
-#include "custom_conditions/frictionless_mortar_data.h"
+#include "custom_conditions/mortar_kernel_data.h"
 #include "custom_conditions/paired_condition.h"
 #include "custom_utilities/mortar_geometry_cases.h"
 #include "custom_utilities/mortar_pair_kinematics.h"
@@ -32,7 +32,7 @@ template <int TDim, int TNumNodes, int TNumNodesMaster>
 class MortarContactCondition : public PairedCondition {
  public:
   using Kinematics = MortarPairKinematics<TDim, TNumNodes, TNumNodesMaster>;
-  using Data = FrictionlessMortarData<TDim, TNumNodes, TNumNodesMaster>;
+  using Data = MortarKernelData<TDim, TNumNodes, TNumNodesMaster>;
   static constexpr int kNumDisplacementDofs = Kinematics::kNumDisplacementDofs;
 
   using PairedCondition::PairedCondition;
@@ -65,6 +65,16 @@ class MortarContactCondition : public PairedCondition {
   virtual const Variable<double>& MultiplierVariable(int c) const;
   /// Reads the formulation's nodal multipliers into data.
   virtual void GatherMultipliers(Data& data) const {}
+  /// Fills the inputs that need the pair's kinematics (computed before the call; frictional: the
+  /// weighted slip). Default: nothing.
+  virtual void CompleteKernelData(Data& data, const ProcessInfo& info) {}
+  /// Explicit update of further nodal quantities from the pair's values-only kinematics (frictional:
+  /// WEIGHTED_SLIP), also for a pair without overlap. Default: nothing.
+  virtual void AddExplicitNodalValues(const Kinematics& kinematics, const ProcessInfo& info) {}
+  /// VECTOR_LAGRANGE_MULTIPLIER_X/Y/Z, for the formulations with a vector multiplier.
+  static const Variable<double>& VectorMultiplierComponent(int c);
+  /// Reads VECTOR_LAGRANGE_MULTIPLIER of the slave nodes into data.vector_multiplier.
+  void GatherVectorMultipliers(Data& data) const;
   /// The generated kernels; rhs / lhs are sized and zeroed. Given normal_sensitivity (sized
   /// LocalSize() x TDim * TNumNodes, zeroed), AddLHS also adds -d rhs / d n to it (slave normal
   /// components, node-major), for the normal variation.

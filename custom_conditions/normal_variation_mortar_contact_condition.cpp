@@ -27,11 +27,26 @@ const char* NormalVariationStem(const PenaltyFrictionlessMortarContactCondition<
   return "PenaltyNVFrictionlessMortarContactCondition";
 }
 
+template <int D, int S, int M>
+const char* NormalVariationStem(const ALMFrictionalMortarContactCondition<D, S, M>*) {
+  return "ALMNVFrictionalMortarContactCondition";
+}
+template <int D, int S, int M>
+const char* NormalVariationStem(const PenaltyFrictionalMortarContactCondition<D, S, M>*) {
+  return "PenaltyNVFrictionalMortarContactCondition";
+}
+
 const char* NormalVariationStem(const ALMFrictionlessAxisymMortarContactCondition<2, 2, 2>*) {
   return "ALMNVFrictionlessAxisymMortarContactCondition";
 }
 const char* NormalVariationStem(const PenaltyFrictionlessAxisymMortarContactCondition<2, 2, 2>*) {
   return "PenaltyNVFrictionlessAxisymMortarContactCondition";
+}
+const char* NormalVariationStem(const ALMFrictionalAxisymMortarContactCondition<2, 2, 2>*) {
+  return "ALMNVFrictionalAxisymMortarContactCondition";
+}
+const char* NormalVariationStem(const PenaltyFrictionalAxisymMortarContactCondition<2, 2, 2>*) {
+  return "PenaltyNVFrictionalAxisymMortarContactCondition";
 }
 
 bool Holds(const Geometry& geometry, const Node* node) {
@@ -195,5 +210,12 @@ template class NormalVariationMortarContactCondition<PenaltyFrictionlessMortarCo
 template class NormalVariationMortarContactCondition<PenaltyFrictionlessMortarContactCondition<3, 3, 4>>;
 template class NormalVariationMortarContactCondition<ALMFrictionlessAxisymMortarContactCondition<2, 2, 2>>;
 template class NormalVariationMortarContactCondition<PenaltyFrictionlessAxisymMortarContactCondition<2, 2, 2>>;
+#define MC_INSTANTIATE(D, S, M)                                                                       \
+  template class NormalVariationMortarContactCondition<ALMFrictionalMortarContactCondition<D, S, M>>; \
+  template class NormalVariationMortarContactCondition<PenaltyFrictionalMortarContactCondition<D, S, M>>;
+MC_FOR_EACH_MORTAR_CASE(MC_INSTANTIATE)
+#undef MC_INSTANTIATE
+template class NormalVariationMortarContactCondition<ALMFrictionalAxisymMortarContactCondition<2, 2, 2>>;
+template class NormalVariationMortarContactCondition<PenaltyFrictionalAxisymMortarContactCondition<2, 2, 2>>;
 
 }  // namespace mc

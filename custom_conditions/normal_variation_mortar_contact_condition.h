@@ -5,15 +5,18 @@
 #include <memory>
 #include <vector>
 
+#include "custom_conditions/alm_frictional_mortar_contact_condition.h"
 #include "custom_conditions/alm_frictionless_components_mortar_contact_condition.h"
 #include "custom_conditions/alm_frictionless_mortar_contact_condition.h"
 #include "custom_conditions/axisymmetric_mortar_contact_condition.h"
+#include "custom_conditions/penalty_frictional_mortar_contact_condition.h"
 #include "custom_conditions/penalty_frictionless_mortar_contact_condition.h"
+#include "custom_utilities/mortar_geometry_cases.h"
 #include "custom_utilities/nodal_normal_support.h"
 
 namespace mc {
 
-/// The NV variant of a frictionless mortar formulation (normal_variation:
+/// The NV variant of a mortar formulation (normal_variation:
 /// "nodal_elemental_derivatives", spec 4.4 and 6.2): the same residual, with the slave nodal
 /// normals n_j as functions of the current coordinates (NodalNormalSupport: normalised sum of
 /// the area vectors of the interface faces around j), and the EXACT tangent including dn_j/du:
@@ -85,6 +88,18 @@ using PenaltyNVFrictionlessAxisymMortarContactCondition = NormalVariationMortarC
 template <int TDim, int TNumNodes, int TNumNodesMaster>
 using PenaltyNVFrictionlessMortarContactCondition =
     NormalVariationMortarContactCondition<PenaltyFrictionlessMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>>;
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+using ALMNVFrictionalMortarContactCondition =
+    NormalVariationMortarContactCondition<ALMFrictionalMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>>;
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+using PenaltyNVFrictionalMortarContactCondition =
+    NormalVariationMortarContactCondition<PenaltyFrictionalMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>>;
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+using ALMNVFrictionalAxisymMortarContactCondition =
+    NormalVariationMortarContactCondition<ALMFrictionalAxisymMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>>;
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+using PenaltyNVFrictionalAxisymMortarContactCondition = NormalVariationMortarContactCondition<
+    PenaltyFrictionalAxisymMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>>;
 
 extern template class NormalVariationMortarContactCondition<ALMFrictionlessMortarContactCondition<2, 2, 2>>;
 extern template class NormalVariationMortarContactCondition<ALMFrictionlessMortarContactCondition<3, 3, 3>>;
@@ -103,5 +118,12 @@ extern template class NormalVariationMortarContactCondition<PenaltyFrictionlessM
 extern template class NormalVariationMortarContactCondition<PenaltyFrictionlessMortarContactCondition<3, 4, 3>>;
 extern template class NormalVariationMortarContactCondition<ALMFrictionlessAxisymMortarContactCondition<2, 2, 2>>;
 extern template class NormalVariationMortarContactCondition<PenaltyFrictionlessAxisymMortarContactCondition<2, 2, 2>>;
+#define MC_EXTERN(D, S, M)                                                                                   \
+  extern template class NormalVariationMortarContactCondition<ALMFrictionalMortarContactCondition<D, S, M>>; \
+  extern template class NormalVariationMortarContactCondition<PenaltyFrictionalMortarContactCondition<D, S, M>>;
+MC_FOR_EACH_MORTAR_CASE(MC_EXTERN)
+#undef MC_EXTERN
+extern template class NormalVariationMortarContactCondition<ALMFrictionalAxisymMortarContactCondition<2, 2, 2>>;
+extern template class NormalVariationMortarContactCondition<PenaltyFrictionalAxisymMortarContactCondition<2, 2, 2>>;
 
 }  // namespace mc

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "custom_conditions/penalty_frictionless_mortar_contact_condition.h"
 
-#include "custom_conditions/generated/frictionless_mortar_kernels.h"
+#include "custom_conditions/generated/mortar_kernels.h"
 #include "custom_utilities/contact_variables.h"
 #include "custom_utilities/mortar_geometry_cases.h"
 

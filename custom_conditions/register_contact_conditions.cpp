@@ -6,10 +6,12 @@
 #include <string>
 
 #include "core/model/registry.h"
+#include "custom_conditions/alm_frictional_mortar_contact_condition.h"
 #include "custom_conditions/alm_frictionless_components_mortar_contact_condition.h"
 #include "custom_conditions/alm_frictionless_mortar_contact_condition.h"
 #include "custom_conditions/axisymmetric_mortar_contact_condition.h"
 #include "custom_conditions/normal_variation_mortar_contact_condition.h"
+#include "custom_conditions/penalty_frictional_mortar_contact_condition.h"
 #include "custom_conditions/penalty_frictionless_mortar_contact_condition.h"
 
 namespace mc {
@@ -41,11 +43,19 @@ void RegisterAll() {
   AddAllGeometries<ALMNVFrictionlessMortarContactCondition>();
   AddAllGeometries<ALMNVFrictionlessComponentsMortarContactCondition>();
   AddAllGeometries<PenaltyNVFrictionlessMortarContactCondition>();
+  AddAllGeometries<ALMFrictionalMortarContactCondition>();
+  AddAllGeometries<PenaltyFrictionalMortarContactCondition>();
+  AddAllGeometries<ALMNVFrictionalMortarContactCondition>();
+  AddAllGeometries<PenaltyNVFrictionalMortarContactCondition>();
 
   Add<ALMFrictionlessAxisymMortarContactCondition, 2, 2, 2>(GT::Line2D2, GT::Line2D2);
   Add<PenaltyFrictionlessAxisymMortarContactCondition, 2, 2, 2>(GT::Line2D2, GT::Line2D2);
   Add<ALMNVFrictionlessAxisymMortarContactCondition, 2, 2, 2>(GT::Line2D2, GT::Line2D2);
   Add<PenaltyNVFrictionlessAxisymMortarContactCondition, 2, 2, 2>(GT::Line2D2, GT::Line2D2);
+  Add<ALMFrictionalAxisymMortarContactCondition, 2, 2, 2>(GT::Line2D2, GT::Line2D2);
+  Add<PenaltyFrictionalAxisymMortarContactCondition, 2, 2, 2>(GT::Line2D2, GT::Line2D2);
+  Add<ALMNVFrictionalAxisymMortarContactCondition, 2, 2, 2>(GT::Line2D2, GT::Line2D2);
+  Add<PenaltyNVFrictionalAxisymMortarContactCondition, 2, 2, 2>(GT::Line2D2, GT::Line2D2);
 }
 
 }  // namespace

@@ -37,12 +37,18 @@ class ContactFormulation {
     std::vector<std::pair<std::string, std::string>> dofs;
     /// The nodal multiplier variable ("" without multipliers).
     std::string multiplier;
-    /// Multiplier blocks of the contact convergence criteria: 0 (penalty), 1 (normal).
+    /// Multiplier blocks of the contact convergence criteria: 0 (penalty), 1 (normal), 3 (normal,
+    /// stick and slip tangents).
     int multiplier_blocks = 0;
     /// The MixedULM solver can condense its multipliers (vector multipliers with a diagonal D).
     bool condensable = false;
     /// Axisymmetric conditions exist (alternative_formulations.axisymmetric).
     bool axisymmetric = false;
+    /// Every active node slips (the "PureSlip" formulations): no stick state.
+    bool pure_slip = false;
+    /// Smallest nodal history the formulation needs (spec 2.10: 3 for friction, whose weighted
+    /// slip is measured from the last converged step).
+    int buffer_size = 2;
     CriterionFactory active_set_criterion;
     /// Non-empty for a formulation that is known but not implemented yet: what is missing.
     std::string not_implemented;
@@ -69,6 +75,8 @@ class ContactFormulation {
   const Description& Describe() const noexcept { return d_; }
   const std::string& MortarType() const noexcept { return d_.mortar_type; }
   bool IsImplemented() const noexcept { return d_.not_implemented.empty(); }
+  /// Coulomb friction: the conditions read SLIP and FRICTION_COEFFICIENT, the model part carries SLIP.
+  bool IsFrictional() const noexcept { return d_.contact_kind == "Frictional"; }
   /// The pair-condition name stem searched for by the contact search.
   std::string ConditionStem(bool normal_variation, bool axisymmetric) const;
   std::shared_ptr<ConvergenceCriteria> CreateActiveSetCriterion(Parameters contact_settings) const;

@@ -2,15 +2,16 @@
 #include "custom_formulations/register_contact_formulations.h"
 
 #include <mutex>
-#include <tuple>
 #include <vector>
 
 #include "core/linear_solvers/linear_solver.h"
 #include "core/utilities/string_utilities.h"
 #include "custom_formulations/contact_formulation.h"
+#include "custom_strategies/custom_convergencecriterias/alm_frictional_mortar_criteria.h"
 #include "custom_strategies/custom_convergencecriterias/alm_frictionless_components_mortar_criteria.h"
 #include "custom_strategies/custom_convergencecriterias/alm_frictionless_mortar_criteria.h"
 #include "custom_strategies/custom_convergencecriterias/mesh_tying_mortar_criteria.h"
+#include "custom_strategies/custom_convergencecriterias/penalty_frictional_mortar_criteria.h"
 #include "custom_strategies/custom_convergencecriterias/penalty_frictionless_mortar_criteria.h"
 
 namespace mc {
@@ -20,6 +21,11 @@ namespace {
 template <class TCriterion>
 ContactFormulation::CriterionFactory Criterion() {
   return [](Parameters settings) { return std::make_shared<TCriterion>(std::move(settings)); };
+}
+
+template <class TCriterion>
+ContactFormulation::CriterionFactory FrictionalCriterion(bool pure_slip) {
+  return [pure_slip](Parameters settings) { return std::make_shared<TCriterion>(std::move(settings), pure_slip); };
 }
 
 void RegisterAll() {
@@ -73,20 +79,43 @@ void RegisterAll() {
       .active_set_criterion = Criterion<PenaltyFrictionlessMortarConvergenceCriteria>(),
   });
 
-  // Known names, not implemented yet: asking for them is a clear NotImplementedError.
-  const std::string friction = "frictional mortar contact";
-  for (const auto& [mortar_type, process, contact_type, enforcement] :
-       std::vector<std::tuple<std::string, std::string, std::string, std::string>>{
-           {"ALMContactFrictional", "alm_contact_process", "Frictional", "ALM"},
-           {"ALMContactFrictionalPureSlip", "alm_contact_process", "FrictionalPureSlip", "ALM"},
-           {"PenaltyContactFrictional", "penalty_contact_process", "Frictional", "Penalty"},
-           {"PenaltyContactFrictionalPureSlip", "penalty_contact_process", "FrictionalPureSlip", "Penalty"}})
-    ContactFormulation::Register(D{.mortar_type = mortar_type,
-                                   .process = process,
-                                   .contact_type = contact_type,
-                                   .enforcement = enforcement,
-                                   .contact_kind = "Frictional",
-                                   .not_implemented = friction});
+  // Coulomb friction (spec 2.10): the same conditions for both, a node sticks or slips by its SLIP
+  // flag; pure slip only makes every active node slip.
+  for (const bool pure_slip : {false, true}) {
+    const std::string suffix = pure_slip ? "PureSlip" : "";
+    ContactFormulation::Register(D{
+        .mortar_type = "ALMContactFrictional" + suffix,
+        .process = "alm_contact_process",
+        .contact_type = "Frictional" + suffix,
+        .enforcement = "ALM",
+        .contact_kind = "Frictional",
+        .variables = {"VECTOR_LAGRANGE_MULTIPLIER", "WEIGHTED_GAP", "WEIGHTED_SLIP", "WEIGHTED_VECTOR_RESIDUAL"},
+        .dofs = vector_multiplier,
+        .multiplier = "VECTOR_LAGRANGE_MULTIPLIER",
+        .multiplier_blocks = 3,
+        .condensable = true,
+        .axisymmetric = true,
+        .pure_slip = pure_slip,
+        .buffer_size = 3,
+        .active_set_criterion = FrictionalCriterion<ALMFrictionalMortarConvergenceCriteria>(pure_slip),
+    });
+    ContactFormulation::Register(D{
+        .mortar_type = "PenaltyContactFrictional" + suffix,
+        .process = "penalty_contact_process",
+        .contact_type = "Frictional" + suffix,
+        .enforcement = "Penalty",
+        .contact_kind = "Frictional",
+        .variables = {"WEIGHTED_GAP", "WEIGHTED_SLIP"},
+        .dofs = {},
+        .multiplier = "",
+        .multiplier_blocks = 0,
+        .condensable = false,
+        .axisymmetric = true,
+        .pure_slip = pure_slip,
+        .buffer_size = 3,
+        .active_set_criterion = FrictionalCriterion<PenaltyFrictionalMortarConvergenceCriteria>(pure_slip),
+    });
+  }
   for (const std::string& mortar_type : {"ScalarMeshTying", "ComponentsMeshTying"})
     ContactFormulation::Register(
         D{.mortar_type = mortar_type,

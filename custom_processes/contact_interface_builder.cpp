@@ -133,6 +133,9 @@ ModelPart& ContactInterfaceBuilder::Build(const ContactInterfaceSettings& settin
     if (source) static_cast<DataValueContainer&>(properties) = static_cast<const DataValueContainer&>(*source);
   }
   if (!properties.Has(FRICTION_COEFFICIENT)) properties.SetValue(FRICTION_COEFFICIENT, settings.friction_coefficient);
+  // The frictional conditions and active-set utilities read the coefficient per node.
+  const double friction_coefficient = properties.GetValue(FRICTION_COEFFICIENT);
+  for (Node* node : sub.Nodes()) node->SetValue(FRICTION_COEFFICIENT, friction_coefficient);
 
   // Roles (spec 4.1: the listed parts are the slave side).
   std::unordered_set<const Node*> slave_nodes;

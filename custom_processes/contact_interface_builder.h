@@ -31,7 +31,8 @@ struct ContactInterfaceSettings {
 ///  - flags INTERFACE on nodes and conditions, SLAVE on those of the slave parts and MASTER on
 ///    the others (both when no slave part is given: the search decides);
 ///  - the interface property (id, or new id 100 + k copying the values of the first interface
-///    condition's or parent element's property; FRICTION_COEFFICIENT unless already set);
+///    condition's or parent element's property; FRICTION_COEFFICIENT unless already set), and
+///    its FRICTION_COEFFICIENT on every interface node (non-historical);
 ///  - NODAL_H on the interface nodes, condition and nodal NORMAL;
 ///  - the normal checks: an interface condition given in the mdpa whose normal points into its
 ///    parent element, or slave and master sides whose normals point the same way, is an

@@ -57,7 +57,9 @@ std::size_t ComputeContactOutputs(ModelPart& part, bool clear_inactive) {
     }
     node.SetValue(NORMAL_CONTACT_STRESS, stress);
     node.SetValue(CONTACT_PRESSURE, -stress);
-    node.SetValue(TANGENTIAL_CONTACT_STRESS, 0.0);
+    node.SetValue(TANGENTIAL_CONTACT_STRESS, active && node.Has(AUGMENTED_TANGENT_CONTACT_PRESSURE)
+                                                 ? node.GetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE).norm()
+                                                 : 0.0);
     node.SetValue(CONTACT_FORCE, Array3(stress * area * normal));
     if (has_gap && area > 0.0 && !node.Is(ISOLATED))
       node.SetValue(NORMAL_GAP, node.FastGetSolutionStepValue(WEIGHTED_GAP) / area);

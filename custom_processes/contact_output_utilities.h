@@ -21,7 +21,11 @@ namespace mc {
 ///    share of the weighted gap, so where a node's mortar area is split among P pairs, eps g is
 ///    up to P times the traction (2.1 times on the Hertz cylinder).
 ///  - CONTACT_PRESSURE: -NORMAL_CONTACT_STRESS, the contact pressure (positive in compression).
-///  - TANGENTIAL_CONTACT_STRESS: 0, the formulations are frictionless.
+///  - TANGENTIAL_CONTACT_STRESS: the magnitude of the tangential traction where ACTIVE, 0
+///    elsewhere: |AUGMENTED_TANGENT_CONTACT_PRESSURE|, the augmented tangent pressure the stick /
+///    slip state was decided on (k T(lambda) + c_tau eps s at a stick node, the Coulomb limit
+///    mu |lambda_bar_n| at a slip node; penalty: c_tau eps s), in stress units like
+///    NORMAL_CONTACT_STRESS. 0 for the frictionless formulations, which never set it.
 ///  - CONTACT_FORCE: NORMAL_CONTACT_STRESS NODAL_AREA NORMAL, the force on the slave body at the
 ///    node; summed over the interface it balances the reactions.
 ///  - NORMAL_GAP: WEIGHTED_GAP / NODAL_AREA, the mortar mean of the normal gap around the node at

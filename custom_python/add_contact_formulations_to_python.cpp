@@ -45,6 +45,14 @@ void AddContactFormulationsToPython(py::module_& m) {
       .def_property_readonly(
           "condensable", [](const ContactFormulation& f) { return f.Describe().condensable; },
           "Whether the MixedULM solver can condense its multipliers.")
+      .def_property_readonly("frictional", &ContactFormulation::IsFrictional,
+                             "Coulomb friction: SLIP and FRICTION_COEFFICIENT matter, the model part carries SLIP.")
+      .def_property_readonly(
+          "pure_slip", [](const ContactFormulation& f) { return f.Describe().pure_slip; },
+          "Every active node slips (the 'PureSlip' formulations).")
+      .def_property_readonly(
+          "buffer_size", [](const ContactFormulation& f) { return f.Describe().buffer_size; },
+          "Smallest nodal history (buffer_size) the formulation needs.")
       .def("ConditionStem", &ContactFormulation::ConditionStem, py::arg("normal_variation"), py::arg("axisymmetric"),
            "Name stem of its pair conditions, e.g. 'ALMNVFrictionlessMortarContactCondition'.")
       .def("CreateActiveSetCriterion", &ContactFormulation::CreateActiveSetCriterion, py::arg("contact_settings"),

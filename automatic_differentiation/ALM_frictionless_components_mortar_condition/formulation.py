@@ -1,16 +1,12 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """Vector (components) augmented Lagrangian frictionless mortar contact (derivation in README.md)."""
 
+from codegen import dot
+
 FAMILY = "alm_frictionless_components"
 FUNCTION = "ALMFrictionlessComponents"
 VECTOR_MULTIPLIER = True
 MULTIPLIERS = True
-
-
-def _tangential(n, v):
-    """v - n (n . v)."""
-    nv = sum(a * b for a, b in zip(n, v))
-    return [vc - nc * nv for vc, nc in zip(v, n)]
 
 
 def active(sym, j):
@@ -19,12 +15,12 @@ def active(sym, j):
     n = sym.n1[j]
     g = sym.weighted_gap(j)
     augmented = [sym.k * lc + sym.eps[j] * g * nc for lc, nc in zip(sym.lm[j], n)]
-    work = sum(a * b for a, b in zip(augmented, sym.test_jump(j)))
-    normal_constraint = sym.k * g * sum(nc * wc for nc, wc in zip(n, sym.wl[j]))
-    tangential = sum(a * b for a, b in zip(_tangential(n, sym.lm[j]), _tangential(n, sym.wl[j])))
+    work = dot(augmented, sym.test_jump(j))
+    normal_constraint = sym.k * g * dot(n, sym.wl[j])
+    tangential = dot(sym.tangential(j, sym.lm[j]), sym.tangential(j, sym.wl[j]))
     return sym.df[j] * work + normal_constraint - sym.k**2 / sym.eps[j] * tangential
 
 
 def inactive(sym, j):
     """Gap zone: every component of the multiplier is driven to zero."""
-    return -sym.k**2 / sym.eps[j] * sum(lc * wc for lc, wc in zip(sym.lm[j], sym.wl[j]))
+    return -sym.k**2 / sym.eps[j] * dot(sym.lm[j], sym.wl[j])

@@ -85,7 +85,7 @@ def migrated_case(parameters_file: str, folder: str, formulation: str | None = N
     params["processes"].pop("json_check_process", None)
     if formulation is not None:
         switch_formulation(params, formulation)
-    solver = params["solver_settings"]["linear_solver_settings"]
+    solver = params["solver_settings"].get("linear_solver_settings", {})  # absent: both codes' default
     if "skyline" in solver.get("solver_type", "").lower():
         solver["solver_type"] = "LinearSolversApplication.sparse_lu"
     with open(stem + "_parameters.json", "w") as f:

@@ -1,8 +1,11 @@
 """``alm_contact_process``: augmented Lagrangian mortar contact (spec 4.4)."""
 from __future__ import annotations
 
+import math
+import sys
+
 from .. import _core
-from ..utilities import warn_about_keys_without_effect
+from ..utilities import nearest, warn_about_keys_without_effect
 from .search_base_process import SearchBaseProcess
 
 #: normal_variation -> ProcessInfo CONSIDER_NORMAL_VARIATION (spec 4.4)
@@ -18,25 +21,43 @@ NORMAL_UPDATE = "WithNormalUpdate"
 #: normals follow the mesh in every mode); the NV conditions differentiate the averaged nodal
 #: normals exactly, so they serve both and Newton keeps its quadratic rate.
 NORMAL_DERIVATIVES = ("elemental_derivatives", "nodal_elemental_derivatives")
-_FRICTIONAL = "only the frictional formulations read it, and they are not implemented"
+_FRICTIONAL = "only the frictional formulations (contact_type Frictional*) read it"
 _EXPLICIT = "only the explicit penalty process reads it, and it is not implemented"
-#: Keys accepted without effect (issue 18): (sub-block or "", key) -> why; warned when given a value
-#: other than the default (NoEffectWarnings).
-KEYS_WITHOUT_EFFECT = {
+#: Read by the frictional formulations only: without effect on the frictionless ones.
+FRICTIONAL_KEYS_WITHOUT_EFFECT = {
     ("", "friction_coefficients"): "FRICTION_COEFFICIENT goes to the pair properties, but " + _FRICTIONAL,
     ("", "not_normal_update_frictional"): _FRICTIONAL,
     ("", "frictional_law"): _FRICTIONAL,
     ("", "tangent_factor"): _FRICTIONAL,
-    ("", "operator_threshold"): _FRICTIONAL,
     ("", "slip_augmentation_coefficient"): _FRICTIONAL,
     ("", "slip_threshold"): _FRICTIONAL,
     ("", "slip_step_reset_frequency"): _FRICTIONAL,
+}
+#: Keys accepted without effect (issue 18): (sub-block or "", key) -> why; warned when given a value
+#: other than the default (NoEffectWarnings).
+KEYS_WITHOUT_EFFECT = {
+    ("", "operator_threshold"): "no condition reads it: the frictional conditions always take the mortar operators "
+                                "of the last converged step as the previous ones",
     ("advance_ALM_parameters", "max_gap_factor"): "only the adaptive penalty (adapt_penalty) reads it, "
                                                   "which is not implemented",
     **{("advance_explicit_parameters", key): _EXPLICIT
        for key in ("manual_max_gap_theshold", "automatic_gap_factor", "max_gap_threshold", "max_gap_factor",
                    "logistic_exponent_factor")},
 }
+#: Kratos' frictional laws; only Coulomb's is implemented here.
+FRICTIONAL_LAWS = ("Coulomb", "Tresca")
+
+
+def is_pure_slip(formulation, contact_part) -> bool:
+    """Kratos' pure-slip detection (spec 4.4): the ``PureSlip`` formulations, or a frictional one
+    whose interface nodes (``contact_part``, built) all have a zero FRICTION_COEFFICIENT: nothing
+    can stick."""
+    if not formulation.frictional:
+        return False
+    if formulation.pure_slip:
+        return True
+    mus = contact_part.GetNodalNonHistoricalValues(_core.FRICTION_COEFFICIENT)
+    return bool((mus < sys.float_info.epsilon).all())
 
 
 class ALMContactProcess(SearchBaseProcess):
@@ -46,19 +67,24 @@ class ALMContactProcess(SearchBaseProcess):
     python_module = "alm_contact_process"
     penalty_multiplier = 1.0
     penalty_floor = 1.0
+    pure_slip = False  # decided at ExecuteInitialize, once the interface coefficients are known
+    _steps_since_slip_reset = 0
 
     def _check_types(self) -> None:
         contact_type = self.settings["contact_type"]
         # Kratos' "<type>WithNormalUpdate" asks for the normal update of
-        # no_derivatives_computation_with_normal_update; the formulation is <type>'s.
+        # no_derivatives_computation_with_normal_update; the formulation is <type>'s. Frictional
+        # types have it unless not_normal_update_frictional.
         name = contact_type.GetString()
         self.normal_update = name.endswith(NORMAL_UPDATE)
         base = name[:-len(NORMAL_UPDATE)] if self.normal_update else name
         self.formulation = _core.ContactFormulation.OfProcess(
             self.python_module, base, f"{self.python_module}: {contact_type.Where()} '{name}'")
+        self.frictional = self.formulation.frictional
+        if self.frictional and not self.settings["not_normal_update_frictional"].GetBool():
+            self.normal_update = True
         variation = self.settings["normal_variation"].GetString().lower()
         if variation not in NORMAL_VARIATIONS:
-            from ..utilities import nearest
             raise _core.InputError(f"{self.settings['normal_variation'].Where()}: unknown value '{variation}'"
                                    f"{nearest(variation, NORMAL_VARIATIONS)}")
         if self.normal_update and variation == "no_derivatives_computation":
@@ -66,11 +92,40 @@ class ALMContactProcess(SearchBaseProcess):
         self.normal_variation = variation
         self.axisymmetric = self.settings["alternative_formulations"]["axisymmetric"].GetBool()
         self.condition_stem = self.formulation.ConditionStem(variation in NORMAL_DERIVATIVES, self.axisymmetric)
-        warn_about_keys_without_effect(self.settings, self.GetDefaultParameters(), KEYS_WITHOUT_EFFECT)
+        without_effect = dict(KEYS_WITHOUT_EFFECT)
+        if not self.frictional:
+            without_effect.update(FRICTIONAL_KEYS_WITHOUT_EFFECT)
+        warn_about_keys_without_effect(self.settings, self.GetDefaultParameters(), without_effect)
         if self.settings["advance_ALM_parameters"]["adapt_penalty"].GetBool():
             raise _core.NotImplementedFeatureError(
                 f"{self.settings['advance_ALM_parameters'].Where()}.adapt_penalty: the adaptive penalty is not "
                 "implemented yet")
+        self._check_friction_settings()
+
+    def _check_friction_settings(self) -> None:
+        """The friction keys (spec 4.4), checked whatever the contact_type: a wrong value is wrong
+        input even where it has no effect."""
+        s = self.settings
+        law = s["frictional_law"].GetString()
+        if law not in FRICTIONAL_LAWS:
+            raise _core.InputError(f"{s['frictional_law'].Where()}: unknown frictional law '{law}'"
+                                   f"{nearest(law, FRICTIONAL_LAWS)} (valid: {', '.join(FRICTIONAL_LAWS)})")
+        if self.frictional and law != "Coulomb":
+            raise _core.NotImplementedFeatureError(
+                f"{s['frictional_law'].Where()}: the frictional law '{law}' is not implemented yet (only 'Coulomb')")
+        for key, low, high, closed in (("tangent_factor", 0.0, math.inf, False),
+                                       ("slip_augmentation_coefficient", 0.0, math.inf, True),
+                                       ("slip_threshold", 0.0, 1.0, True),
+                                       ("operator_threshold", 0.0, math.inf, True)):
+            _check_range(s[key], low, high, closed)
+        mus = s["friction_coefficients"]
+        for slot in mus.Keys():
+            _check_range(mus[slot], 0.0, math.inf, True)
+        reset = s["slip_step_reset_frequency"]
+        if self.frictional and reset.GetInt() < 0:
+            raise _core.NotImplementedFeatureError(
+                f"{reset.Where()}: {reset.GetInt()} (slip direction from WEIGHTED_SLIP) is not implemented yet; "
+                "use 0 (never reset the SLIP flags) or N > 0 (reset every N steps)")
 
     def check_solver_variables(self) -> None:
         """The solver registers its formulation before the mesh is read (spec 2.10): the process's
@@ -98,8 +153,16 @@ class ALMContactProcess(SearchBaseProcess):
         alm = self.settings["advance_ALM_parameters"]
         info.SetValue(_core.ADAPT_PENALTY, alm["adapt_penalty"].GetBool())
         info.SetValue(_core.MAX_GAP_FACTOR, alm["max_gap_factor"].GetDouble())
-        for name in ("ComputingContact", "Contact"):
-            self.root.GetSubModelPart(name).Set(_core.CONTACT, True)
+        # The conditions, criteria and strategy tell a frictional problem by the SLIP flag of the
+        # model parts (as Kratos does).
+        for part in (self.root, self.root.GetSubModelPart("Contact"), self.root.GetSubModelPart("ComputingContact")):
+            part.Set(_core.CONTACT, True)
+            part.Set(_core.SLIP, self.frictional)
+        self.pure_slip = is_pure_slip(self.formulation, self.root.GetSubModelPart("Contact"))
+        if self.frictional:
+            zero = [0.0, 0.0, 0.0]
+            for node in self.root.GetSubModelPart("Contact").Nodes:
+                node.SetValue(_core.AUGMENTED_TANGENT_CONTACT_PRESSURE, zero)
         if alm["manual_ALM"].GetBool():
             info.SetValue(_core.INITIAL_PENALTY, alm["penalty"].GetDouble())
             info.SetValue(_core.SCALE_FACTOR, alm["scale_factor"].GetDouble())
@@ -107,3 +170,30 @@ class ALMContactProcess(SearchBaseProcess):
             _core.ALMVariablesCalculationProcess(self.root, self.root.GetSubModelPart("Contact"), alm,
                                                  penalty_multiplier=self.penalty_multiplier,
                                                  penalty_floor=self.penalty_floor).Execute()
+
+    def ExecuteInitializeSolutionStep(self) -> None:
+        super().ExecuteInitializeSolutionStep()
+        self._reset_slip_flags()
+
+    def _reset_slip_flags(self) -> None:
+        """Every ``slip_step_reset_frequency`` steps the interface nodes start the step sticking
+        again (0: never); the active-set update decides anew. Not in pure slip."""
+        if not self.frictional or self.pure_slip:
+            return
+        frequency = self.settings["slip_step_reset_frequency"].GetInt()
+        if frequency <= 0:
+            return
+        self._steps_since_slip_reset += 1
+        if self._steps_since_slip_reset >= frequency:
+            for node in self.root.GetSubModelPart("Contact").Nodes:
+                node.Set(_core.SLIP, False)
+            self._steps_since_slip_reset = 0
+
+
+def _check_range(value, low: float, high: float, closed: bool) -> None:
+    """``value`` (a Parameters number) in [low, high) (``closed``) or (low, high)."""
+    number = value.GetDouble()
+    inside = (low <= number if closed else low < number) and number < high
+    if not inside:
+        bounds = f"{'[' if closed else '('}{low:g}, {high:g})"
+        raise _core.InputError(f"{value.Where()}: must be in {bounds}, got {number!r}")

@@ -96,12 +96,21 @@ class SearchBaseProcess(Process):
                                       self.settings["normal_check_proportion"].GetDouble())
             check_initial_overlap(interface, slot)
             properties = _core.ContactInterfaceBuilder.InterfaceProperties(self.root, slot)
+            self._check_friction_coefficient(slot, mu, properties)
             properties.SetValue(_core.INTEGRATION_ORDER_CONTACT, self.settings["integration_order"].GetInt())
             properties.SetValue(_core.CONSIDER_TESSELLATION, self.settings["consider_tessellation"].GetBool())
             properties.SetValue(_core.ACTIVE_CHECK_FACTOR, sp["active_check_factor"].GetDouble())
             self.searches.append(_core.ContactSearchProcess(
                 self.root, interface, sp, slot=slot, condition_name=self.condition_stem,
                 predefined_master_slave=bool(slaves), property_id=properties.Id))
+
+    def _check_friction_coefficient(self, slot: str, mu: float, properties) -> None:
+        """friction_coefficients[k] only fills a property without FRICTION_COEFFICIENT (spec 4.1):
+        say so when the materials' value wins over a different one given here."""
+        used = properties.GetValue(_core.FRICTION_COEFFICIENT)
+        if mu != 0.0 and used != mu:
+            warn(f"{self.settings['friction_coefficients'].Where()}.{slot}: {mu!r} is not used: the interface "
+                 f"property {properties.Id} already has FRICTION_COEFFICIENT {used!r} (from the materials)")
 
     def check_solver_variables(self) -> None:
         """Hook: the start-up check of the mortar_type pairing (spec 2.10)."""

@@ -1,6 +1,6 @@
-"""The frictionless Kratos CSMA reference cases (tests/cases/kratos_csma) and how to run them in
-either multiplier formulation; used by test_contact_cases.py and by
-benchmarks/kratos_cases/snapshot_kratos.py, which stores Kratos 10.4's values for the same runs."""
+"""The Kratos CSMA reference cases (tests/cases/kratos_csma): the frictionless ones and how to run
+them in either multiplier formulation, and the frictional ones; used by test_contact_cases.py and
+by benchmarks/kratos_cases/snapshot_kratos.py, which stores Kratos 10.4's values for the same runs."""
 from __future__ import annotations
 
 import json
@@ -18,6 +18,16 @@ FRICTIONLESS_CASES = [
     ("ALM_frictionless_contact_test_3D/3D_contact_simplest_patch_matching_triquad_test", ("scalar", "components")),
     ("ALM_frictionless_contact_test_2D/taylor_patch_dynamic_test", ("scalar", "components")),
     ("ALM_frictionless_contact_test_3D/3D_contact_simplest_patch_matching_test", ("scalar", "components")),
+]
+
+#: The frictional cases, run as written ("frictional": Kratos' suite switches no formulation).
+FRICTIONAL_CASES = [
+    ("ALM_frictional_contact_test_2D/hyper_simple_patch_test", ("frictional",)),
+    ("ALM_frictional_contact_test_2D/threshold_slip_hyper_simple_patch_test", ("frictional",)),
+    ("ALM_frictional_contact_test_2D/mesh_moving_matching_test", ("frictional",)),
+    ("ALM_frictional_contact_test_3D/friction_block_test", ("frictional",)),
+    ("penalty_frictional_contact_test_2D/hyper_simple_stick_patch_test", ("frictional",)),
+    ("penalty_frictional_contact_test_2D/hyper_simple_slip_patch_test", ("frictional",)),
 ]
 
 #: Cases whose reference time is never reached with their own time stepping: the reference file

@@ -667,6 +667,18 @@ def _(case):
     case.contact["search_parameters"] = {"active_check_factor": -1.0}
 
 
+@bad("contact_unknown_frictional_law", "contact", 2, "contact_parameters.json", "frictional_law", "'Colomb'",
+     "did you mean 'Coulomb'")
+def _(case):
+    case.contact["frictional_law"] = "Colomb"
+
+
+@bad("contact_negative_friction_coefficient", "contact", 2, "contact_parameters.json", "friction_coefficients.0",
+     "-0.2")
+def _(case):
+    case.contact["friction_coefficients"] = {"0": -0.2}
+
+
 @bad("contact_master_slave_not_in_contact_part", "contact", 2, "assume_master_slave push", "slave")
 def _(case):
     case.contact["assume_master_slave"] = {"0": ["push"]}

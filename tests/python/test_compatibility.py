@@ -25,7 +25,8 @@ def test_parameters_files_validate(path, monkeypatch):
     solver_settings = params["solver_settings"]
     contact = solver_settings["contact_settings"]["mortar_type"].GetString() \
         if solver_settings.Has("contact_settings") else ""
-    implemented = contact in ("", "ALMContactFrictionless", "PenaltyContactFrictionless") \
+    implemented = contact in ("", "ALMContactFrictionless", "PenaltyContactFrictionless", "ALMContactFrictional",
+                              "ALMContactFrictionalPureSlip", "PenaltyContactFrictional") \
         and not solver_settings.Has("mpc_contact_settings")
     if implemented:
         create_solver(mc.Model(), solver_settings)

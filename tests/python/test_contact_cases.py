@@ -14,11 +14,20 @@ import numpy as np
 import pytest
 
 import mortarcontact as mc
-from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
+from mortarcontact.analysis_stage import ConvergenceFailure, StructuralMechanicsAnalysis
 from mortarcontact.cases import hertz
+from mortarcontact.processes.from_json_check_result_process import CheckResultError
 from mortarcontact.project_parameters import read_project_parameters
 
-from csma_cases import CSMA_CASES, FRICTIONLESS_CASES, KRATOS_SNAPSHOTS, check_blocks, reference_values, use_components
+from csma_cases import (
+    CSMA_CASES,
+    FRICTIONAL_CASES,
+    FRICTIONLESS_CASES,
+    KRATOS_SNAPSHOTS,
+    check_blocks,
+    reference_values,
+    use_components,
+)
 
 HERTZ_RUNNER = os.path.join(os.path.dirname(__file__), "..", "..", "benchmarks", "hertz", "case_runner.py")
 
@@ -79,6 +88,7 @@ class SnapshotAnalysis(StructuralMechanicsAnalysis):
 
 
 def run_csma_case(case: str, formulation: str = "scalar"):
+    """Runs the case as written (``scalar``, ``frictional``) or switched to ``components``."""
     params = read_project_parameters(os.path.join(CSMA_CASES, f"{case}_parameters.json"))
     if formulation == "components":
         use_components(params)
@@ -133,6 +143,92 @@ def test_frictionless_case(csma_cases, monkeypatch, case, formulation):
     print(f"{name} ({formulation}): {sum(iterations)} Newton iterations in {len(iterations)} steps "
           f"(Kratos 10.4: {sum(kratos['newton_iterations'])}), difference to Kratos 10.4: {difference:.1e}")
     assert difference <= KRATOS_TOLERANCE[name]
+    assert len(iterations) == len(kratos["newton_iterations"])
+    assert sum(iterations) <= sum(kratos["newton_iterations"])
+
+
+# Issue 12. Kratos 10.4.4 itself differs from the frictional reference files (older revisions) by
+# FRICTIONAL_REFERENCE_GAP (worst_difference, measured with benchmarks/kratos_cases/snapshot_kratos.py);
+# ours is held to that gap plus 1e-3 against the reference, and to FRICTIONAL_KRATOS_TOLERANCE
+# against Kratos 10.4 on the same files. Kratos 10.4 cannot run the friction block (see
+# KRATOS_FAILS): there the reference file alone is the yardstick, at 1e-2.
+FRICTIONAL_REFERENCE_GAP = {
+    "hyper_simple_patch_test": 1.3e-2,
+    "threshold_slip_hyper_simple_patch_test": 5.6e-3,
+    "mesh_moving_matching_test": 6.4e-3,
+    "hyper_simple_stick_patch_test": 1.8e-6,
+    "hyper_simple_slip_patch_test": 1.7e-2,
+}
+FRICTIONAL_KRATOS_TOLERANCE = {
+    "hyper_simple_patch_test": 1e-3,
+    "threshold_slip_hyper_simple_patch_test": 1e-3,
+    "mesh_moving_matching_test": 1e-3,
+    "hyper_simple_stick_patch_test": 1e-4,
+    "hyper_simple_slip_patch_test": 1e-3,
+}
+KRATOS_FAILS = {"friction_block_test": "Kratos 10.4.4 stops at step 38 (t = 0.19): its linear solver finds the "
+                                       "matrix structurally singular (zero column 748)"}
+REFERENCE_ONLY_TOLERANCE = {"friction_block_test": 1e-2}
+#: Frictional cases that do not run yet: (what they raise, why).
+KNOWN_FAILURES = {
+    "hyper_simple_stick_patch_test": (mc.NotImplementedFeatureError, "advance_ALM_parameters.adapt_penalty (true in "
+                                                                     "this case) is not implemented"),
+    "hyper_simple_slip_patch_test": (ConvergenceFailure, "penalty friction: step 1 not converged in 10 iterations "
+                                                         "although |r_u|^2/|r_u0|^2 = 5.8e-11 and neither set changes "
+                                                         "(Kratos 10.4: 4 iterations); to investigate"),
+    "mesh_moving_matching_test": (CheckResultError, "pure slip on a moving mesh: its own json check fails at t = 1 "
+                                                    "(u_x of nodes 15, 20, 26 off by 2.6e-3, tolerance 1e-3); to "
+                                                    "investigate against Kratos 10.4, which meets the t = 17.3 "
+                                                    "reference to 6.4e-3"),
+    "friction_block_test": (CheckResultError, "3D friction block: REACTION_X at t = 0.1 about 1.56 times the "
+                                              "reference (-115.3 against -74.0 at node 4); to investigate (Kratos "
+                                              "10.4 cannot run it)"),
+}
+#: Hundreds of steps: run with -m slow.
+SLOW = {"mesh_moving_matching_test", "friction_block_test"}
+
+
+def _frictional_params(case: str):
+    name = os.path.basename(case)
+    marks = []
+    if name in KNOWN_FAILURES:
+        raises, reason = KNOWN_FAILURES[name]
+        marks.append(pytest.mark.xfail(strict=True, raises=raises, reason=reason))
+    if name in SLOW:
+        marks.append(pytest.mark.slow)
+    return pytest.param(case, id=name, marks=marks)
+
+
+@pytest.mark.parametrize("case", [_frictional_params(case) for case, _ in FRICTIONAL_CASES])
+def test_frictional_case(csma_cases, monkeypatch, case):
+    """The frictional Kratos cases (ALM stick/slip and threshold slip, ALM pure slip on a moving
+    mesh, the 3D friction block, penalty stick and slip) run unchanged, their own json checks pass,
+    and the checked values match the reference file and Kratos 10.4 on the same files, in no more
+    Newton iterations than Kratos 10.4."""
+    monkeypatch.chdir(csma_cases)
+    analysis, _ = run_csma_case(case, "frictional")
+    name = os.path.basename(case)
+    iterations = [it for _, _, it, _, _ in analysis.step_log]
+    assert all(converged for _, _, _, converged, _ in analysis.step_log)
+    reference = {}
+    for input_file, _, variables, _ in check_blocks(case):
+        with open(input_file) as f:
+            values = json.load(f)
+        for key, node in values.items():
+            if key.startswith("NODE_"):
+                reference.setdefault(key, {}).update({v: node[v][-1] for v in variables if v in node})
+    to_reference = worst_difference(analysis.snapshot, reference)
+    print(f"{name}: {sum(iterations)} Newton iterations in {len(iterations)} steps, difference to the "
+          f"reference {to_reference:.1e}")
+    if name in KRATOS_FAILS:
+        assert to_reference <= REFERENCE_ONLY_TOLERANCE[name]
+        return
+    assert to_reference <= FRICTIONAL_REFERENCE_GAP[name] + 1e-3
+    with open(os.path.join(KRATOS_SNAPSHOTS, f"{name}_frictional.json")) as f:
+        kratos = json.load(f)
+    to_kratos = worst_difference(analysis.snapshot, kratos["nodes"])
+    print(f"{name}: Kratos 10.4 {sum(kratos['newton_iterations'])} Newton iterations, difference {to_kratos:.1e}")
+    assert to_kratos <= FRICTIONAL_KRATOS_TOLERANCE[name]
     assert len(iterations) == len(kratos["newton_iterations"])
     assert sum(iterations) <= sum(kratos["newton_iterations"])
 

@@ -43,3 +43,11 @@ def test_one_branch_per_slave_node():
     # Per-node active/inactive branches, never 2^n combinations.
     text = (COMMITTED / "alm_frictionless_3d_4n_4n.cpp").read_text(encoding="utf-8")
     assert text.count("if (data.active[") == 2 * 4  # RHS and LHS, one per slave node
+    # Issue 12: frictional nodes are slip / stick / inactive, one if / else-if / else chain per
+    # slave node (never 3^n combinations).
+    for name in ("alm_frictional_3d_4n_4n.cpp", "penalty_frictional_3d_4n_4n.cpp"):
+        text = (COMMITTED / name).read_text(encoding="utf-8")
+        assert text.count("  if (data.active[") == 2 * 4, name
+        assert text.count("} else if (data.active[") == 2 * 4, name
+        for j in range(4):
+            assert text.count(f"if (data.active[{j}] && data.slip[{j}])") == 2, name

@@ -17,11 +17,11 @@
 
 namespace mc::test {
 
-/// Root model part with DISPLACEMENT, NORMAL, WEIGHTED_GAP and both multiplier variables.
+/// Root model part with DISPLACEMENT, NORMAL, WEIGHTED_GAP, WEIGHTED_SLIP and both multiplier variables.
 inline ModelPart& MakeContactModelPart(Model& model) {
   ModelPart& root = model.CreateModelPart("Structure");
   for (const VariableData* var : std::initializer_list<const VariableData*>{
-           &DISPLACEMENT, &REACTION, &NORMAL, &WEIGHTED_GAP, &LAGRANGE_MULTIPLIER_CONTACT_PRESSURE,
+           &DISPLACEMENT, &REACTION, &NORMAL, &WEIGHTED_GAP, &WEIGHTED_SLIP, &LAGRANGE_MULTIPLIER_CONTACT_PRESSURE,
            &VECTOR_LAGRANGE_MULTIPLIER, &WEIGHTED_SCALAR_RESIDUAL, &WEIGHTED_VECTOR_RESIDUAL})
     root.AddNodalSolutionStepVariable(*var);
   return root;
@@ -38,6 +38,24 @@ inline Node& MakeNode(ModelPart& part, IndexType id, const Array3& x) {
   node.AddDof(VECTOR_LAGRANGE_MULTIPLIER_Y, &WEIGHTED_VECTOR_RESIDUAL_Y);
   node.AddDof(VECTOR_LAGRANGE_MULTIPLIER_Z, &WEIGHTED_VECTOR_RESIDUAL_Z);
   return node;
+}
+
+/// Friction inputs for the frictional pair conditions: nodal FRICTION_COEFFICIENT on `nodes`,
+/// TANGENT_FACTOR and SLIP_AUGMENTATION_COEFFICIENT in the ProcessInfo.
+inline void SetFrictionParameters(ModelPart& root, const std::vector<Node*>& nodes, double c_slip = 0.3) {
+  int j = 0;
+  for (Node* node : nodes) node->SetValue(FRICTION_COEFFICIENT, 0.3 + 0.05 * j++);
+  root.GetProcessInfo().SetValue(TANGENT_FACTOR, 0.7);
+  root.GetProcessInfo().SetValue(SLIP_AUGMENTATION_COEFFICIENT, c_slip);
+}
+
+/// Stores the pair's previous mortar operators D_n, M_n (InitializeSolutionStep) with its master
+/// nodes moved by `offset`, so that the weighted slip of the current configuration is not zero.
+inline void InitializeWithMasterOffset(Condition& pair, const Geometry& master, const Array3& offset,
+                                       const ProcessInfo& info) {
+  for (Node* node : master.Nodes()) node->Coordinates() += offset;
+  pair.InitializeSolutionStep(info);
+  for (Node* node : master.Nodes()) node->Coordinates() -= offset;
 }
 
 }  // namespace mc::test

@@ -9,7 +9,9 @@
 //    2 master segments; 3D: a 2x2 quad or triangle slave patch vs a quad or triangle master patch),
 //    with mixed active / inactive nodes, equals central finite differences of the assembled
 //    residual whose normals follow the perturbed coordinates (ALM scalar, ALM components,
-//    penalty); the fixed-normal tangent of the plain conditions fails the same comparison;
+//    penalty; issue 12: ALM and penalty frictional with slip, stick and inactive nodes and a
+//    non-zero weighted slip); the fixed-normal tangent of the plain conditions fails the same
+//    comparison;
 //  - NV names resolve to real conditions whose DoF list ends with the neighbour displacements.
 #include <gtest/gtest.h>
 
@@ -79,8 +81,10 @@ struct Interface {
       node->SetValue(INITIAL_PENALTY, 12.0 + 3.0 * (j % 3));
       node->SetValue(DYNAMIC_FACTOR, 1.0 + 0.05 * j);
       node->Set(ACTIVE, j % 3 != 1);
+      node->Set(SLIP, j % 3 == 0);  // frictional: slip, inactive, stick, slip, ...
       ++j;
     }
+    SetFrictionParameters(root, SlaveNodes());
     Properties& properties = root.GetOrCreateProperties(1);
     properties.SetValue(INTEGRATION_ORDER_CONTACT, 3);
     root.GetProcessInfo().SetValue(INITIAL_PENALTY, 1.0);
@@ -303,6 +307,10 @@ void CheckAssembledTangent(const std::string& case_name) {
       owned_nv.back()->SetNodalNormalSupport(in.support);
       owned_nv.back()->Check(info);
       owned_fixed.push_back(MakePair<TFixed>(id++, gs, gm, properties));
+      // Frictional pairs: D_n, M_n with the master shifted (a non-zero weighted slip).
+      const Array3 offset = in.dim == 2 ? Array3(0.1, 0.01, 0.0) : Array3(0.08, -0.06, 0.01);
+      for (PairedCondition* pair : {owned_nv.back().get(), owned_fixed.back().get()})
+        InitializeWithMasterOffset(*pair, gm, offset, info);
     }
   }
   const Pairs nv = Pointers(owned_nv), fixed = Pointers(owned_fixed);
@@ -359,7 +367,9 @@ using ALM = Family<ALMFrictionlessMortarContactCondition, ALMNVFrictionlessMorta
 using Components =
     Family<ALMFrictionlessComponentsMortarContactCondition, ALMNVFrictionlessComponentsMortarContactCondition>;
 using Penalty = Family<PenaltyFrictionlessMortarContactCondition, PenaltyNVFrictionlessMortarContactCondition>;
-using Families = ::testing::Types<ALM, Components, Penalty>;
+using ALMFrictional = Family<ALMFrictionalMortarContactCondition, ALMNVFrictionalMortarContactCondition>;
+using PenaltyFrictional = Family<PenaltyFrictionalMortarContactCondition, PenaltyNVFrictionalMortarContactCondition>;
+using Families = ::testing::Types<ALM, Components, Penalty, ALMFrictional, PenaltyFrictional>;
 TYPED_TEST_SUITE(AssembledTangent, Families);
 
 TYPED_TEST(AssembledTangent, Lines2D) { TypeParam::Check("2D2N"); }
@@ -376,7 +386,8 @@ TEST(NormalVariationConditions, NamesResolveAndListNeighbourDofs) {
   const auto& registry = Registry<Condition>::Instance();
   for (const char* stem :
        {"ALMNVFrictionlessMortarContactCondition", "ALMNVFrictionlessComponentsMortarContactCondition",
-        "PenaltyNVFrictionlessMortarContactCondition"})
+        "PenaltyNVFrictionlessMortarContactCondition", "ALMNVFrictionalMortarContactCondition",
+        "PenaltyNVFrictionalMortarContactCondition"})
     for (const char* token : {"2D2N", "3D3N", "3D4N", "3D3N4N", "3D4N3N"}) {
       const std::string name = std::string(stem) + token;
       ASSERT_TRUE(registry.Has(name)) << name;

@@ -300,7 +300,8 @@ TEST(ContactConditionRegistry, NamesResolve) {
   RegisterContactConditions();  // idempotent
   const auto& registry = Registry<Condition>::Instance();
   for (const char* stem : {"ALMFrictionlessMortarContactCondition", "ALMFrictionlessComponentsMortarContactCondition",
-                           "PenaltyFrictionlessMortarContactCondition"})
+                           "PenaltyFrictionlessMortarContactCondition", "ALMFrictionalMortarContactCondition",
+                           "PenaltyFrictionalMortarContactCondition"})
     for (const char* token : {"2D2N", "3D3N", "3D4N", "3D3N4N", "3D4N3N"}) {
       const std::string name = std::string(stem) + token;
       ASSERT_TRUE(registry.Has(name)) << name;
@@ -327,8 +328,9 @@ TEST(ContactConditionRegistry, NamesResolve) {
 
   for (const char* name :
        {"ALMFrictionlessAxisymMortarContactCondition2D2N", "ALMNVFrictionlessAxisymMortarContactCondition2D2N",
-        "PenaltyFrictionlessAxisymMortarContactCondition2D2N",
-        "PenaltyNVFrictionlessAxisymMortarContactCondition2D2N"}) {
+        "PenaltyFrictionlessAxisymMortarContactCondition2D2N", "PenaltyNVFrictionlessAxisymMortarContactCondition2D2N",
+        "ALMFrictionalAxisymMortarContactCondition2D2N", "ALMNVFrictionalAxisymMortarContactCondition2D2N",
+        "PenaltyFrictionalAxisymMortarContactCondition2D2N", "PenaltyNVFrictionalAxisymMortarContactCondition2D2N"}) {
     ASSERT_TRUE(registry.Has(name)) << name;
     EXPECT_EQ(registry.Get(name).Info(), name);
   }

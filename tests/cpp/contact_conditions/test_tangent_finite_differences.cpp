@@ -1,22 +1,36 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Issue 3 (frictionless mortar contact conditions): the generated LHS of every condition
-// (ALM scalar, ALM components, penalty) x geometry (2D2N, 3D3N, 3D4N, 3D3N4N, 3D4N3N) x
-// active pattern (all active, all inactive, mixed) equals central finite differences of its RHS
-// with respect to every DoF (displacements perturbed with the coordinates, multipliers).
+// Issues 3 and 12 (mortar contact conditions): the generated LHS of every condition (ALM scalar,
+// ALM components, penalty; ALM and penalty Coulomb frictional) x geometry (2D2N, 3D3N, 3D4N,
+// 3D3N4N, 3D4N3N) x state pattern (all active, all inactive, mixed; frictional also all slip and
+// stick / slip) equals central finite differences of its RHS with respect to every DoF
+// (displacements perturbed with the coordinates, multipliers). The frictional pairs store their
+// previous mortar operators with the master offset, so that the weighted slip is not zero.
 #include <gtest/gtest.h>
 
 #include <array>
 #include <string>
+#include <type_traits>
 
 #include "contact_condition_test_utilities.h"
+#include "custom_conditions/alm_frictional_mortar_contact_condition.h"
 #include "custom_conditions/alm_frictionless_components_mortar_contact_condition.h"
 #include "custom_conditions/alm_frictionless_mortar_contact_condition.h"
+#include "custom_conditions/penalty_frictional_mortar_contact_condition.h"
 #include "custom_conditions/penalty_frictionless_mortar_contact_condition.h"
 
 namespace mc::test {
 namespace {
 
-enum class Pattern { kAllActive, kAllInactive, kMixed };
+// ACTIVE / SLIP per slave node i (frictionless conditions read ACTIVE only): all active and stick,
+// all inactive, mixed (active for even i, slip for i % 4 == 0), all slip, stick / slip (all active,
+// slip for even i).
+enum class Pattern { kAllActive, kAllInactive, kMixed, kAllSlip, kStickSlip };
+
+template <class TCondition>
+constexpr bool kFrictional = std::is_base_of_v<
+    FrictionalMortarContactCondition<TCondition::Kinematics::kDim, TCondition::Kinematics::kNumSlaveNodes,
+                                     TCondition::Kinematics::kNumMasterNodes>,
+    TCondition>;
 
 // Non-matching, slightly penetrating pairs with tilted nodal normals (so that M depends on them).
 struct PairGeometry {
@@ -65,8 +79,10 @@ struct Fixture {
       node.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER) = Array3(0.1 * i - 0.05, 0.2 - 0.1 * i, -0.8 - 0.1 * i);
       node.SetValue(INITIAL_PENALTY, 12.0 + 3.0 * i);
       node.SetValue(DYNAMIC_FACTOR, 1.0 + 0.1 * i);
-      const bool active = pattern == Pattern::kAllActive || (pattern == Pattern::kMixed && i % 2 == 0);
-      node.Set(ACTIVE, active);
+      const bool mixed = pattern == Pattern::kMixed;
+      node.Set(ACTIVE, pattern != Pattern::kAllInactive && (!mixed || i % 2 == 0));
+      node.Set(SLIP,
+               pattern == Pattern::kAllSlip || (pattern == Pattern::kStickSlip && i % 2 == 0) || (mixed && i % 4 == 0));
       slave.push_back(&node);
     }
     for (int l = 0; l < kMaster; ++l) master.push_back(&MakeNode(root, 10 + l, g.master[l]));
@@ -82,6 +98,11 @@ struct Fixture {
     ProcessInfo& info = root.GetProcessInfo();
     info.SetValue(INITIAL_PENALTY, 1.0);
     info.SetValue(SCALE_FACTOR, 2.5);
+    if constexpr (kFrictional<TCondition>) {
+      SetFrictionParameters(root, slave);
+      const Array3 offset = kDim == 2 ? Array3(0.12, 0.01, 0.0) : Array3(0.1, -0.07, 0.01);
+      InitializeWithMasterOffset(*pair, pair->GetPairedGeometry(), offset, info);
+    }
   }
 
   void CheckTangent() {
@@ -120,14 +141,18 @@ struct Cases {
   using ALM = ALMFrictionlessMortarContactCondition<D, S, M>;
   using Components = ALMFrictionlessComponentsMortarContactCondition<D, S, M>;
   using Penalty = PenaltyFrictionlessMortarContactCondition<D, S, M>;
+  using ALMFrictional = ALMFrictionalMortarContactCondition<D, S, M>;
+  using PenaltyFrictional = PenaltyFrictionalMortarContactCondition<D, S, M>;
 };
 
-using AllConditions =
-    ::testing::Types<Cases<2, 2, 2>::ALM, Cases<3, 3, 3>::ALM, Cases<3, 4, 4>::ALM, Cases<3, 3, 4>::ALM,
-                     Cases<3, 4, 3>::ALM, Cases<2, 2, 2>::Components, Cases<3, 3, 3>::Components,
-                     Cases<3, 4, 4>::Components, Cases<3, 3, 4>::Components, Cases<3, 4, 3>::Components,
-                     Cases<2, 2, 2>::Penalty, Cases<3, 3, 3>::Penalty, Cases<3, 4, 4>::Penalty, Cases<3, 3, 4>::Penalty,
-                     Cases<3, 4, 3>::Penalty>;
+using AllConditions = ::testing::Types<
+    Cases<2, 2, 2>::ALM, Cases<3, 3, 3>::ALM, Cases<3, 4, 4>::ALM, Cases<3, 3, 4>::ALM, Cases<3, 4, 3>::ALM,
+    Cases<2, 2, 2>::Components, Cases<3, 3, 3>::Components, Cases<3, 4, 4>::Components, Cases<3, 3, 4>::Components,
+    Cases<3, 4, 3>::Components, Cases<2, 2, 2>::Penalty, Cases<3, 3, 3>::Penalty, Cases<3, 4, 4>::Penalty,
+    Cases<3, 3, 4>::Penalty, Cases<3, 4, 3>::Penalty, Cases<2, 2, 2>::ALMFrictional, Cases<3, 3, 3>::ALMFrictional,
+    Cases<3, 4, 4>::ALMFrictional, Cases<3, 3, 4>::ALMFrictional, Cases<3, 4, 3>::ALMFrictional,
+    Cases<2, 2, 2>::PenaltyFrictional, Cases<3, 3, 3>::PenaltyFrictional, Cases<3, 4, 4>::PenaltyFrictional,
+    Cases<3, 3, 4>::PenaltyFrictional, Cases<3, 4, 3>::PenaltyFrictional>;
 TYPED_TEST_SUITE(TangentTest, AllConditions);
 
 TYPED_TEST(TangentTest, AllActive) { Fixture<TypeParam>(Pattern::kAllActive).CheckTangent(); }
@@ -145,6 +170,19 @@ TYPED_TEST(TangentTest, AllInactive) {
   fixture.CheckTangent();
 }
 TYPED_TEST(TangentTest, Mixed) { Fixture<TypeParam>(Pattern::kMixed).CheckTangent(); }
+TYPED_TEST(TangentTest, AllSlip) {
+  if (!kFrictional<TypeParam>) GTEST_SKIP() << "frictionless";
+  Fixture<TypeParam> fixture(Pattern::kAllSlip);
+  fixture.CheckTangent();
+  // The weighted slip (the penalty slip direction, part of the ALM one) is not zero at any node.
+  fixture.pair->AddExplicitContribution(fixture.root.GetProcessInfo());
+  for (Node* node : fixture.pair->GetGeometry().Nodes())
+    EXPECT_GT(node->FastGetSolutionStepValue(WEIGHTED_SLIP).norm(), 1e-3) << "node " << node->Id();
+}
+TYPED_TEST(TangentTest, StickSlip) {
+  if (!kFrictional<TypeParam>) GTEST_SKIP() << "frictionless";
+  Fixture<TypeParam>(Pattern::kStickSlip).CheckTangent();
+}
 
 // The kinematics behind the tangent really has an overlap and non-trivial operator derivatives,
 // so that the test above exercises the chain rule through D, M and the gap.

@@ -90,10 +90,27 @@ TEST(ContactInterface, Patch3DAutomaticRolesAndNormals) {
   }
   EXPECT_EQ(root.GetProperties(7).GetValue(FRICTION_COEFFICIENT), 0.3);
   for (const Node* node : sub.Nodes()) {
+    EXPECT_EQ(node->GetValue(FRICTION_COEFFICIENT), 0.3);  // what the frictional conditions read
     const double expected = node->Z() > 0.999995 ? 1.0 : -1.0;
     EXPECT_NEAR((NormalCalculationUtilities::GetNodalNormal(*node) - Array3(0, 0, expected)).norm(), 0.0, 1e-14);
     EXPECT_DOUBLE_EQ(node->FastGetSolutionStepValue(NODAL_H), 1.0);
   }
+}
+
+TEST(ContactInterface, FrictionCoefficientOfTheMaterialsWinsOverTheProcessOne) {
+  // As materials.json does: the bodies' property carries FRICTION_COEFFICIENT; the new interface
+  // property copies it and friction_coefficients[k] is only the fallback (spec 4.1).
+  Model model;
+  ModelPart& root = test::ReadPatch2D(model);
+  for (Element* element : root.Elements()) element->GetProperties().SetValue(FRICTION_COEFFICIENT, 0.01);
+  ContactInterfaceSettings settings;
+  settings.parts = {"Contact_Part"};
+  settings.slave_parts = {"Parts_Parts_Auto2"};
+  settings.friction_coefficient = 0.5;
+  ModelPart& sub = ContactInterfaceBuilder(root).Build(settings);
+  EXPECT_EQ(root.GetProperties(100).GetValue(FRICTION_COEFFICIENT), 0.01);
+  ASSERT_EQ(sub.NumberOfNodes(), 4u);
+  for (const Node* node : sub.Nodes()) EXPECT_EQ(node->GetValue(FRICTION_COEFFICIENT), 0.01);
 }
 
 TEST(ContactInterface, TriQuadFacesOfTetrahedraAndHexahedron) {

@@ -70,5 +70,21 @@ TEST(ContactOutputs, OpenNodesKeepTheirAugmentedPressureWhenNotCleared) {
   EXPECT_DOUBLE_EQ(s.N(2).GetValue(CONTACT_PRESSURE), 0.0);
 }
 
+TEST(ContactOutputs, TangentialStressIsTheAugmentedTangentPressureOfActiveNodes) {
+  // Issue 12: frictional runs store the augmented tangent pressure (stress units) per node.
+  Interface s;
+  s.N(1).SetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE, Array3(3.0, 0.0, -4.0));
+  s.N(2).SetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE, Array3(1.0, 0.0, 0.0));
+  ComputeContactOutputs(s.contact, true);
+  EXPECT_DOUBLE_EQ(s.N(1).GetValue(TANGENTIAL_CONTACT_STRESS), 5.0);
+  EXPECT_DOUBLE_EQ(s.N(1).GetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE).norm(), 5.0);
+  // Open: no traction, and the tangent indicator cleared like the normal one.
+  EXPECT_DOUBLE_EQ(s.N(2).GetValue(TANGENTIAL_CONTACT_STRESS), 0.0);
+  EXPECT_DOUBLE_EQ(s.N(2).GetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE).norm(), 0.0);
+  s.N(2).SetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE, Array3(1.0, 0.0, 0.0));
+  ComputeContactOutputs(s.contact, false);
+  EXPECT_DOUBLE_EQ(s.N(2).GetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE)[0], 1.0);
+}
+
 }  // namespace
 }  // namespace mc

@@ -1,0 +1,53 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""Augmented Lagrangian Coulomb frictional mortar contact (derivation in README.md).
+
+Vector multiplier lambda_j; lbar_n = k n.lambda + eps g is the augmented normal pressure and
+T(v) = v - n (n.v) the tangential part at slave node j."""
+
+from codegen import dot
+
+FAMILY = "alm_frictional"
+FUNCTION = "ALMFrictional"
+VECTOR_MULTIPLIER = True
+MULTIPLIERS = True
+FRICTIONAL = True
+
+
+def _normal_pressure(sym, j):
+    return sym.k * dot(sym.n1[j], sym.lm[j]) + sym.eps[j] * sym.weighted_gap(j)
+
+
+def stick(sym, j):
+    """Stick: the augmented traction lbar_n n + lbar_t (lbar_t = k T(lambda) + c_tau eps s) against
+    the virtual jump, the normal constraint k g (n . wl) and the stick constraint k s . T(wl)."""
+    n, s = sym.n1[j], sym.weighted_slip(j)
+    traction = [sym.k * lc + sym.eps[j] * sym.weighted_gap(j) * nc + sym.ct * sym.eps[j] * sc
+                for lc, nc, sc in zip(sym.lm[j], n, s)]
+    work = dot(traction, sym.test_jump(j))
+    normal_constraint = sym.k * sym.weighted_gap(j) * dot(n, sym.wl[j])
+    stick_constraint = sym.k * dot(s, sym.tangential(j, sym.wl[j]))
+    return sym.df[j] * work + normal_constraint + stick_constraint
+
+
+def slip(sym, j):
+    """Slip: the Coulomb traction lbar_n n - mu lbar_n d (d = lbar_t / |lbar_t|, lbar_t = k T(lambda)
+    + c_slip c_tau eps s) against the virtual jump, the normal constraint and the tangential
+    constraint -k^2/(c_tau eps) T(wl) . (T(lambda) + mu lbar_n d / k) driving k T(lambda) to the
+    Coulomb limit."""
+    n, s = sym.n1[j], sym.weighted_slip(j)
+    pressure = _normal_pressure(sym, j)
+    lm_t = sym.tangential(j, sym.lm[j])
+    augmented_t = [sym.k * lc + sym.cs * sym.ct * sym.eps[j] * sc for lc, sc in zip(lm_t, s)]
+    direction = sym.direction(j, augmented_t)
+    traction = [pressure * nc - sym.mu[j] * pressure * dc for nc, dc in zip(n, direction)]
+    work = dot(traction, sym.test_jump(j))
+    normal_constraint = sym.k * sym.weighted_gap(j) * dot(n, sym.wl[j])
+    limit = [lc + sym.mu[j] * pressure * dc / sym.k for lc, dc in zip(lm_t, direction)]
+    tangential = -(sym.k**2 / (sym.ct * sym.eps[j])) * dot(sym.tangential(j, sym.wl[j]), limit)
+    return sym.df[j] * work + normal_constraint + tangential
+
+
+def inactive(sym, j):
+    """Gap zone: every component of the multiplier is driven to zero."""
+    return -sym.k**2 / sym.eps[j] * dot(sym.lm[j], sym.wl[j])
+

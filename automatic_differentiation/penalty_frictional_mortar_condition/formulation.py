@@ -1,0 +1,31 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""Penalty Coulomb frictional mortar contact (derivation in README.md)."""
+
+from codegen import dot
+
+FAMILY = "penalty_frictional"
+FUNCTION = "PenaltyFrictional"
+VECTOR_MULTIPLIER = False
+MULTIPLIERS = False
+FRICTIONAL = True
+
+
+def stick(sym, j):
+    """Stick: the penalty traction eps g n + c_tau eps s against the virtual jump."""
+    eps, g = sym.eps[j], sym.weighted_gap(j)
+    traction = [eps * g * nc + sym.ct * eps * sc for nc, sc in zip(sym.n1[j], sym.weighted_slip(j))]
+    return sym.df[j] * dot(traction, sym.test_jump(j))
+
+
+def slip(sym, j):
+    """Slip: the Coulomb traction eps g n - mu eps g d, d = s / |s| (the direction of the augmented
+    tangent pressure c_tau eps s), against the virtual jump."""
+    eps, g, s = sym.eps[j], sym.weighted_gap(j), sym.weighted_slip(j)
+    direction = sym.direction(j, s)
+    traction = [eps * g * nc - sym.mu[j] * eps * g * dc for nc, dc in zip(sym.n1[j], direction)]
+    return sym.df[j] * dot(traction, sym.test_jump(j))
+
+
+def inactive(sym, j):
+    """Open node: no contribution."""
+    return 0

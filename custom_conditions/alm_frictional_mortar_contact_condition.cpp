@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "custom_conditions/alm_frictional_mortar_contact_condition.h"
+
+#include "custom_conditions/generated/mortar_kernels.h"
+#include "custom_utilities/mortar_geometry_cases.h"
+
+namespace mc {
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+std::unique_ptr<Condition> ALMFrictionalMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::Create(
+    IndexType id, Geometry::NodesArray nodes, Properties* properties) const {
+  return this->CreateOfType(*this, id, std::move(nodes), properties);
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+std::unique_ptr<PairedCondition> ALMFrictionalMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::CreatePaired(
+    IndexType id, Condition& slave, Condition& master, Properties* properties) const {
+  return this->template CreatePairedOfType<ALMFrictionalMortarContactCondition>(id, slave, master, properties);
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+Eigen::Matrix<double, TDim, 1>
+ALMFrictionalMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::AugmentedTangentPressure(const Data& data,
+                                                                                                int j) const {
+  const Eigen::Matrix<double, TDim, 1> n = data.kinematics->slave_normals.row(j).transpose();
+  const Eigen::Matrix<double, TDim, 1> lambda = data.vector_multiplier.row(j).transpose();
+  return data.scale_factor * (lambda - n * n.dot(lambda)) +
+         data.slip_augmentation * data.tangent_factor * data.penalty(j) * data.weighted_slip.row(j).transpose();
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+void ALMFrictionalMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::AddRHS(const Data& data,
+                                                                                   Vector& rhs) const {
+  generated::ALMFrictionalRHS(data, rhs);
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+void ALMFrictionalMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::AddLHS(const Data& data, Matrix& lhs,
+                                                                                   Matrix* normal_sensitivity) const {
+  generated::ALMFrictionalLHS(data, lhs, normal_sensitivity);
+}
+
+#define MC_INSTANTIATE(D, S, M) template class ALMFrictionalMortarContactCondition<D, S, M>;
+MC_FOR_EACH_MORTAR_CASE(MC_INSTANTIATE)
+#undef MC_INSTANTIATE
+
+}  // namespace mc

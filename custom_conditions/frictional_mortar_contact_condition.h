@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Signs as in mortar_contact_condition.h; the weighted slip s_j (WEIGHTED_SLIP) is the weighted
+// tangential motion of the master relative to the slave: a slave sliding by a over a fixed master
+// gives s_j ~ -D_jj a, so that the stick traction c_tau eps s_j resists the motion.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "custom_conditions/mortar_contact_condition.h"
+#include "custom_utilities/mortar_geometry_cases.h"
+
+namespace mc {
+
+/// What the Coulomb frictional mortar conditions (ALM and penalty) add to MortarContactCondition
+/// (Gitterle, Popp, Gee, Wall 2010; thesis of V. Mataix Ferrandiz 2020, sec. 4.3.4):
+///  - the mortar operators D_n, M_n of the last converged configuration, stored by the pair at
+///    InitializeSolutionStep (before the predictor, so from the converged coordinates; on the first
+///    step those of the initial configuration). A pair created later in the step (a new search)
+///    computes them on first use from the coordinates of the previous step (X0 + DISPLACEMENT at
+///    buffer index 1, the current coordinates with a buffer of 1) and the current normals;
+///  - the weighted slip s_j = T_j [(D - D_n) x1 - (M - M_n) x2]_j, T_j = I - n_j n_j^T, an input of
+///    the kernels and, summed over the pairs of a node, the explicit nodal WEIGHTED_SLIP;
+///  - the per-node branch: an ACTIVE node is slip if it is SLIP and its augmented tangent pressure
+///    (the slip direction) is non-zero, else stick; an inactive node is inactive.
+///
+/// Parameters: mu_j = the slave node's FRICTION_COEFFICIENT if it has one, else the pair's
+/// properties' (an error if neither); c_tau = ProcessInfo[TANGENT_FACTOR] (required, positive);
+/// c_slip = ProcessInfo[SLIP_AUGMENTATION_COEFFICIENT] (0 when absent).
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+class FrictionalMortarContactCondition : public MortarContactCondition<TDim, TNumNodes, TNumNodesMaster> {
+ public:
+  using Base = MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>;
+  using Data = typename Base::Data;
+  using Kinematics = typename Base::Kinematics;
+  using Base::Base;
+
+  /// Stores D_n, M_n from the current (last converged) configuration.
+  void InitializeSolutionStep(const ProcessInfo& info) override;
+  /// The base checks; slave nodes carry WEIGHTED_SLIP and a friction coefficient, c_tau > 0.
+  void Check(const ProcessInfo& info) const override;
+
+ protected:
+  /// The augmented tangent pressure of slave node j, whose direction is the slip direction.
+  virtual Eigen::Matrix<double, TDim, 1> AugmentedTangentPressure(const Data& data, int j) const = 0;
+
+  void CompleteKernelData(Data& data, const ProcessInfo& info) override;
+  /// Adds the pair's weighted slip to WEIGHTED_SLIP of its slave nodes (atomic; zeroed by the caller).
+  void AddExplicitNodalValues(const Kinematics& kinematics, const ProcessInfo& info) override;
+
+ private:
+  /// D_n, M_n of the configuration x1, x2 (values only, a kinematics object of its own).
+  void StorePreviousOperators(const typename Kinematics::SlaveMatrix& x1, const typename Kinematics::MasterMatrix& x2,
+                              const ProcessInfo& info);
+  /// Computes D_n, M_n from the previous step's coordinates if the pair has none yet.
+  void EnsurePreviousOperators(const ProcessInfo& info);
+  double FrictionCoefficient(const Node& node) const;
+  double TangentFactor(const ProcessInfo& info) const;
+
+  typename Kinematics::DMatrix previous_D_ = Kinematics::DMatrix::Zero();
+  typename Kinematics::MMatrix previous_M_ = Kinematics::MMatrix::Zero();
+  bool has_previous_ = false;
+};
+
+#define MC_EXTERN(D, S, M) extern template class FrictionalMortarContactCondition<D, S, M>;
+MC_FOR_EACH_MORTAR_CASE(MC_EXTERN)
+#undef MC_EXTERN
+
+}  // namespace mc

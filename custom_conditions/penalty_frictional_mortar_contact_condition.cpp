@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "custom_conditions/penalty_frictional_mortar_contact_condition.h"
+
+#include "custom_conditions/generated/mortar_kernels.h"
+#include "custom_utilities/mortar_geometry_cases.h"
+
+namespace mc {
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+std::unique_ptr<Condition> PenaltyFrictionalMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::Create(
+    IndexType id, Geometry::NodesArray nodes, Properties* properties) const {
+  return this->CreateOfType(*this, id, std::move(nodes), properties);
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+std::unique_ptr<PairedCondition>
+PenaltyFrictionalMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::CreatePaired(IndexType id, Condition& slave,
+                                                                                        Condition& master,
+                                                                                        Properties* properties) const {
+  return this->template CreatePairedOfType<PenaltyFrictionalMortarContactCondition>(id, slave, master, properties);
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+Eigen::Matrix<double, TDim, 1>
+PenaltyFrictionalMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::AugmentedTangentPressure(const Data& data,
+                                                                                                    int j) const {
+  return data.tangent_factor * data.penalty(j) * data.weighted_slip.row(j).transpose();
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+void PenaltyFrictionalMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::AddRHS(const Data& data,
+                                                                                       Vector& rhs) const {
+  generated::PenaltyFrictionalRHS(data, rhs);
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+void PenaltyFrictionalMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::AddLHS(
+    const Data& data, Matrix& lhs, Matrix* normal_sensitivity) const {
+  generated::PenaltyFrictionalLHS(data, lhs, normal_sensitivity);
+}
+
+#define MC_INSTANTIATE(D, S, M) template class PenaltyFrictionalMortarContactCondition<D, S, M>;
+MC_FOR_EACH_MORTAR_CASE(MC_INSTANTIATE)
+#undef MC_INSTANTIATE
+
+}  // namespace mc

@@ -1,0 +1,148 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Issue 12 (Coulomb frictional mortar conditions), on a flat 2D patch: a slave line y = 0 (body
+// below, normals +y) of two segments, pressed by 0.01 into a non-matching master line of two
+// segments; every slave node ACTIVE. The pairs store D_n, M_n at InitializeSolutionStep.
+//  - stick patch: after a rigid rotation and translation of both bodies the weighted slip is zero
+//    (frame indifference) and so is every tangential force, while the normal force is not;
+//  - sliding patch: with the master moved along the interface, the stick force resists the
+//    relative motion, and in slip the total tangential force is mu times the total normal force,
+//    dragging the slave along with the master (ALM with c_slip = 1 and a normal multiplier, so that
+//    the slip direction comes from the weighted slip; penalty).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "contact_condition_test_utilities.h"
+#include "custom_conditions/alm_frictional_mortar_contact_condition.h"
+#include "custom_conditions/penalty_frictional_mortar_contact_condition.h"
+
+namespace mc::test {
+namespace {
+
+constexpr double kMu = 0.3;
+
+template <class TCondition>
+struct Patch {
+  Model model;
+  ModelPart& root = MakeContactModelPart(model);
+  std::vector<Node*> slave, master;
+  std::vector<std::unique_ptr<TCondition>> pairs;
+
+  explicit Patch(bool slip) {
+    for (int i = 0; i < 3; ++i) slave.push_back(&MakeNode(root, 1 + i, Array3(1.0 * i, 0.0, 0.0)));
+    // Facing the slave: listed right to left, 0.01 below y = 0 (penetrating).
+    const double xm[] = {2.6, 1.3, -0.6};
+    for (int l = 0; l < 3; ++l) master.push_back(&MakeNode(root, 11 + l, Array3(xm[l], -0.01, 0.0)));
+    SetFrictionParameters(root, slave, 1.0);
+    for (Node* node : slave) {
+      NormalCalculationUtilities::SetNodalNormal(*node, Array3(0.0, 1.0, 0.0));
+      node->FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER) = Array3(0.0, -0.5, 0.0);
+      node->SetValue(INITIAL_PENALTY, 100.0);
+      node->SetValue(FRICTION_COEFFICIENT, kMu);
+      node->Set(ACTIVE, true);
+      node->Set(SLIP, slip);
+    }
+    Properties& properties = root.GetOrCreateProperties(1);
+    root.GetProcessInfo().SetValue(SCALE_FACTOR, 2.0);
+    IndexType id = 1;
+    for (int s = 0; s < 2; ++s)
+      for (int m = 0; m < 2; ++m)
+        pairs.push_back(std::make_unique<TCondition>(id++, Geometry(GeometryType::Line2D2, {slave[s], slave[s + 1]}),
+                                                     &properties,
+                                                     Geometry(GeometryType::Line2D2, {master[m], master[m + 1]})));
+    for (auto& pair : pairs) pair->InitializeSolutionStep(root.GetProcessInfo());
+  }
+
+  /// Moves every node (and the slave normals) by x -> R x + t.
+  void Move(const std::vector<Node*>& nodes, double angle, const Array3& t) {
+    Eigen::Matrix3d r = Eigen::Matrix3d::Identity();
+    r.topLeftCorner<2, 2>() << std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle);
+    for (Node* node : nodes) {
+      node->Coordinates() = r * node->Coordinates() + t;
+      node->FastGetSolutionStepValue(DISPLACEMENT) = node->Coordinates() - node->X0();
+      if (node->Id() < 10) {
+        NormalCalculationUtilities::SetNodalNormal(*node, r * NormalCalculationUtilities::GetNodalNormal(*node));
+        node->FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER) =
+            r * Array3(node->FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER));
+      }
+    }
+  }
+
+  /// Assembled force on each slave node (displacement rows of the RHS) and the multiplier rows.
+  void Forces(std::vector<Array3>& force, std::vector<Array3>& multiplier_rows) {
+    force.assign(3, Array3::Zero());
+    multiplier_rows.assign(3, Array3::Zero());
+    const ProcessInfo& info = root.GetProcessInfo();
+    for (auto& pair : pairs) {
+      pair->Check(info);
+      Vector rhs;
+      pair->CalculateRightHandSide(rhs, info);
+      const int components = (rhs.size() - 8) / 2;  // 2 master + 2 slave nodes x 2 components first
+      for (int i = 0; i < 2; ++i) {
+        const int node = static_cast<int>(pair->GetGeometry()[i].Id()) - 1;
+        force[node].head<2>() += rhs.segment<2>(4 + 2 * i);
+        if (components > 0) multiplier_rows[node].head<2>() += rhs.segment<2>(8 + 2 * i);
+      }
+    }
+  }
+
+  std::vector<Node*> AllNodes() const {
+    std::vector<Node*> nodes = slave;
+    nodes.insert(nodes.end(), master.begin(), master.end());
+    return nodes;
+  }
+};
+
+template <class TCondition>
+class FrictionalPatch : public ::testing::Test {};
+using Conditions =
+    ::testing::Types<ALMFrictionalMortarContactCondition<2, 2, 2>, PenaltyFrictionalMortarContactCondition<2, 2, 2>>;
+TYPED_TEST_SUITE(FrictionalPatch, Conditions);
+
+TYPED_TEST(FrictionalPatch, RigidMotionGivesNoTangentialForce) {
+  Patch<TypeParam> patch(false);
+  patch.Move(patch.AllNodes(), 0.4, Array3(0.3, -0.2, 0.0));
+  for (auto& pair : patch.pairs) pair->AddExplicitContribution(patch.root.GetProcessInfo());
+  std::vector<Array3> force, multiplier_rows;
+  patch.Forces(force, multiplier_rows);
+  double normal = 0.0;
+  for (int j = 0; j < 3; ++j) {
+    const Node& node = *patch.slave[j];
+    const Array3 n = NormalCalculationUtilities::GetNodalNormal(node);
+    EXPECT_LE(node.FastGetSolutionStepValue(WEIGHTED_SLIP).norm(), 1e-14) << "node " << node.Id();
+    normal = std::max(normal, std::abs(force[j].dot(n)));
+    EXPECT_LE((force[j] - n * n.dot(force[j])).norm(), 1e-12) << "node " << node.Id();
+    EXPECT_LE((multiplier_rows[j] - n * n.dot(multiplier_rows[j])).norm(), 1e-12) << "node " << node.Id();
+  }
+  EXPECT_GT(normal, 0.1);
+}
+
+TYPED_TEST(FrictionalPatch, StickResistsSliding) {
+  Patch<TypeParam> patch(false);
+  patch.Move(patch.master, 0.0, Array3(0.05, 0.0, 0.0));
+  std::vector<Array3> force, multiplier_rows;
+  patch.Forces(force, multiplier_rows);
+  // The master moved +x: the stick force drags the slave along +x.
+  double tangential = 0.0;
+  for (const Array3& f : force) tangential += f[0];
+  EXPECT_GT(tangential, 1e-3);
+}
+
+TYPED_TEST(FrictionalPatch, SlipForceIsMuTimesNormalForce) {
+  Patch<TypeParam> patch(true);
+  patch.Move(patch.master, 0.0, Array3(0.05, 0.0, 0.0));
+  std::vector<Array3> force, multiplier_rows;
+  patch.Forces(force, multiplier_rows);
+  Array3 total = Array3::Zero();
+  for (int j = 0; j < 3; ++j) {
+    EXPECT_NEAR(std::abs(force[j][0]), kMu * std::abs(force[j][1]), 1e-12) << "node " << patch.slave[j]->Id();
+    total += force[j];
+  }
+  EXPECT_GT(std::abs(total[1]), 0.1);
+  EXPECT_NEAR(total[0], kMu * std::abs(total[1]), 1e-12 * std::abs(total[1]));  // along the master's motion
+}
+
+}  // namespace
+}  // namespace mc::test
