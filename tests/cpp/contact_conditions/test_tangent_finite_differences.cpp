@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Issues 3 and 12 (mortar contact conditions): the generated LHS of every condition (ALM scalar,
 // ALM components, penalty; ALM and penalty Coulomb frictional) x geometry (2D2N, 3D3N, 3D4N,
-// 3D3N4N, 3D4N3N) x state pattern (all active, all inactive, mixed; frictional also all slip and
-// stick / slip) equals central finite differences of its RHS with respect to every DoF
-// (displacements perturbed with the coordinates, multipliers). The frictional pairs store their
-// previous mortar operators with the master offset, so that the weighted slip is not zero.
+// 3D3N4N, 3D4N3N; the frictional 2D2N also axisymmetric) x state pattern (all active, all inactive, mixed; frictional
+// also all slip and stick / slip) equals central finite differences of its RHS with respect to every DoF (displacements
+// perturbed with the coordinates, multipliers). The frictional pairs store their previous mortar operators with the
+// master offset, so that the weighted slip is not zero.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -15,6 +15,7 @@
 #include "custom_conditions/alm_frictional_mortar_contact_condition.h"
 #include "custom_conditions/alm_frictionless_components_mortar_contact_condition.h"
 #include "custom_conditions/alm_frictionless_mortar_contact_condition.h"
+#include "custom_conditions/axisymmetric_mortar_contact_condition.h"
 #include "custom_conditions/penalty_frictional_mortar_contact_condition.h"
 #include "custom_conditions/penalty_frictionless_mortar_contact_condition.h"
 
@@ -152,7 +153,8 @@ using AllConditions = ::testing::Types<
     Cases<3, 3, 4>::Penalty, Cases<3, 4, 3>::Penalty, Cases<2, 2, 2>::ALMFrictional, Cases<3, 3, 3>::ALMFrictional,
     Cases<3, 4, 4>::ALMFrictional, Cases<3, 3, 4>::ALMFrictional, Cases<3, 4, 3>::ALMFrictional,
     Cases<2, 2, 2>::PenaltyFrictional, Cases<3, 3, 3>::PenaltyFrictional, Cases<3, 4, 4>::PenaltyFrictional,
-    Cases<3, 3, 4>::PenaltyFrictional, Cases<3, 4, 3>::PenaltyFrictional>;
+    Cases<3, 3, 4>::PenaltyFrictional, Cases<3, 4, 3>::PenaltyFrictional,
+    ALMFrictionalAxisymMortarContactCondition<2, 2, 2>, PenaltyFrictionalAxisymMortarContactCondition<2, 2, 2>>;
 TYPED_TEST_SUITE(TangentTest, AllConditions);
 
 TYPED_TEST(TangentTest, AllActive) { Fixture<TypeParam>(Pattern::kAllActive).CheckTangent(); }
