@@ -8,6 +8,7 @@
 //    relative motion, and in slip the total tangential force is mu times the total normal force,
 //    dragging the slave along with the master (ALM with c_slip = 1 and a normal multiplier, so that
 //    the slip direction comes from the weighted slip; penalty);
+//  - a pair created within the step takes D_n, M_n from the previous step's coordinates;
 //  - a missing TANGENT_FACTOR or FRICTION_COEFFICIENT is an input error naming it.
 #include <gtest/gtest.h>
 
@@ -145,6 +146,33 @@ TYPED_TEST(FrictionalPatch, SlipForceIsMuTimesNormalForce) {
   }
   EXPECT_GT(std::abs(total[1]), 0.1);
   EXPECT_NEAR(total[0], kMu * std::abs(total[1]), 1e-12 * std::abs(total[1]));  // along the master's motion
+}
+
+// A pair created after InitializeSolutionStep (a new search within the step) takes D_n, M_n from
+// the previous step's coordinates X0 + DISPLACEMENT(1): the same weighted slip as a pair that
+// stored them at the start of the step.
+TEST(FrictionalPreviousOperators, PairCreatedLaterUsesThePreviousStepCoordinates) {
+  using Pair = PenaltyFrictionalMortarContactCondition<2, 2, 2>;
+  Patch<Pair> patch(false);  // its pairs stored D_n, M_n in the initial configuration
+  patch.root.SetBufferSize(2);
+  for (Node* node : patch.AllNodes()) node->FastGetSolutionStepValue(DISPLACEMENT, 1) = Array3::Zero();
+  patch.Move(patch.master, 0.0, Array3(0.05, 0.0, 0.0));
+  Properties& properties = patch.root.GetProperties(1);
+  // pairs[1]: the first slave segment and the master segment it overlaps.
+  Pair late(99, patch.pairs[1]->GetGeometry(), &properties, patch.pairs[1]->GetPairedGeometry());
+  const ProcessInfo& info = patch.root.GetProcessInfo();
+  auto explicit_slip = [&](PairedCondition& pair) {
+    for (Node* node : patch.slave) node->FastGetSolutionStepValue(WEIGHTED_SLIP) = Array3::Zero();
+    pair.AddExplicitContribution(info);
+    return Array3(patch.slave[0]->FastGetSolutionStepValue(WEIGHTED_SLIP));
+  };
+  const Array3 stored = explicit_slip(*patch.pairs[1]);
+  EXPECT_GT(stored.norm(), 1e-3);
+  EXPECT_LE((explicit_slip(late) - stored).norm(), 1e-14);
+  Vector rhs_stored, rhs_late;
+  patch.pairs[1]->CalculateRightHandSide(rhs_stored, info);
+  late.CalculateRightHandSide(rhs_late, info);
+  EXPECT_LE((rhs_stored - rhs_late).norm(), 1e-14 * rhs_stored.norm());
 }
 
 // Bad input names the condition, the node and the missing value.
