@@ -15,9 +15,8 @@ void FrictionalMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::StorePr
     const typename Kinematics::SlaveMatrix& x1, const typename Kinematics::MasterMatrix& x2, const ProcessInfo& info) {
   // Not the thread's kinematics of the pair system: this may run between its Compute and its use.
   thread_local Kinematics previous;
-  typename Kinematics::SlaveMatrix x1_unused, n1;
-  typename Kinematics::MasterMatrix x2_unused;
-  this->GatherKinematicsInput(x1_unused, x2_unused, n1);
+  typename Kinematics::SlaveMatrix n1;
+  this->GatherSlaveNormals(n1);
   previous.ComputeValues(x1, x2, n1, this->IntegrationSettings(info));
   previous_D_ = previous.D;
   previous_M_ = previous.M;

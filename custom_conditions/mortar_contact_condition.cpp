@@ -115,6 +115,12 @@ void MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::GatherKinematicsI
     typename Kinematics::SlaveMatrix& x1, typename Kinematics::MasterMatrix& x2,
     typename Kinematics::SlaveMatrix& n1) const {
   GatherCoordinates(x1, x2);
+  GatherSlaveNormals(n1);
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+void MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::GatherSlaveNormals(
+    typename Kinematics::SlaveMatrix& n1) const {
   const Geometry& slave = GetGeometry();
   for (int i = 0; i < TNumNodes; ++i)
     n1.row(i) = NormalCalculationUtilities::GetNodalNormal(slave[i]).template head<TDim>().transpose();

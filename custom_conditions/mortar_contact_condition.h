@@ -87,6 +87,8 @@ class MortarContactCondition : public PairedCondition {
   MortarIntegrationSettings IntegrationSettings(const ProcessInfo& info) const;
   /// Current slave / master coordinates.
   void GatherCoordinates(typename Kinematics::SlaveMatrix& x1, typename Kinematics::MasterMatrix& x2) const;
+  /// The slave nodal normals (NORMAL).
+  void GatherSlaveNormals(typename Kinematics::SlaveMatrix& n1) const;
   /// Current slave / master coordinates and slave nodal normals.
   void GatherKinematicsInput(typename Kinematics::SlaveMatrix& x1, typename Kinematics::MasterMatrix& x2,
                              typename Kinematics::SlaveMatrix& n1) const;

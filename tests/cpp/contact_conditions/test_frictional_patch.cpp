@@ -7,14 +7,18 @@
 //  - sliding patch: with the master moved along the interface, the stick force resists the
 //    relative motion, and in slip the total tangential force is mu times the total normal force,
 //    dragging the slave along with the master (ALM with c_slip = 1 and a normal multiplier, so that
-//    the slip direction comes from the weighted slip; penalty).
+//    the slip direction comes from the weighted slip; penalty);
+//  - a pair created within the step takes D_n, M_n from the previous step's coordinates;
+//  - a missing TANGENT_FACTOR or FRICTION_COEFFICIENT is an input error naming it.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "contact_condition_test_utilities.h"
+#include "core/utilities/error.h"
 #include "custom_conditions/alm_frictional_mortar_contact_condition.h"
 #include "custom_conditions/penalty_frictional_mortar_contact_condition.h"
 
@@ -30,17 +34,17 @@ struct Patch {
   std::vector<Node*> slave, master;
   std::vector<std::unique_ptr<TCondition>> pairs;
 
-  explicit Patch(bool slip) {
+  explicit Patch(bool slip, bool friction_coefficient = true) {
     for (int i = 0; i < 3; ++i) slave.push_back(&MakeNode(root, 1 + i, Array3(1.0 * i, 0.0, 0.0)));
     // Facing the slave: listed right to left, 0.01 below y = 0 (penetrating).
     const double xm[] = {2.6, 1.3, -0.6};
     for (int l = 0; l < 3; ++l) master.push_back(&MakeNode(root, 11 + l, Array3(xm[l], -0.01, 0.0)));
-    SetFrictionParameters(root, slave, 1.0);
+    SetFrictionParameters(root, friction_coefficient ? slave : std::vector<Node*>{}, 1.0);
     for (Node* node : slave) {
       NormalCalculationUtilities::SetNodalNormal(*node, Array3(0.0, 1.0, 0.0));
       node->FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER) = Array3(0.0, -0.5, 0.0);
       node->SetValue(INITIAL_PENALTY, 100.0);
-      node->SetValue(FRICTION_COEFFICIENT, kMu);
+      if (friction_coefficient) node->SetValue(FRICTION_COEFFICIENT, kMu);
       node->Set(ACTIVE, true);
       node->Set(SLIP, slip);
     }
@@ -142,6 +146,51 @@ TYPED_TEST(FrictionalPatch, SlipForceIsMuTimesNormalForce) {
   }
   EXPECT_GT(std::abs(total[1]), 0.1);
   EXPECT_NEAR(total[0], kMu * std::abs(total[1]), 1e-12 * std::abs(total[1]));  // along the master's motion
+}
+
+// A pair created after InitializeSolutionStep (a new search within the step) takes D_n, M_n from
+// the previous step's coordinates X0 + DISPLACEMENT(1): the same weighted slip as a pair that
+// stored them at the start of the step.
+TEST(FrictionalPreviousOperators, PairCreatedLaterUsesThePreviousStepCoordinates) {
+  using Pair = PenaltyFrictionalMortarContactCondition<2, 2, 2>;
+  Patch<Pair> patch(false);  // its pairs stored D_n, M_n in the initial configuration
+  patch.root.SetBufferSize(2);
+  for (Node* node : patch.AllNodes()) node->FastGetSolutionStepValue(DISPLACEMENT, 1) = Array3::Zero();
+  patch.Move(patch.master, 0.0, Array3(0.05, 0.0, 0.0));
+  Properties& properties = patch.root.GetProperties(1);
+  // pairs[1]: the first slave segment and the master segment it overlaps.
+  Pair late(99, patch.pairs[1]->GetGeometry(), &properties, patch.pairs[1]->GetPairedGeometry());
+  const ProcessInfo& info = patch.root.GetProcessInfo();
+  auto explicit_slip = [&](PairedCondition& pair) {
+    for (Node* node : patch.slave) node->FastGetSolutionStepValue(WEIGHTED_SLIP) = Array3::Zero();
+    pair.AddExplicitContribution(info);
+    return Array3(patch.slave[0]->FastGetSolutionStepValue(WEIGHTED_SLIP));
+  };
+  const Array3 stored = explicit_slip(*patch.pairs[1]);
+  EXPECT_GT(stored.norm(), 1e-3);
+  EXPECT_LE((explicit_slip(late) - stored).norm(), 1e-14);
+  Vector rhs_stored, rhs_late;
+  patch.pairs[1]->CalculateRightHandSide(rhs_stored, info);
+  late.CalculateRightHandSide(rhs_late, info);
+  EXPECT_LE((rhs_stored - rhs_late).norm(), 1e-14 * rhs_stored.norm());
+}
+
+// Bad input names the condition, the node and the missing value.
+TEST(FrictionalParameters, MissingTangentFactorOrFrictionCoefficientIsAnInputError) {
+  auto expect_error = [](Patch<PenaltyFrictionalMortarContactCondition<2, 2, 2>>& patch, const char* what) {
+    Vector rhs;
+    try {
+      patch.pairs[0]->CalculateRightHandSide(rhs, patch.root.GetProcessInfo());
+      ADD_FAILURE() << "missing " << what << " should be an error";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+    }
+  };
+  Patch<PenaltyFrictionalMortarContactCondition<2, 2, 2>> no_tangent_factor(false);
+  no_tangent_factor.root.GetProcessInfo().SetValue(TANGENT_FACTOR, 0.0);
+  expect_error(no_tangent_factor, "TANGENT_FACTOR");
+  Patch<PenaltyFrictionalMortarContactCondition<2, 2, 2>> no_friction_coefficient(false, false);
+  expect_error(no_friction_coefficient, "FRICTION_COEFFICIENT");
 }
 
 }  // namespace
