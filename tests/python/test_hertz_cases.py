@@ -164,7 +164,7 @@ def test_petsc_linear_solver_gives_the_umfpack_contact_solution(case_2d, tmp_pat
     the same Newton iterations."""
     # Checked here, not at collection: loading the plugin brings MPI into the test process.
     if not _petsc_available():
-        pytest.skip("built without PETSc")
+        pytest.skip("the PETSc plugin is not built (Debian's petsc-dev missing): make deps-petsc, then make install")
 
     folder, _ = case_2d
     settings, tolerance = PETSC_SOLVERS[variant]
