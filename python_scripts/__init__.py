@@ -2,7 +2,8 @@
 
 ``import mortarcontact as mc`` gives the kernel (``mc.Model``, ``mc.Parameters``, variables such
 as ``mc.DISPLACEMENT``), the structural substrate and the analysis stage that runs Kratos-format
-cases (``mc.run("ProjectParameters.json")``).
+cases (``mc.run("ProjectParameters.json")``, or ``mc.Analysis(model, parameters)`` over a model
+built in Python, e.g. from a meshio mesh with ``mc.import_meshio``).
 """
 from __future__ import annotations
 
@@ -22,6 +23,19 @@ globals().update({name: getattr(_core, name) for name in _core.VariableNames() +
 
 # The C++ log sink may hold a Python callable; drop it before the interpreter goes away.
 atexit.register(_core.ResetLogSink)
+
+
+def __getattr__(name: str):
+    # The Python layer on demand: ``import mortarcontact`` stays as light as the kernel.
+    if name in ("Analysis", "ConvergenceFailure"):
+        from . import analysis_stage
+
+        return getattr(analysis_stage, name)
+    if name == "import_meshio":
+        from .solvers.meshio_import import import_meshio
+
+        return import_meshio
+    raise AttributeError(f"module 'mortarcontact' has no attribute {name!r}")
 
 
 def get_cmake_dir() -> str:

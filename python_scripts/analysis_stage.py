@@ -12,13 +12,14 @@ state with the checkpoint's and goes on from its TIME and STEP.
 """
 from __future__ import annotations
 
+import json
 import os
 import time as wallclock
 from contextlib import contextmanager
 
 from . import _core
 from .process_factory import create_process_lists, naming_the_item
-from .project_parameters import read_project_parameters
+from .project_parameters import migrate_project_parameters, read_project_parameters
 from .restart import attach_run
 from .solvers import create_solver
 from .utilities import warn
@@ -199,6 +200,47 @@ class StructuralMechanicsAnalysis:
                                                step=self.step, iterations=it)
             finally:
                 _core.ResetLogSink()
+
+
+class Analysis(StructuralMechanicsAnalysis):
+    """A contact or structural analysis over a model, the public face of the analysis stage.
+
+    ``Analysis(model, parameters)`` reads and checks the parameters and creates the solver, which
+    creates the model part ``solver_settings.model_part_name`` (or takes the model's) and adds the
+    historical variables and, at ``Initialize``, the DoFs the formulation needs. ``Run()`` is
+    ``Initialize()``, ``RunSolutionLoop()`` and ``Finalize()``; ``Summary()`` describes the finished
+    run. Results are read from ``model`` (``model["Structure"].GetNodalValues(mc.DISPLACEMENT)``).
+
+    model: an ``mc.Model``; a model part built in Python is used as it is with
+      ``"model_import_settings": {"input_type": "use_input_model_part"}``. Build it after creating
+      the Analysis (its nodes need the solver's historical variables), e.g. with
+      ``mc.import_meshio`` or ``ModelPart.CreateNewNodes`` / ``CreateNewElements``.
+    parameters: the project parameters, as a dict, as a path of a ProjectParameters.json, or as an
+      ``mc.Parameters``; the layout and keys of Kratos' ProjectParameters.json (reference:
+      the documentation's parameter pages). Relative file names inside are looked up in the working
+      directory, then next to the file.
+    progress: show a progress bar (rich) and route the C++ log through it.
+    stop_on_non_convergence: raise ``ConvergenceFailure`` when a step does not converge; False
+      warns and goes on.
+    """
+
+    def __init__(self, model: _core.Model, parameters, *, progress: bool = False,
+                 stop_on_non_convergence: bool = True):
+        case_dir = None
+        if isinstance(parameters, dict):
+            parameters = _core.Parameters(json.dumps(parameters), "parameters")
+            migrate_project_parameters(parameters)
+        elif isinstance(parameters, (str, os.PathLike)):
+            path = os.path.abspath(os.fspath(parameters))
+            parameters = read_project_parameters(path)
+            case_dir = os.path.dirname(path)
+        elif isinstance(parameters, _core.Parameters):
+            migrate_project_parameters(parameters)
+        else:
+            raise _core.InputError("Analysis: parameters must be a dict, a ProjectParameters.json path or an "
+                                   f"mc.Parameters, got {type(parameters).__name__}")
+        super().__init__(model, parameters, progress=progress, stop_on_non_convergence=stop_on_non_convergence,
+                         case_dir=case_dir)
 
 
 def run_case(project_parameters: str, *, progress: bool = True, stop_on_non_convergence: bool = True):

@@ -227,7 +227,8 @@ std::unique_ptr<LinearSolver> CreatePetscSolver(const Parameters& settings) {
   });
   if (!create)
     throw NotImplementedError(Concat(settings.Where(), ".solver_type: 'petsc' is not available in this build (",
-                                     failure, "); install Debian's petsc-dev (make deps-petsc) and rebuild (make install)"));
+                                     failure,
+                                     "); install Debian's petsc-dev (make deps-petsc) and rebuild (make install)"));
   return std::unique_ptr<LinearSolver>(create(settings));
 }
 

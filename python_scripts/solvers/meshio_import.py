@@ -36,6 +36,7 @@ Keys (objects keyed by group name; a name unknown to the file is an error):
 from __future__ import annotations
 
 import contextlib
+import json
 import re
 
 import numpy as np
@@ -152,6 +153,7 @@ class _EntityNames:
         self.registered = {"element": set(_core.ElementNames()), "condition": set(_core.ConditionNames())}
         self.probe_model = _core.Model()
         self.probe = self.probe_model.CreateModelPart("probe")
+        self.probe_properties = self.probe.CreateNewProperties(0)
         self.geometries = {}
 
     def resolve(self, kind: str, name: str, cell_type: str, group: str, key: str, path: str) -> str:
@@ -174,7 +176,7 @@ class _EntityNames:
                 self.probe.CreateNewNode(node_id, 0.1 * node_id, 0.01 * node_id ** 2, 0.001 * node_id ** 3)
             create = self.probe.CreateNewElement if kind == "element" else self.probe.CreateNewCondition
             try:
-                entity = create(name, len(self.geometries) + 1, list(range(1, points + 1)), self.probe.GetProperties(0))
+                entity = create(name, len(self.geometries) + 1, list(range(1, points + 1)), self.probe_properties)
                 self.geometries[name] = entity.GetGeometry().Name()
             except _core.InputError as error:  # another number of nodes
                 self.geometries[name] = f"'{error}'"
@@ -216,12 +218,7 @@ def import_mesh(part, mesh, node_ids, imports, domain_size: int, path: str) -> N
     settings = _group_settings(imports, cell_groups, point_groups, path)
     names = _EntityNames(domain_size)
 
-    points = np.zeros((len(mesh.points), 3))
-    points[:, :mesh.points.shape[1]] = mesh.points
-    create_node = part.CreateNewNode
-    order = np.argsort(node_ids)  # in increasing id order the containers stay sorted
-    for node_id, (x, y, z) in zip(node_ids[order].tolist(), points[order].tolist()):
-        create_node(node_id, x, y, z)
+    part.CreateNewNodes(node_ids, np.asarray(mesh.points, dtype=float))
 
     members = {group: {"nodes": [], "element": [], "condition": []} for group in set(cell_groups) | set(point_groups)}
     counters = {"element": 0, "condition": 0}
@@ -277,6 +274,41 @@ def import_mesh(part, mesh, node_ids, imports, domain_size: int, path: str) -> N
     _add_members(part, members, path)
 
 
+def import_meshio(model_part, mesh, *, element_names: dict, condition_names: dict | None = None,
+                  properties_ids: dict | None = None, domain_size: int | None = None, node_ids=None) -> None:
+    """Fills an empty model part from a ``meshio.Mesh`` in memory, by the rules of
+    ``input_type`` ``"meshio"`` (this module's docstring): each named group (gmsh physical group,
+    cell set, point set) becomes a sub model part; its cells of dimension ``domain_size`` become
+    elements named by ``element_names`` {group: name}, its lower-dimensional cells conditions
+    where ``condition_names`` {group: name} names them (else the sub model part has their nodes
+    only); ``properties_ids`` {group: id} gives their properties (default 0, created when the
+    part does not list them). The equivalent of a ``ModelPart.from_meshio``.
+
+    model_part: an empty root model part, its historical variables already added (an
+      ``mc.Analysis`` adds its solver's when it is created: build the mesh after it).
+    mesh: the meshio.Mesh (``meshio.read(...)``, or built from numpy arrays); coordinates in the
+      model's length unit.
+    domain_size: 2 or 3; default the largest dimension of the mesh's cells. Also set as the
+      ProcessInfo's DOMAIN_SIZE.
+    node_ids: the id of each point (default 1, 2, ... in point order).
+    """
+    if model_part.NumberOfNodes() or model_part.NumberOfElements() or model_part.NumberOfConditions():
+        raise _core.InputError(f"import_meshio: model part {model_part.FullName()} is not empty")
+    if domain_size is None:
+        domain_size = max((CELL_DIMENSION.get(block.type, 0) for block in mesh.cells), default=0)
+    if domain_size not in (2, 3):
+        raise _core.InputError(f"import_meshio: domain_size must be 2 or 3, got {domain_size}")
+    ids = (np.arange(1, len(mesh.points) + 1, dtype=np.int64) if node_ids is None
+           else np.asarray(node_ids, dtype=np.int64))
+    if ids.shape != (len(mesh.points),):
+        raise _core.InputError(f"import_meshio: node_ids has shape {ids.shape}, expected ({len(mesh.points)},)")
+    groups = {"element_names": element_names, "condition_names": condition_names or {},
+              "properties_ids": properties_ids or {}}
+    imports = _core.Parameters(json.dumps(groups), "import_meshio")
+    import_mesh(model_part, mesh, ids, imports, domain_size, "the mesh")
+    model_part.ProcessInfo.SetValue(_core.DOMAIN_SIZE, domain_size)
+
+
 def _add_members(part, members: dict, path: str) -> None:
     """Creates the sub model parts (nested by dots) and fills them with their node, element and
     condition ids."""
@@ -301,14 +333,12 @@ def _create_entities(part, kind, cell_type, connectivity, cell_name, cell_proper
     if len(named) == 0:
         return ids
     nodes = connectivity[:, _FROM_VTK[cell_type]] if cell_type in _FROM_VTK else connectivity
-    create = part.CreateNewElement if kind == "element" else part.CreateNewCondition
-    properties = {}
+    create = part.CreateNewElements if kind == "element" else part.CreateNewConditions
     first = counters[kind] + 1
-    for offset, (name, props, node_ids) in enumerate(zip(cell_name[named].tolist(), cell_properties[named].tolist(),
-                                                          nodes[named].tolist())):
-        if props not in properties:
-            properties[props] = part.GetProperties(props)
-        create(name, first + offset, node_ids, properties[props])
     ids[named] = np.arange(first, first + len(named))
+    for name, props in sorted(set(zip(cell_name[named].tolist(), cell_properties[named].tolist()))):
+        cells = named[(cell_name[named] == name) & (cell_properties[named] == props)]
+        properties = part.GetProperties(props) if part.HasProperties(props) else part.CreateNewProperties(props)
+        create(name, ids[cells], nodes[cells], properties)
     counters[kind] += len(named)
     return ids

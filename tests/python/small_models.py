@@ -43,7 +43,7 @@ def quad_elements(root, nx: int, ny: int, name: str = "SmallDisplacementElement2
     not registered)."""
     if name not in mc.ElementNames():
         pytest.skip(f"element {name} is not registered yet")
-    props = root.GetProperties(1)
+    props = root.CreateNewProperties(1)
     element_id = 0
     for j in range(ny):
         for i in range(nx):

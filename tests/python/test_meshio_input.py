@@ -23,10 +23,14 @@ CELL_DIMENSION = {"vertex": 0, "line": 1, "triangle": 2, "quad": 2, "tetra": 3, 
 
 
 def write_msh(path, points, groups, file_format="gmsh") -> None:
-    """A gmsh msh 4.1 file of ``groups`` [(name, meshio cell type, 0-based connectivity)]: one
-    physical group and one geometric entity per group (tag i + 1). meshio lists the entities of the
-    nodes' "gmsh:dim_tags", so each entity first gets a node of its own, then the other nodes go to
-    the highest-dimensional entity that holds them."""
+    """A gmsh msh 4.1 file of ``groups`` [(name, meshio cell type, 0-based connectivity)]."""
+    meshio.write(path, gmsh_mesh(points, groups), file_format=file_format)
+
+
+def gmsh_mesh(points, groups):
+    """The meshio.Mesh of a gmsh file of ``groups``: one physical group and one geometric entity per
+    group (tag i + 1). meshio lists the entities of the nodes' "gmsh:dim_tags", so each entity first
+    gets a node of its own, then the other nodes go to the highest-dimensional entity that holds them."""
     dim_tags = np.full((len(points), 2), -1)
     nodes = [np.unique(cells) for _, _, cells in groups]
     for i in sorted(range(len(groups)), key=lambda i: len(nodes[i])):
@@ -38,12 +42,11 @@ def write_msh(path, points, groups, file_format="gmsh") -> None:
         dim_tags[free] = (CELL_DIMENSION[groups[i][1]], i + 1)
     assert np.all(dim_tags >= 0), "every node must be in a group"
     tags = [np.full(len(cells), i + 1) for i, (_, _, cells) in enumerate(groups)]
-    mesh = meshio.Mesh(points, [(cell_type, np.asarray(cells)) for _, cell_type, cells in groups],
+    return meshio.Mesh(points, [(cell_type, np.asarray(cells)) for _, cell_type, cells in groups],
                        point_data={"gmsh:dim_tags": dim_tags},
                        cell_data={"gmsh:physical": tags, "gmsh:geometrical": tags},
                        field_data={name: np.array([i + 1, CELL_DIMENSION[cell_type]])
                                    for i, (name, cell_type, _) in enumerate(groups)})
-    meshio.write(path, mesh, file_format=file_format)
 
 
 def describe(part, entities=True) -> dict:
@@ -93,12 +96,13 @@ def hand_built(model):
     part = model.CreateModelPart("Structure")
     for k, x in enumerate(POINTS):
         part.CreateNewNode(k + 1, *x)
+    properties = {pid: part.CreateNewProperties(pid) for pid in (0, 2, 3)}
     for k, cell in enumerate(QUADS):
-        part.CreateNewElement("SmallDisplacementElement2D4N", k + 1, (cell + 1).tolist(), part.GetProperties(0))
+        part.CreateNewElement("SmallDisplacementElement2D4N", k + 1, (cell + 1).tolist(), properties[0])
     for k, cell in enumerate(TRIANGLES):
-        part.CreateNewElement("TotalLagrangianElement2D3N", k + 3, (cell + 1).tolist(), part.GetProperties(2))
+        part.CreateNewElement("TotalLagrangianElement2D3N", k + 3, (cell + 1).tolist(), properties[2])
     for k, cell in enumerate(GROUPS[3][2]):
-        part.CreateNewCondition("LineLoadCondition2D2N", k + 1, (cell + 1).tolist(), part.GetProperties(3))
+        part.CreateNewCondition("LineLoadCondition2D2N", k + 1, (cell + 1).tolist(), properties[3])
     contents = {"Parts.base": ([1, 2, 3, 4, 5, 6], [1, 2], []), "Parts.block": ([4, 5, 6, 7, 8, 9], [3, 4, 5, 6], []),
                 "DISPLACEMENT_bottom": ([1, 2, 3], [], []), "Load_top": ([7, 8, 9], [], [1, 2]),
                 "Corner": ([6], [], [])}
@@ -121,6 +125,23 @@ def test_msh_and_mdpa_give_the_same_model_part(tmp_path, file_format):
     assert describe(from_msh) == describe(from_mdpa) == describe(built)
     assert from_msh.GetSubModelPart("Parts").SubModelPartNames() == ["base", "block"]
     assert from_msh.GetSubModelPart("Parts").NumberOfElements() == 6
+
+
+def test_import_meshio_from_memory_equals_the_file_route(tmp_path):
+    """mc.import_meshio (the public ModelPart-from-meshio call) on a meshio.Mesh in memory builds
+    the model part that input_type "gmsh" builds from the same mesh written to a file."""
+    write_msh(tmp_path / "blocks.msh", POINTS, GROUPS)
+    from_file = read_into_model(tmp_path / "blocks.msh")
+    mesh = gmsh_mesh(POINTS, GROUPS)
+    part = mc.Model().CreateModelPart("Structure")
+    mc.import_meshio(part, mesh, **SETTINGS)
+    assert describe(part) == describe(from_file) == describe(hand_built(mc.Model()))
+    assert part.ProcessInfo.GetValue(mc.DOMAIN_SIZE) == 2
+    with pytest.raises(mc.InputError, match="is not empty"):
+        mc.import_meshio(part, mesh, **SETTINGS)
+    with pytest.raises(mc.InputError, match=r"no group 'Parts\.blok'.*did you mean 'Parts\.block'"):
+        mc.import_meshio(mc.Model().CreateModelPart("S"), mesh,
+                         element_names={"Parts.blok": "SmallDisplacementElement"})
 
 
 def test_meshio_input_type_reads_other_formats(tmp_path):

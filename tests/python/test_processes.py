@@ -150,7 +150,7 @@ def line_conditions(root, name="LineLoadCondition2D2N"):
         pytest.skip(f"condition {name} is not registered yet")
     top = root.GetSubModelPart("top")
     ids = [int(i) for i in top.NodeIds()]
-    props = root.GetProperties(1)
+    props = root.CreateNewProperties(1)
     for k in range(len(ids) - 1):
         root.CreateNewCondition(name, k + 1, [ids[k], ids[k + 1]], props)
     top.AddConditions(list(range(1, len(ids))))
