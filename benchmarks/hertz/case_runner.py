@@ -168,6 +168,22 @@ def overridden(parameters_text: str, overrides: list[str]) -> str:
     return json.dumps(parameters)
 
 
+def kratos_parameters(parameters_text: str, case_dir: str) -> str:
+    """Kratos reads mdpa only: a case whose mesh is a gmsh / meshio file is given to Kratos as the
+    mdpa next to that file, which mortarcontact.cases.mesh_files.write_kratos_mdpa writes from it
+    (the harness does, before a Kratos run)."""
+    parameters = json.loads(parameters_text)
+    imports = parameters["solver_settings"]["model_import_settings"]
+    if imports.get("input_type") not in ("gmsh", "meshio"):
+        return parameters_text
+    stem = os.path.splitext(imports["input_filename"])[0]
+    if not os.path.exists(os.path.join(case_dir, stem + ".mdpa")):
+        raise FileNotFoundError(f"{stem}.mdpa: Kratos' copy of {imports['input_filename']} is missing; write it with "
+                                "mortarcontact.cases.mesh_files.write_kratos_mdpa")
+    parameters["solver_settings"]["model_import_settings"] = {"input_type": "mdpa", "input_filename": stem}
+    return json.dumps(parameters)
+
+
 def mortarcontact_parameters(parameters_path: str, linear_solver: str | None = None, overrides: list[str] = ()):
     """The case's project parameters for mortarcontact, with ``linear_solver`` (JSON) in place of
     its linear_solver_settings when given and ``overrides`` (see ``overridden``) applied."""
@@ -250,7 +266,7 @@ def main(argv=None) -> int:
     process_started = time.perf_counter()
     try:
         if args.code == "kratos":
-            run_kratos(parameters_text, dim, record, args.all_nodes)
+            run_kratos(kratos_parameters(parameters_text, case_dir), dim, record, args.all_nodes)
         else:
             run_mortarcontact(parameters_path, dim, record, args.linear_solver, args.all_nodes, args.set)
     except Exception as error:  # reported, not raised: the harness tabulates it

@@ -23,6 +23,7 @@ import sys
 import time
 
 from mortarcontact.cases.hertz import SIZES, all_case_names, evaluate, write_case
+from mortarcontact.cases.mesh_files import write_kratos_mdpa
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -80,6 +81,8 @@ def run_once(code: str, folder: str, output: str, threads: int, python: str | No
     ``linear_solver``: mortarcontact's linear_solver_settings (JSON) in place of the case's;
     ``all_nodes``: see case_runner.py --all-nodes; ``overrides``: its --set items."""
     python = python or sys.executable
+    if code == "kratos":
+        write_kratos_mdpa(folder)
     extra = ["--linear-solver", linear_solver] if linear_solver and code == "mortarcontact" else []
     extra += ["--all-nodes"] if all_nodes else []
     extra += [arg for item in overrides for arg in ("--set", item)]

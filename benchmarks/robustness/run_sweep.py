@@ -22,7 +22,8 @@ Kratos' records are reused while the case files and the run's overrides are unch
 the comparison to results/<case>.json (both ignored by git); results.md is rebuilt from every
 stored comparison, so a ``--filter`` run updates its rows and keeps the others.
 
-Compared, node by node (both codes read the same mdpa): the displacements of all nodes (largest
+Compared, node by node (both codes read the same mesh: the gmsh file, and for Kratos the mdpa
+mesh_files.write_kratos_mdpa makes of it): the displacements of all nodes (largest
 vector difference over the largest displacement), the contact pressure at the slave nodes
 (ALM: -SCALE_FACTOR * LAGRANGE_MULTIPLIER_CONTACT_PRESSURE; components: SCALE_FACTOR *
 |VECTOR_LAGRANGE_MULTIPLIER|; penalty: -AUGMENTED_NORMAL_CONTACT_PRESSURE; over the largest

@@ -1,3 +1,4 @@
-"""Generated cases in the Kratos input format (mdpa + ProjectParameters.json + materials.json):
-``hertz``, the gmsh-meshed Hertz cylinder and sphere pressed onto a block, with their evaluation
-against Hertz theory. Meshing needs gmsh (PyPI)."""
+"""Generated cases: ``hertz``, the gmsh-meshed Hertz cylinder and sphere pressed onto a block, with
+their evaluation against Hertz theory, and ``mesh_files``, the one route from a generated mesh to
+its files (a gmsh file with physical groups for mortarcontact, the mdpa made of it for Kratos).
+Meshing needs gmsh (PyPI)."""

@@ -1,6 +1,7 @@
 """Issue 4 (benchmarks) and issue 3 (Hertz correctness): the gmsh-generated Hertz cases are valid
-Kratos-format cases that our readers load, with non-empty interface parts, and their Hertz
-reference values satisfy the closed-form relations. Fast; Kratos is not needed."""
+cases (a gmsh file for us, its mdpa for Kratos) that both readers load alike, with non-empty
+interface parts, and their Hertz reference values satisfy the closed-form relations. Fast; Kratos
+is not needed."""
 from __future__ import annotations
 
 import importlib.util
@@ -18,6 +19,8 @@ pytestmark = pytest.mark.skipif(importlib.util.find_spec("gmsh") is None, reason
 
 
 from mortarcontact.cases import hertz  # noqa: E402
+from mortarcontact.cases.mesh_files import write_kratos_mdpa  # noqa: E402
+from mortarcontact.solvers.meshio_import import read_mesh  # noqa: E402
 
 #: The benchmarks' runner, run as a script (as a user would)
 RUNNER = os.path.join(os.path.dirname(__file__), "..", "..", "benchmarks", "hertz", "case_runner.py")
@@ -30,15 +33,49 @@ def case_2d(tmp_path_factory):
 
 
 def _read(folder: str, dim: int):
-    model = mc.Model()
-    part = model.CreateModelPart("Structure", dim)
+    """The case's model part as the solver builds it: its gmsh file through model_import_settings."""
+    with open(os.path.join(folder, "ProjectParameters.json")) as f:
+        settings = json.load(f)["solver_settings"]
+    imports = settings["model_import_settings"]
+    assert imports["input_type"] == "gmsh" and imports["input_filename"].endswith(".msh")
+    mesh, node_ids = read_mesh(os.path.join(folder, imports["input_filename"]), "gmsh", "model_import_settings")
+    part = mc.Model().CreateModelPart("Structure", dim)
     for name in ("DISPLACEMENT", "REACTION"):
         part.AddNodalSolutionStepVariable(mc.GetVariable(name))
-    mc.ReadModelPart(part, os.path.join(folder, f"{os.path.basename(folder)}.mdpa"), True)
+    mc.import_meshio(part, mesh, element_names=imports["element_names"], domain_size=dim, node_ids=node_ids)
     return part
 
 
-def test_mdpa_reads_with_expected_counts(case_2d):
+def _describe(part, entities: bool = True) -> dict:
+    data = {"nodes": part.NodeIds().tolist(), "elements": [e.Id for e in part.Elements],
+            "conditions": [c.Id for c in part.Conditions],
+            "sub_model_parts": {sub.Name: _describe(sub, False) for sub in part.SubModelParts}}
+    if entities:
+        data["coordinates"] = part.NodeCoordinates(True).tobytes()
+        data["entities"] = [(e.Id, e.Info(), e.NodeIds(), e.GetProperties().Id) for e in part.Elements]
+    return data
+
+
+def test_kratos_mdpa_is_the_model_part_we_read(case_2d):
+    """Kratos reads mdpa: the one it gets (mesh_files.write_kratos_mdpa) holds the model part that
+    our gmsh import builds, coordinates to the last bit, and the Kratos runner reads it in place of
+    the gmsh file."""
+    folder, _ = case_2d
+    mdpa = write_kratos_mdpa(folder)
+    assert mdpa == os.path.join(folder, f"{os.path.basename(folder)}.mdpa")
+    from_mdpa = mc.Model().CreateModelPart("Structure")
+    mc.ReadModelPart(from_mdpa, mdpa)
+    assert _describe(from_mdpa) == _describe(_read(folder, 2))
+    sys.path.insert(0, os.path.dirname(RUNNER))
+    from case_runner import kratos_parameters
+
+    with open(os.path.join(folder, "ProjectParameters.json")) as f:
+        kratos = json.loads(kratos_parameters(f.read(), folder))
+    assert kratos["solver_settings"]["model_import_settings"] == {"input_type": "mdpa",
+                                                                  "input_filename": os.path.basename(folder)}
+
+
+def test_mesh_reads_with_expected_counts(case_2d):
     folder, reference = case_2d
     counts = reference["counts"]
     part = _read(folder, 2)
