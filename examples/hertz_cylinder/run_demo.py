@@ -5,8 +5,9 @@ steps (E = 1000, nu = 0.3 for both bodies). For a contact half-width a << R, Her
     a = sqrt(4 P R / (pi E*)),   p(x) = p0 sqrt(1 - x^2 / a^2),   p0 = 2 P / (pi a),
 with E* = E / (2 (1 - nu^2)) for two equal bodies and P the force per unit thickness.
 This script meshes the case with gmsh (mortarcontact.cases.hertz: a .msh with physical groups,
-read with model_import_settings.input_type "gmsh"), adds a ParaView output, runs it with mortarcontact and draws hertz_cylinder.png: the computed contact
-pressure against Hertz' ellipse, and the deformed mesh near the contact coloured by pressure.
+read with model_import_settings.input_type "gmsh"), adds a ParaView output, runs it with
+mortarcontact and draws hertz_cylinder.png: the computed contact pressure against Hertz' ellipse,
+and the deformed mesh near the contact coloured by pressure.
 Usage: python run_demo.py [2k|8k|30k]   (default 8k, about 7k DoFs)
 """
 from __future__ import annotations
