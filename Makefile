@@ -12,6 +12,8 @@ DEBS := g++ cmake ninja-build ccache pkg-config libeigen3-dev libsuitesparse-dev
 DEBS_PETSC := petsc-dev
 PY_BUILD := scikit-build-core pybind11 ninja cmake
 PY_RUN := numpy scipy meshio h5py rich pytest sympy matplotlib gmsh
+# The notebooks (run by the tests) and the documentation site.
+PY_DOCS := jupytext nbclient ipykernel sphinx myst-parser
 # ruff pinned to a minor release: new minor releases stabilise new rules of the selected families.
 PY_LINT := ruff~=0.17.6
 CLANG_FORMAT ?= clang-format
@@ -35,7 +37,7 @@ endef
 
 deps:
 	$(call apt_install,$(DEBS))
-	@$(PYTHON) -m pip install -q --disable-pip-version-check $(PY_BUILD) $(PY_RUN) '$(PY_LINT)'
+	@$(PYTHON) -m pip install -q --disable-pip-version-check $(PY_BUILD) $(PY_RUN) $(PY_DOCS) '$(PY_LINT)'
 
 # The PETSc plugin's packages; the next `make install` configures and builds the plugin.
 deps-petsc:
