@@ -33,7 +33,8 @@ import numpy as np
 import mortarcontact as mc
 
 SOURCE = os.path.abspath(os.path.join("..", "spring_condition_plugin"))
-print(open(os.path.join(SOURCE, "ground_spring_condition.cpp")).read()[:1200], "...")
+with open(os.path.join(SOURCE, "ground_spring_condition.cpp")) as source:
+    print(source.read()[:1200], "...")
 
 # %% [markdown]
 # ## Build and load the plugin
