@@ -22,7 +22,7 @@ CLANG_FORMAT ?= clang-format
 CXX_FILES := git ls-files -z -- '*.h' '*.hpp' '*.cpp' '*.cc' ':(exclude)custom_conditions/generated/*' \
              ':(exclude)tests/cases/*' ':(exclude)build/*' ':(exclude,glob)**/.venv/**'
 
-.PHONY: all deps deps-petsc install demo test lint format test-cpp test-python bench bench-large bench-robustness clean
+.PHONY: all deps deps-petsc install demo docs test lint format test-cpp test-python bench bench-large bench-robustness clean
 
 all: install
 
@@ -50,6 +50,10 @@ install: deps
 
 demo: install
 	cd examples/hertz_cylinder && $(PYTHON) run_demo.py
+
+# The documentation site (Sphinx + MyST, docs/): build/docs/html/index.html; warnings are errors.
+docs: install
+	$(PYTHON) -m sphinx -W --keep-going -q -b html docs build/docs/html
 
 test: install lint test-cpp test-python
 
