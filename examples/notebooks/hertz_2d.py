@@ -30,9 +30,6 @@ import os
 import tempfile
 
 import gmsh
-import matplotlib
-
-matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 

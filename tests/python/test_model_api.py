@@ -102,6 +102,20 @@ def test_properties_from_a_dict_and_no_get_or_create():
     assert sub.CreateNewProperties(3).GetValue(mc.DENSITY) == 7850.0
 
 
+def test_returned_arrays_are_copies_and_setters_write_back():
+    """As documented (docs/api.md, "Views and copies"): no getter returns a view of the nodes'
+    storage, so writing into its array changes nothing; the setters are the way back."""
+    _, root = square_grid(2, 1)
+    values = root.GetNodalValues(mc.DISPLACEMENT)
+    coordinates = root.NodeCoordinates()
+    values[:] = 1.0
+    coordinates[:] = 5.0
+    assert not root.GetNodalValues(mc.DISPLACEMENT).any()
+    assert root.NodeCoordinates().max() == 2.0
+    root.SetNodalValues(mc.DISPLACEMENT, values)
+    assert (root.GetNodalValues(mc.DISPLACEMENT) == 1.0).all()
+
+
 def test_100k_nodes_and_200k_triangles_in_one_call_each():
     """The measurement of the issue: 100k nodes in one call. Bounds far above the measured times
     (0.06 s for the nodes, 0.9 s for the elements, on a shared 2-core machine), which a per-node
