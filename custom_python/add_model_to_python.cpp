@@ -352,9 +352,6 @@ void CreateNodes(ModelPart& part, const IntArray& ids,
   }
 }
 
-/// The properties a bulk creation names: a Properties object, or the id of properties this part lists.
-Properties& PropertiesOf(ModelPart& part, const py::handle& properties);
-
 /// The properties of this id listed by the part; InputError naming the ids it has otherwise.
 Properties& ListedProperties(ModelPart& part, IndexType id) {
   if (part.HasProperties(id)) return part.GetProperties(id);
@@ -365,6 +362,7 @@ Properties& ListedProperties(ModelPart& part, IndexType id) {
                           "); create them with CreateNewProperties(", id, ")"));
 }
 
+/// The properties a bulk creation names: a Properties object, or the id of properties this part lists.
 Properties& PropertiesOf(ModelPart& part, const py::handle& properties) {
   if (py::isinstance<Properties>(properties)) return properties.cast<Properties&>();
   if (py::isinstance<py::int_>(properties)) {
@@ -379,20 +377,31 @@ Properties& PropertiesOf(ModelPart& part, const py::handle& properties) {
 /// The variable of a name or a variable object (the key of a values dict).
 const VariableData& VariableOf(const py::handle& key) {
   if (py::isinstance<py::str>(key)) return VariableRegistry::Instance().Get(key.cast<std::string>());
-  return key.cast<const VariableData&>();
+  if (py::isinstance<VariableData>(key)) return key.cast<const VariableData&>();
+  throw InputError(Concat("values: a key must be a variable or its name, got ", std::string(py::repr(key))));
+}
+
+using ValueList = std::vector<std::pair<const VariableData*, DataValueContainer::Value>>;
+
+/// The values of a dict {variable or its name: value}, converted (and so checked) before any is set.
+ValueList ConvertedValues(const py::dict& values) {
+  ValueList converted;
+  for (const auto& [key, value] : values) {
+    const VariableData& var = VariableOf(key);
+    converted.emplace_back(&var, FromPython(var, value));
+  }
+  return converted;
 }
 
 void SetPropertiesValues(Properties& properties, const py::dict& values) {
-  for (const auto& [key, value] : values) {
-    const VariableData& var = VariableOf(key);
-    properties.SetGeneric(var, FromPython(var, value));
-  }
+  for (const auto& [var, value] : ConvertedValues(values)) properties.SetGeneric(*var, value);
 }
 
-void SetConstitutiveLaw(Properties& properties, const std::string& name) {
-  properties.SetConstitutiveLaw(
-      std::shared_ptr<const ConstitutiveLaw>(Registry<ConstitutiveLaw>::Instance().GetShared(name)->Clone()));
+std::shared_ptr<const ConstitutiveLaw> LawOf(const std::string& name) {
+  return std::shared_ptr<const ConstitutiveLaw>(Registry<ConstitutiveLaw>::Instance().GetShared(name)->Clone());
 }
+
+void SetConstitutiveLaw(Properties& properties, const std::string& name) { properties.SetConstitutiveLaw(LawOf(name)); }
 
 /// Entities of one registered class from ids (m,) and a connectivity (m, k) of node ids.
 void CreateEntities(ModelPart& part, const std::string& name, const IntArray& ids, const IntArray& connectivity,
@@ -688,9 +697,12 @@ void AddModelToPython(py::module_& m) {
              const std::optional<std::string>& constitutive_law) -> Properties& {
             if (p.HasProperties(id))
               throw InputError(Concat("model part ", p.FullName(), ": properties ", id, " exist already"));
+            // Checked first: a wrong value or law name creates nothing.
+            const ValueList converted = values ? ConvertedValues(*values) : ValueList{};
+            const auto law = constitutive_law ? LawOf(*constitutive_law) : nullptr;
             Properties& properties = p.GetOrCreateProperties(id);
-            if (values) SetPropertiesValues(properties, *values);
-            if (constitutive_law) SetConstitutiveLaw(properties, *constitutive_law);
+            for (const auto& [var, value] : converted) properties.SetGeneric(*var, value);
+            if (law) properties.SetConstitutiveLaw(law);
             return properties;
           },
           py::arg("id"), py::arg("values") = py::none(), py::arg("constitutive_law") = py::none(),

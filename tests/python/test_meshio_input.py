@@ -271,33 +271,39 @@ def msh_of_mdpa(mdpa: str, msh: str) -> dict:
 
 @pytest.fixture(scope="module")
 def hertz_case(tmp_path_factory):
-    """The smallest Hertz case (mdpa) and the same case read from msh 4.1, side by side."""
+    """The smallest Hertz case as generated (gmsh 2.2 file), as the mdpa Kratos gets of it, and as
+    msh 4.1 written from that mdpa: three parameter files side by side."""
     from mortarcontact.cases import hertz
+    from mortarcontact.cases.mesh_files import write_kratos_mdpa
 
     folder = hertz.write_case("hertz2d", "2k", str(tmp_path_factory.mktemp("hertz_msh")))
     name = os.path.basename(folder)
+    mdpa = write_kratos_mdpa(folder)
     with open(os.path.join(folder, "ProjectParameters.json")) as f:
         params = json.load(f)
-    params["solver_settings"]["model_import_settings"] = msh_of_mdpa(os.path.join(folder, f"{name}.mdpa"),
-                                                                     os.path.join(folder, f"{name}.msh"))
-    with open(os.path.join(folder, "ProjectParameters_msh.json"), "w") as f:
-        json.dump(params, f, indent=2)
+    for variant, imports in (("mdpa", {"input_type": "mdpa", "input_filename": name}),
+                             ("msh41", msh_of_mdpa(mdpa, os.path.join(folder, f"{name}_41.msh")))):
+        params["solver_settings"]["model_import_settings"] = imports
+        with open(os.path.join(folder, f"ProjectParameters_{variant}.json"), "w") as f:
+            json.dump(params, f, indent=2)
     return folder
 
 
 def test_contact_case_from_msh_matches_mdpa(hertz_case):
-    """The Hertz contact case gives the same displacements and contact pressure from msh as from mdpa."""
+    """The Hertz contact case gives the same displacements and contact pressure from its gmsh 2.2
+    file, from msh 4.1 and from mdpa."""
     results = []
-    for parameters_file in ("ProjectParameters.json", "ProjectParameters_msh.json"):
+    for parameters_file in ("ProjectParameters_mdpa.json", "ProjectParameters.json", "ProjectParameters_msh41.json"):
         analysis = mc.run(os.path.join(hertz_case, parameters_file), progress=False)
         root = analysis.model["Structure"]
         results.append((describe(root), root.GetNodalValues(mc.DISPLACEMENT),
                         root.GetNodalValues(mc.LAGRANGE_MULTIPLIER_CONTACT_PRESSURE)))
-    (mdpa_model, mdpa_u, mdpa_p), (msh_model, msh_u, msh_p) = results
-    assert msh_model == mdpa_model  # nodes, elements, the contact conditions and parts the processes made
+    (mdpa_model, mdpa_u, mdpa_p) = results[0]
     assert np.abs(mdpa_u).max() > 1e-3 and np.abs(mdpa_p).max() > 0.0  # the case does load the contact
-    np.testing.assert_allclose(msh_u, mdpa_u, rtol=0.0, atol=1e-12)
-    np.testing.assert_allclose(msh_p, mdpa_p, rtol=0.0, atol=1e-12 * np.abs(mdpa_p).max())
+    for msh_model, msh_u, msh_p in results[1:]:
+        assert msh_model == mdpa_model  # nodes, elements, the contact conditions and parts the processes made
+        np.testing.assert_allclose(msh_u, mdpa_u, rtol=0.0, atol=1e-12)
+        np.testing.assert_allclose(msh_p, mdpa_p, rtol=0.0, atol=1e-12 * np.abs(mdpa_p).max())
 
 
 # --- command line ------------------------------------------------------------------------------

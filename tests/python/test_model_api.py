@@ -95,8 +95,11 @@ def test_properties_from_a_dict_and_no_get_or_create():
         root.CreateNewProperties(3)
     with pytest.raises(mc.InputError, match=r"unknown variable 'YOUNG_MODULUSS'.*did you mean 'YOUNG_MODULUS'"):
         root.CreateNewProperties(4, {"YOUNG_MODULUSS": 1.0})
+    with pytest.raises(mc.InputError, match="values: a key must be a variable or its name, got 7"):
+        root.CreateNewProperties(4, {7: 1.0})
     with pytest.raises(mc.InputError, match="LinearElasticPlaneStrain2DLaw"):
         root.CreateNewProperties(5, None, "LinearElasticPlaneStrain2Law")
+    assert not root.HasProperties(4) and not root.HasProperties(5)  # a failed call creates nothing
     # A sub model part lists the root's properties of the same id: one set per id in the tree.
     sub = root.CreateSubModelPart("block")
     assert sub.CreateNewProperties(3).GetValue(mc.DENSITY) == 7850.0
