@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Bindings of the contact interface set-up, search and ALM parameter processes.
+// Bindings of the contact interface set-up, search, ALM parameter and mesh-tying processes.
 #include "core/model/model_part.h"
 #include "core/parameters/parameters.h"
 #include "custom_processes/alm_variables_calculation_process.h"
 #include "custom_processes/contact_interface_builder.h"
 #include "custom_processes/contact_output_utilities.h"
 #include "custom_processes/contact_search_process.h"
+#include "custom_processes/mesh_tying_utilities.h"
 #include "custom_python/python_module.h"
 
 namespace mc::python {
@@ -107,6 +108,12 @@ void AddContactProcessesToPython(py::module_& m) {
            "and the nodal INITIAL_PENALTY.")
       .def("Penalty", &ALMVariablesCalculationProcess::Penalty, "The penalty of the last Execute (force / length^3).")
       .def("ScaleFactor", &ALMVariablesCalculationProcess::ScaleFactor, "The scale factor of the last Execute.");
+
+  py::class_<MeshTyingUtilities>(m, "MeshTyingUtilities", "What the mesh-tying process does to its tied pairs.")
+      .def_static("FixUndeterminedMultipliers", &MeshTyingUtilities::FixUndeterminedMultipliers,
+                  py::arg("computing_part"),
+                  "Fixes to zero the tying multipliers whose rows have no free DoF in any pair (Dirichlet "
+                  "conditions on both sides there) and frees the others; returns how many were fixed.");
 
   m.def("ComputeContactOutputs", &ComputeContactOutputs, py::arg("part"), py::arg("clear_inactive"),
         "The contact tractions, forces and gaps of the slave nodes at the end of a converged step; with "
