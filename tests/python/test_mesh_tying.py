@@ -289,3 +289,84 @@ def test_tied_cantilever_matches_beam_theory(tmp_path):
           f"(tied/theory {tied / theory:.4f}, tied/one mesh {tied / whole:.5f})")
     assert tied == pytest.approx(whole, rel=1e-3)
     assert tied == pytest.approx(theory, rel=1.5e-2)
+
+
+# ---------------------------------------------------------------------------------------------
+# mesh_tying_process keys (tests/python/settings_audit.tsv)
+
+def tied_case(folder: str) -> str:
+    """The 2D tied patch as a case in ``folder`` (the base of test_settings_audit's runner)."""
+    gradient = [[1.0e-3, 4.0e-4], [-2.0e-4, -1.5e-3]]
+    coords, elements, parts = _two_blocks_2d()
+    parts["Outer"] = {"nodes": _outer_nodes(coords, ([0.0, 0.0], [1.0, 2.0]))}
+    cb.write_mdpa(os.path.join(folder, "tied.mdpa"), coords, elements, None, parts)
+    params = cb.project_parameters("tied", 2, constraints=[cb.fix_process("Outer", _linear_field(gradient) + [0.0])],
+                                   solver={"convergence_criterion": "contact_residual_criterion",
+                                           "contact_settings": {"mortar_type": "ComponentsMeshTying"}})
+    params["processes"]["contact_process_list"] = [_tying_process()]
+    return cb.write_case(folder, "tied", params, cb.materials("Structure", "LinearElasticPlaneStrain2DLaw", E, NU))
+
+
+def _tying(**changes):
+    def edit(params):
+        params["processes"]["contact_process_list"][0]["Parameters"].update(changes)
+    return edit
+
+
+def test_mesh_tying_process_keys(tmp_path):
+    """What each key of mesh_tying_process does (spec 4.8)."""
+    from test_settings_audit import _pairs, _run_logged
+
+    def run(name, edit=None, solver=None):
+        def both(params):
+            if edit:
+                edit(params)
+            params["solver_settings"]["contact_settings"].update(solver or {})
+        return _run_logged(tmp_path / name, base=tied_case, edit=both)
+
+    # model_part_name, mesh_tying_model_part, assume_master_slave: one pair per overlapping
+    # (slave, master) segment: 3 slave segments of the lower block against 2 master ones -> 4 pairs
+    base, log = run("default", _tying(model_part_name="Structure", mesh_tying_model_part={"0": ["Tying"]},
+                                      assume_master_slave={"0": ["Lower"]}))
+    assert "has no effect" not in log
+    pairs = _pairs(base)
+    assert {name for name, _ in pairs} == {"MeshTyingMortarCondition2D2N"} and len(pairs) == 4
+    root = base.model["Structure"]
+    slaves = {n.Id for n in root.GetSubModelPart("Contact").Nodes if n.Is(mc.SLAVE)}
+    assert slaves == {n.Id for n in root.GetSubModelPart("Lower").Nodes if n.Y0 == 1.0}
+    # mesh_tying_property_ids
+    assert {p for _, p in pairs} == {100}
+    assert {p for _, p in _pairs(run("ids", _tying(mesh_tying_property_ids={"0": 1}))[0])} == {1}
+    # zero_tolerance_factor, integration_order: the ProcessInfo and the pair properties
+    analysis, _ = run("orders", _tying(zero_tolerance_factor=3.0, integration_order=4))
+    assert analysis.model["Structure"].ProcessInfo.GetValue(mc.ZERO_TOLERANCE_FACTOR) == 3.0
+    pair = next(iter(analysis.model["Structure"].GetSubModelPart("ComputingContact").Conditions))
+    assert pair.GetProperties().GetValue(mc.INTEGRATION_ORDER_CONTACT) == 4
+    # scale_factor_parameters: the multipliers are the traction over SCALE_FACTOR; automatic:
+    # stiffness_factor * E / h of the softer side (h = 0.5 on the upper block's interface)
+    def multipliers(analysis):
+        part = analysis.model["Structure"].GetSubModelPart("Contact")
+        return np.array([n.GetSolutionStepValue(mc.VECTOR_LAGRANGE_MULTIPLIER) for n in part.Nodes if n.Is(mc.SLAVE)])
+    automatic = root.ProcessInfo.GetValue(mc.SCALE_FACTOR)
+    doubled, _ = run("stiffness", _tying(scale_factor_parameters={"stiffness_factor": 2.0}))
+    assert doubled.model["Structure"].ProcessInfo.GetValue(mc.SCALE_FACTOR) == pytest.approx(2 * automatic)
+    manual, _ = run("manual", _tying(scale_factor_parameters={"manual_scale_factor": True, "scale_factor": 5.0}))
+    assert manual.model["Structure"].ProcessInfo.GetValue(mc.SCALE_FACTOR) == 5.0
+    assert np.allclose(5.0 * multipliers(manual), automatic * multipliers(base), rtol=1e-10, atol=1e-12)
+    assert np.abs(multipliers(base)).max() > 0.0
+    # interval: outside it nothing is tied
+    outside, _ = run("interval", _tying(interval=[2.0, "End"]))
+    assert not _pairs(outside)
+    # consider_tessellation: both values cut the clipped polygons as a fan (a warning for false)
+    _, log = run("fan", _tying(consider_tessellation=False))
+    assert "consider_tessellation' = false" in log and "has no effect" in log
+    # variable_name: the tied variable chooses the formulation; it must be an unknown of the run
+    error, _ = run("scalar", _tying(variable_name="TEMPERATURE"))
+    assert isinstance(error, mc.InputError) and 'mortar_type "ScalarMeshTying"' in str(error)
+    error, _ = run("no_dof", _tying(variable_name="TEMPERATURE"), solver={"mortar_type": "ScalarMeshTying"})
+    assert isinstance(error, mc.InputError) and "'TEMPERATURE' is not an unknown" in str(error)
+    error, _ = run("typo", _tying(variable_name="DISPLACMENT"))
+    assert isinstance(error, mc.InputError) and "DISPLACEMENT" in str(error)
+    # consider_static_condensation: not implemented
+    error, _ = run("condensation", _tying(consider_static_condensation=True))
+    assert isinstance(error, mc.NotImplementedFeatureError) and "consider_static_condensation" in str(error)
