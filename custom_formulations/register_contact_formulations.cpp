@@ -130,6 +130,9 @@ void RegisterAll() {
       .dofs = vector_multiplier,
       .multiplier = "VECTOR_LAGRANGE_MULTIPLIER",
       .multiplier_blocks = 1,
+      // Kratos solves the tie monolithically; its rows have the structure MixedULM condenses (slave rows
+      // -k D_jj I per node, every tied slave node ACTIVE: MeshTyingUtilities), with the same solution.
+      .condensable = true,
       .active_set_criterion = tying_criterion,
   });
   ContactFormulation::Register(D{

@@ -4,6 +4,7 @@
 #include <array>
 #include <unordered_map>
 
+#include "core/variables/flags.h"
 #include "custom_conditions/mesh_tying_mortar_condition.h"
 
 namespace mc {
@@ -17,7 +18,7 @@ struct TiedRows {
 
 }  // namespace
 
-std::size_t MeshTyingUtilities::FixUndeterminedMultipliers(ModelPart& computing_part) {
+std::size_t MeshTyingUtilities::UpdateTiedSlaveNodes(ModelPart& computing_part) {
   const ProcessInfo& info = computing_part.GetProcessInfo();
   // Slave node -> which of its tied rows have a free DoF in some pair, and one pair that ties it.
   std::unordered_map<Node*, TiedRows> rows;
@@ -32,7 +33,8 @@ std::size_t MeshTyingUtilities::FixUndeterminedMultipliers(ModelPart& computing_
     }
   }
   std::size_t fixed = 0;
-  for (auto& [node, node_rows] : rows)
+  for (auto& [node, node_rows] : rows) {
+    node->Set(ACTIVE, true);
     for (int c = 0; c < node_rows.pair->Components(); ++c) {
       Dof& dof = node->GetDof(node_rows.pair->MultiplierVariable(c));
       dof.fixed = !node_rows.free[c];
@@ -41,6 +43,7 @@ std::size_t MeshTyingUtilities::FixUndeterminedMultipliers(ModelPart& computing_
         ++fixed;
       }
     }
+  }
   return fixed;
 }
 

@@ -111,10 +111,10 @@ void AddContactProcessesToPython(py::module_& m) {
       .def("ScaleFactor", &ALMVariablesCalculationProcess::ScaleFactor, "The scale factor of the last Execute.");
 
   py::class_<MeshTyingUtilities>(m, "MeshTyingUtilities", "What the mesh-tying process does to its tied pairs.")
-      .def_static("FixUndeterminedMultipliers", &MeshTyingUtilities::FixUndeterminedMultipliers,
-                  py::arg("computing_part"),
-                  "Fixes to zero the tying multipliers whose rows have no free DoF in any pair (Dirichlet "
-                  "conditions on both sides there) and frees the others; returns how many were fixed.");
+      .def_static("UpdateTiedSlaveNodes", &MeshTyingUtilities::UpdateTiedSlaveNodes, py::arg("computing_part"),
+                  "Flags the tied slave nodes ACTIVE (for the MixedULM condensation), fixes to zero the tying "
+                  "multipliers whose rows have no free DoF in any pair (Dirichlet conditions on both sides there) "
+                  "and frees the others; returns how many were fixed.");
 
   py::class_<SimpleMortarMapperProcess>(
       m, "SimpleMortarMapperProcess",

@@ -138,7 +138,7 @@ class MeshTyingProcess(SearchBaseProcess):
         super().ExecuteInitializeSolutionStep()
         if self._inside:
             # After the constraints processes (their list runs first) have set the step's fixities.
-            _core.MeshTyingUtilities.FixUndeterminedMultipliers(self.root.GetSubModelPart("ComputingContact"))
+            _core.MeshTyingUtilities.UpdateTiedSlaveNodes(self.root.GetSubModelPart("ComputingContact"))
 
     def ExecuteFinalizeSolutionStep(self) -> None:
         """No contact outputs: a tie has no gap, pressure or active set."""

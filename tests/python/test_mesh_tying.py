@@ -219,6 +219,17 @@ def test_tied_patch_3d_transmits_a_constant_stress_exactly(tmp_path, upper_tets)
     analysis = _run(str(tmp_path), "patch3d", coords, elements, parts, "LinearElastic3DLaw",
                     {"constraints": constraints})
     assert _check_patch(analysis, gradient, [0.0, 0.0, 1.0], 3) >= 9 * 3 - 6
+    # The multipliers were condensed (MixedULM), with the monolithic solve's answer.
+    solver = analysis.solver.contact_linear_solver
+    assert solver.last_solve_was_condensed, solver.fallback_reason
+    monolithic = _run(str(tmp_path), "patch3d_monolithic", coords, elements, parts, "LinearElastic3DLaw",
+                      {"constraints": constraints}, solver={"contact_settings": {
+                          "mortar_type": "ComponentsMeshTying", "use_mixed_ulm_solver": False}})
+    assert not hasattr(monolithic.solver.contact_linear_solver, "last_solve_was_condensed")
+    for variable in (mc.DISPLACEMENT, mc.VECTOR_LAGRANGE_MULTIPLIER):
+        condensed = analysis.model["Structure"].GetNodalValues(variable)
+        assert np.abs(condensed - monolithic.model["Structure"].GetNodalValues(variable)).max() <= \
+            1e-10 * np.abs(condensed).max()
 
 
 # ---------------------------------------------------------------------------------------------
