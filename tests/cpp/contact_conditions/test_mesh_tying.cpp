@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <map>
 #include <vector>
 
@@ -227,6 +229,111 @@ void Build2D(Interface& s) {
       s.pairs.push_back(std::make_unique<MeshTyingMortarCondition<2, 2, 2>>(
           id++, Geometry(GeometryType::Line2D2, {s.slave_nodes[a + 1], s.slave_nodes[a]}), &properties,
           Geometry(GeometryType::Line2D2, {s.master_nodes[b], s.master_nodes[b + 1]})));
+}
+
+// Bilinear Laplacian (conductivity 1) of the axis-aligned rectangle [x0, x1] x [y0, y1], nodes counter-
+// clockwise from (x0, y0): 2 x 2 Gauss.
+Matrix RectangleLaplacian(double a, double b) {
+  Matrix k = Matrix::Zero(4, 4);
+  const double xi[4] = {-1, 1, 1, -1}, eta[4] = {-1, -1, 1, 1}, g = 1.0 / std::sqrt(3.0);
+  for (double p : {-g, g})
+    for (double q : {-g, g})
+      for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) {
+          const double dxi = xi[i] * (1 + eta[i] * q) / 4 * 2 / a, dyi = eta[i] * (1 + xi[i] * p) / 4 * 2 / b;
+          const double dxj = xi[j] * (1 + eta[j] * q) / 4 * 2 / a, dyj = eta[j] * (1 + xi[j] * p) / 4 * 2 / b;
+          k(i, j) += (dxi * dxj + dyi * dyj) * a * b / 4;
+        }
+  return k;
+}
+
+// Issue 13 (ScalarMeshTying): a scalar field (TEMPERATURE) across a non-matching interface. Two blocks of
+// the unit square cut at x = 0.5 (left 1 x 2 rectangles, right 1 x 3, own interface nodes), Laplacian,
+// T = 1 at x = 0 and T = 0 at x = 1: the tied solution is T = 1 - x at every node (the Kratos test
+// test_mesh_tying_condition.cpp has T = 0.5 on the interface) and k lambda the flux dT/dn = -1 on the
+// slave side, to 1e-12.
+TEST(MeshTyingScalar, LaplacianAcrossNonMatchingInterface) {
+  Interface s;
+  Properties& properties = s.root.GetOrCreateProperties(1);
+  properties.SetValue(TYING_VARIABLE, std::string("TEMPERATURE"));
+  s.root.GetProcessInfo().SetValue(SCALE_FACTOR, 4.0);
+  // The interface nodes of each block go to the slave / master lists, the outer ones (x = 0 on the
+  // left, x = 1 on the right, where T is given) to left / right.
+  std::vector<Node*> left, right;
+  IndexType id = 1;
+  for (double x : {0.0, 0.5})
+    for (double y : {0.0, 0.5, 1.0}) s.AddNode(x == 0.5 ? s.slave_nodes : left, id++, {x, y, 0.0}, {1.0, 0.0, 0.0});
+  for (double x : {0.5, 1.0})
+    for (double y : {0.0, 1.0 / 3, 2.0 / 3, 1.0})
+      s.AddNode(x == 0.5 ? s.master_nodes : right, id++, {x, y, 0.0}, {-1.0, 0.0, 0.0});
+  // Slave lines (left block's right edge) run downwards: normal (t_y, -t_x) = +x; master lines upwards.
+  for (int a = 0; a < 2; ++a)
+    for (int b = 0; b < 3; ++b)
+      s.pairs.push_back(std::make_unique<MeshTyingMortarCondition<2, 2, 2>>(
+          id++, Geometry(GeometryType::Line2D2, {s.slave_nodes[a + 1], s.slave_nodes[a]}), &properties,
+          Geometry(GeometryType::Line2D2, {s.master_nodes[b], s.master_nodes[b + 1]})));
+  Matrix lhs;
+  Vector rhs;
+  s.Assemble(lhs, rhs);  // the tie's DoFs: the interface temperatures and the slave multipliers
+  // Add the rectangles: left (node indices by (x, y) grid of 2 x 3), right (2 x 4).
+  auto index_of = [&](Node* node) {
+    const Dof* dof = &node->GetDof(TEMPERATURE);
+    const auto [it, inserted] = s.index.emplace(dof, static_cast<Eigen::Index>(s.dofs.size()));
+    if (inserted) s.dofs.push_back(dof);
+    return it->second;
+  };
+  std::vector<std::pair<std::array<Node*, 4>, Matrix>> elements;
+  const std::vector<Node*> all_left = {left[0], left[1], left[2], s.slave_nodes[0], s.slave_nodes[1],
+                                       s.slave_nodes[2]};
+  for (int j = 0; j < 2; ++j)
+    elements.push_back({{all_left[j], all_left[3 + j], all_left[4 + j], all_left[j + 1]}, RectangleLaplacian(0.5, 0.5)});
+  const std::vector<Node*> all_right = {s.master_nodes[0], s.master_nodes[1], s.master_nodes[2], s.master_nodes[3],
+                                        right[0], right[1], right[2], right[3]};
+  for (int j = 0; j < 3; ++j)
+    elements.push_back(
+        {{all_right[j], all_right[4 + j], all_right[5 + j], all_right[j + 1]}, RectangleLaplacian(0.5, 1.0 / 3)});
+  for (auto& [nodes, k] : elements)
+    for (Node* node : nodes) index_of(node);
+  const auto n = static_cast<Eigen::Index>(s.dofs.size());
+  Matrix a = Matrix::Zero(n, n);
+  a.topLeftCorner(lhs.rows(), lhs.cols()) = lhs;
+  for (auto& [nodes, k] : elements)
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) a(index_of(nodes[i]), index_of(nodes[j])) += k(i, j);
+  // Dirichlet: T = 1 at x = 0, T = 0 at x = 1; the system is linear: a x = b with b from them.
+  Vector x = Vector::Zero(n);
+  std::vector<bool> fixed(static_cast<std::size_t>(n), false);
+  for (Node* node : left) {
+    fixed[static_cast<std::size_t>(index_of(node))] = true;
+    x(index_of(node)) = 1.0;
+  }
+  for (Node* node : right) fixed[static_cast<std::size_t>(index_of(node))] = true;
+  std::vector<Eigen::Index> free;
+  for (Eigen::Index i = 0; i < n; ++i)
+    if (!fixed[static_cast<std::size_t>(i)]) free.push_back(i);
+  const auto m = static_cast<Eigen::Index>(free.size());
+  Matrix a_ff(m, m);
+  Vector b_f(m);
+  const Vector b = -a * x;
+  for (Eigen::Index i = 0; i < m; ++i) {
+    b_f(i) = b(free[i]);
+    for (Eigen::Index j = 0; j < m; ++j) a_ff(i, j) = a(free[i], free[j]);
+  }
+  const Vector x_f = a_ff.fullPivLu().solve(b_f);
+  ASSERT_LT((a_ff * x_f - b_f).norm(), 1e-12);
+  for (Eigen::Index i = 0; i < m; ++i) x(free[i]) = x_f(i);
+  int multipliers = 0;
+  for (const Dof* dof : s.dofs) {
+    const double value = x(s.index.at(dof));
+    if (dof->variable == &TEMPERATURE) {
+      EXPECT_NEAR(value, 1.0 - dof->node->X0()[0], 1e-12) << "node " << dof->node->Id();
+    } else {
+      ASSERT_EQ(dof->variable, &SCALAR_LAGRANGE_MULTIPLIER);
+      EXPECT_NEAR(4.0 * value, -1.0, 1e-12) << "node " << dof->node->Id();
+      ++multipliers;
+    }
+  }
+  EXPECT_EQ(multipliers, 3);
 }
 
 // 3D: slave = two quads on [0,1] x [0,1] (split at x = 0.6) at z = 0; master = four triangles of
