@@ -26,7 +26,7 @@ MeshTyingMortarCondition<TDim, TNumNodes, TNumNodesMaster>::MeshTyingMortarCondi
                                                                                      Geometry paired_geometry)
     : MeshTyingMortarConditionBase(id, std::move(slave_geometry), properties, std::move(paired_geometry)) {
   const std::string name = properties && properties->Has(TYING_VARIABLE) ? properties->GetValue(TYING_VARIABLE)
-                                                                          : std::string("DISPLACEMENT");
+                                                                         : std::string("DISPLACEMENT");
   const VariableRegistry& registry = VariableRegistry::Instance();
   const VariableData& variable = registry.Get(name);  // InputError with the nearest names
   if (variable.Type() == ValueType::Array3) {
@@ -48,8 +48,9 @@ MeshTyingMortarCondition<TDim, TNumNodes, TNumNodesMaster>::MeshTyingMortarCondi
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
 std::string MeshTyingMortarCondition<TDim, TNumNodes, TNumNodesMaster>::Info() const {
-  return TNumNodes == TNumNodesMaster ? Concat("MeshTyingMortarCondition", TDim, "D", TNumNodes, "N")
-                                      : Concat("MeshTyingMortarCondition", TDim, "D", TNumNodes, "N", TNumNodesMaster, "N");
+  return TNumNodes == TNumNodesMaster
+             ? Concat("MeshTyingMortarCondition", TDim, "D", TNumNodes, "N")
+             : Concat("MeshTyingMortarCondition", TDim, "D", TNumNodes, "N", TNumNodesMaster, "N");
 }
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
@@ -243,8 +244,8 @@ template <int TDim, int TNumNodes, int TNumNodesMaster>
 void MeshTyingMortarCondition<TDim, TNumNodes, TNumNodesMaster>::Check(const ProcessInfo& info) const {
   auto check = [&](const Node& node, const Variable<double>& variable) {
     if (!node.HasDofFor(variable))
-      throw InputError(Concat("condition ", Id(), " (", Info(), "): node ", node.Id(), " has no DoF ",
-                              variable.Name(), " (the tied variable and its multiplier need one)"));
+      throw InputError(Concat("condition ", Id(), " (", Info(), "): node ", node.Id(), " has no DoF ", variable.Name(),
+                              " (the tied variable and its multiplier need one)"));
   };
   for (int c = 0; c < components_; ++c) {
     for (int l = 0; l < TNumNodesMaster; ++l) check(GetPairedGeometry()[l], *tied_[c]);

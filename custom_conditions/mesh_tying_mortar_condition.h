@@ -97,7 +97,7 @@ class MeshTyingMortarCondition : public MeshTyingMortarConditionBase {
   void CalculateAll(Matrix* lhs, Vector* rhs, const ProcessInfo& info);
 
   int components_ = TDim;
-  std::array<const Variable<double>*, 3> tied_{};       ///< tied DoF variable per component
+  std::array<const Variable<double>*, 3> tied_{};        ///< tied DoF variable per component
   std::array<const Variable<double>*, 3> multiplier_{};  ///< multiplier DoF variable per component
   mutable bool operators_ready_ = false;
   mutable bool overlap_ = false;

@@ -144,8 +144,10 @@ struct MappedVariable {
   void Set(Node& node, int c, double value) const {
     if (components == 1) {
       const auto& v = static_cast<const Variable<double>&>(*data);
-      if (historical) node.FastGetSolutionStepValue(v) = value;
-      else node.SetValue(v, value);
+      if (historical)
+        node.FastGetSolutionStepValue(v) = value;
+      else
+        node.SetValue(v, value);
       return;
     }
     const auto& v = static_cast<const Variable<Array3>&>(*data);
@@ -172,7 +174,8 @@ MappedVariable Resolve(const Parameters& name, bool historical, const ModelPart&
     for (const Node* node : part.Nodes())
       if (!node->HasSolutionStepValue(*variable.data))
         throw InputError(Concat(name.Where(), ": '", name.GetString(), "' is not a solution-step variable of '",
-                                part.FullName(), "' (node ", node->Id(), "); set the *_variable_historical key false "
+                                part.FullName(), "' (node ", node->Id(),
+                                "); set the *_variable_historical key false "
                                 "for a non-historical value"));
   return variable;
 }
@@ -237,13 +240,12 @@ void SimpleMortarMapperProcess::CheckSettings() const {
                                      ": true (Delaunay tessellation of the clipped polygons) is not implemented"));
   for (const char* key : {"distance_threshold", "zero_tolerance_factor"}) {
     const double value = settings_[key].GetDouble();
-    if (!(value > 0.0))
-      throw InputError(Concat(settings_[key].Where(), ": must be a positive number, got ", value));
+    if (!(value > 0.0)) throw InputError(Concat(settings_[key].Where(), ": must be a positive number, got ", value));
   }
   const double factor = settings_["search_parameters"]["search_factor"].GetDouble();
   if (!(factor > 0.0))
-    throw InputError(Concat(settings_["search_parameters"]["search_factor"].Where(), ": must be a positive number, got ",
-                            factor));
+    throw InputError(
+        Concat(settings_["search_parameters"]["search_factor"].Where(), ": must be a positive number, got ", factor));
   const int order = settings_["integration_order"].GetInt();
   if (order < 1 || order > 5)
     throw InputError(Concat(settings_["integration_order"].Where(), ": must be 1 to 5, got ", order));
@@ -255,7 +257,8 @@ void SimpleMortarMapperProcess::BuildOperators() {
   // conservative one.
   ModelPart& slave_part = conservative ? origin_ : destination_;
   ModelPart& master_part = conservative ? destination_ : origin_;
-  const bool slave_conditions = settings_[conservative ? "origin_are_conditions" : "destination_are_conditions"].GetBool();
+  const bool slave_conditions =
+      settings_[conservative ? "origin_are_conditions" : "destination_are_conditions"].GetBool();
   const bool master_conditions =
       settings_[conservative ? "destination_are_conditions" : "origin_are_conditions"].GetBool();
   const std::vector<const Geometry*> slaves = Faces(slave_part, slave_conditions);
@@ -306,8 +309,8 @@ void SimpleMortarMapperProcess::Execute() {
   const Parameters destination_name = settings_["destination_variable"].GetString().empty()
                                           ? settings_["origin_variable"]
                                           : settings_["destination_variable"];
-  const MappedVariable from = Resolve(settings_["origin_variable"], settings_["origin_variable_historical"].GetBool(),
-                                      origin_);
+  const MappedVariable from =
+      Resolve(settings_["origin_variable"], settings_["origin_variable_historical"].GetBool(), origin_);
   const MappedVariable to =
       Resolve(destination_name, settings_["destination_variable_historical"].GetBool(), destination_);
   if (from.components != to.components)

@@ -41,7 +41,8 @@ def run(name):
 
 def main():
     KM.Logger.GetDefaultOutput().SetSeverity(KM.Logger.Severity.WARNING)
-    result = {"kratos": "10.4.4", **{name: run(name) for name in ("test_integration_triangle", "test_integration_quad")}}
+    cases = ("test_integration_triangle", "test_integration_quad")
+    result = {"kratos": "10.4.4", **{name: run(name) for name in cases}}
     with open(OUTPUT, "w") as f:
         json.dump(result, f, indent=1, sort_keys=True)
         f.write("\n")

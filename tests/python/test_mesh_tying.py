@@ -15,6 +15,7 @@ import os
 
 import numpy as np
 import pytest
+from test_contact_cases import run_csma_case
 
 import mortarcontact as mc
 from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
@@ -22,7 +23,6 @@ from mortarcontact.project_parameters import read_project_parameters
 
 import case_builder as cb
 from csma_cases import CSMA_CASES, KRATOS_SNAPSHOTS, MESH_TYING_CASES, check_blocks
-from test_contact_cases import run_csma_case
 
 # Kratos 10.4.4 on the same files: the tie is linear, both codes solve it in one iteration; the
 # difference is round-off of the direct solvers.
@@ -163,7 +163,7 @@ def test_tied_patch_2d_transmits_a_constant_stress_exactly(tmp_path):
     gradient = [[1.0e-3, 4.0e-4], [-2.0e-4, -1.5e-3]]
     coords, elements, parts = _two_blocks_2d()
     parts["Outer"] = {"nodes": _outer_nodes(coords, ([0.0, 0.0], [1.0, 2.0]))}
-    fix = cb.fix_process("Outer", _linear_field(gradient) + [0.0])
+    fix = cb.fix_process("Outer", [*_linear_field(gradient), 0.0])
     analysis = _run(str(tmp_path), "patch2d", coords, elements, parts, "LinearElasticPlaneStrain2DLaw",
                     {"constraints": [fix]})
     # the two interior slave nodes in both components, the two end ones in none
@@ -311,7 +311,7 @@ def tied_case(folder: str) -> str:
     coords, elements, parts = _two_blocks_2d()
     parts["Outer"] = {"nodes": _outer_nodes(coords, ([0.0, 0.0], [1.0, 2.0]))}
     cb.write_mdpa(os.path.join(folder, "tied.mdpa"), coords, elements, None, parts)
-    params = cb.project_parameters("tied", 2, constraints=[cb.fix_process("Outer", _linear_field(gradient) + [0.0])],
+    params = cb.project_parameters("tied", 2, constraints=[cb.fix_process("Outer", [*_linear_field(gradient), 0.0])],
                                    solver={"convergence_criterion": "contact_residual_criterion",
                                            "contact_settings": {"mortar_type": "ComponentsMeshTying"}})
     params["processes"]["contact_process_list"] = [_tying_process()]

@@ -12,6 +12,7 @@
 """
 from __future__ import annotations
 
+import itertools
 import json
 import os
 
@@ -43,7 +44,7 @@ def test_shared_integration_cases(name):
     """The Kratos CSMA mapper cases: every slave value within 1e-12 of the reference file (whose
     values are the linear master field at the slave node's normal projection, e.g. 0.1 / 1.01) and of
     Kratos 10.4 (their check is absolute 1e-3)."""
-    model, root = _read(name)
+    _model, root = _read(name)  # the model owns the parts
     master, slave = root.GetSubModelPart("Parts_Parts_Auto2"), root.GetSubModelPart("Parts_Parts_Auto1")
     for node in master.Nodes:
         node.SetSolutionStepValue(mc.TEMPERATURE, node.Z)
@@ -97,9 +98,9 @@ def _flat_interface(dim: int):
     if dim == 2:
         o = [node(origin, x, 0.0, 0.0) for x in np.linspace(0.0, 1.0, 4)]
         d = [node(destination, x, 0.0, 1e-3) for x in np.linspace(0.0, 1.0, 6)]
-        for a, b in zip(o[:-1], o[1:]):
+        for a, b in itertools.pairwise(o):
             add(origin, "LineCondition2D2N", [a, b])
-        for a, b in zip(d[:-1], d[1:]):
+        for a, b in itertools.pairwise(d):
             add(destination, "LineCondition2D2N", [b, a])
         return model, origin, destination
     o = [[node(origin, x, y, 0.0) for y in np.linspace(0.0, 1.0, 3)] for x in np.linspace(0.0, 1.0, 4)]
@@ -124,7 +125,7 @@ def test_linear_field_is_mapped_exactly(dim, historical):
     """A linear field on a flat non-matching interface: every destination node gets the field at its
     normal projection on the origin (1e-3 away: a linear field along the normal too), to 1e-12; scalar
     and vector; mapping_coefficient scales it."""
-    model, origin, destination = _flat_interface(dim)
+    _model, origin, destination = _flat_interface(dim)
     normal = np.array([-0.2, 1.0, 0.0]) / np.hypot(1.0, 0.2) if dim == 2 else \
         np.array([-0.1, -0.05, 1.0]) / np.sqrt(1.0125)
     for node in origin.Nodes:
@@ -162,7 +163,7 @@ def _areas(part):
 
 def test_without_the_inverse_of_d_the_dual_weighted_field():
     """inverse_of_d false: D u_d (= M u_o), i.e. the mapped field times the nodal area int N_j."""
-    model, origin, destination = _flat_interface(3)
+    _model, origin, destination = _flat_interface(3)
     for node in origin.Nodes:
         node.SetSolutionStepValue(mc.TEMPERATURE, _linear([node.X, node.Y, node.Z]))
     exact = _core.SimpleMortarMapperProcess(origin, destination, _core.Parameters("{}"))
@@ -180,7 +181,7 @@ def test_conservative_mapping_keeps_the_total_and_the_work(dim):
     """Nodal forces f_o mapped conservatively: sum f_d = sum f_o (the destination covers the origin)
     and f_d . u_d = f_o . u_o for a linear field u (the consistent map from destination to origin takes
     it exactly), to 1e-12; without D^-1, f_o is taken as a traction: sum f_d = sum_j f_o,j int N_j."""
-    model, origin, destination = _flat_interface(dim)
+    _model, origin, destination = _flat_interface(dim)
     rng = np.random.default_rng(3)
     forces = {n.Id: rng.normal(size=3) for n in origin.Nodes}
     for node in origin.Nodes:
@@ -211,7 +212,7 @@ def test_conservative_mapping_keeps_the_total_and_the_work(dim):
 
 
 def test_bad_settings_are_named():
-    model, origin, destination = _flat_interface(3)
+    _model, origin, destination = _flat_interface(3)
     with pytest.raises(mc.InputError, match="origin_variabel"):
         _core.SimpleMortarMapperProcess(origin, destination, _core.Parameters('{"origin_variabel": "TEMPERATURE"}'))
     with pytest.raises(mc.NotImplementedFeatureError, match="discontinuous_interface"):

@@ -283,12 +283,12 @@ TEST(MeshTyingScalar, LaplacianAcrossNonMatchingInterface) {
     return it->second;
   };
   std::vector<std::pair<std::array<Node*, 4>, Matrix>> elements;
-  const std::vector<Node*> all_left = {left[0], left[1], left[2], s.slave_nodes[0], s.slave_nodes[1],
-                                       s.slave_nodes[2]};
+  const std::vector<Node*> all_left = {left[0], left[1], left[2], s.slave_nodes[0], s.slave_nodes[1], s.slave_nodes[2]};
   for (int j = 0; j < 2; ++j)
-    elements.push_back({{all_left[j], all_left[3 + j], all_left[4 + j], all_left[j + 1]}, RectangleLaplacian(0.5, 0.5)});
+    elements.push_back(
+        {{all_left[j], all_left[3 + j], all_left[4 + j], all_left[j + 1]}, RectangleLaplacian(0.5, 0.5)});
   const std::vector<Node*> all_right = {s.master_nodes[0], s.master_nodes[1], s.master_nodes[2], s.master_nodes[3],
-                                        right[0], right[1], right[2], right[3]};
+                                        right[0],          right[1],          right[2],          right[3]};
   for (int j = 0; j < 3; ++j)
     elements.push_back(
         {{all_right[j], all_right[4 + j], all_right[5 + j], all_right[j + 1]}, RectangleLaplacian(0.5, 1.0 / 3)});
@@ -372,8 +372,10 @@ void CheckLinearFieldIsReproduced(Interface& s, int dim) {
   for (const Dof* dof : s.dofs) {
     const bool multiplier = dof->variable->Source() == &VECTOR_LAGRANGE_MULTIPLIER;
     const bool slave = std::find(s.slave_nodes.begin(), s.slave_nodes.end(), dof->node) != s.slave_nodes.end();
-    if (multiplier) rows.push_back(s.index[dof]);
-    else if (slave) unknowns.push_back(s.index[dof]);
+    if (multiplier)
+      rows.push_back(s.index[dof]);
+    else if (slave)
+      unknowns.push_back(s.index[dof]);
   }
   ASSERT_EQ(rows.size(), unknowns.size());
   ASSERT_EQ(rows.size(), s.slave_nodes.size() * static_cast<std::size_t>(dim));
@@ -427,7 +429,8 @@ TEST(MeshTyingInterface, ConstantTraction2D) {
   Interface s;
   Build2D(s);
   // int N_j over each side: half of the adjacent segment lengths.
-  CheckConstantTractionIsTransmitted(s, {{1, 0.2}, {2, 0.5}, {3, 0.3}}, {{10, 0.125}, {11, 0.35}, {12, 0.375}, {13, 0.15}});
+  CheckConstantTractionIsTransmitted(s, {{1, 0.2}, {2, 0.5}, {3, 0.3}},
+                                     {{10, 0.125}, {11, 0.35}, {12, 0.375}, {13, 0.15}});
 }
 
 TEST(MeshTyingInterface, LinearField3DQuadsOnTriangles) {
