@@ -18,6 +18,10 @@ KEYS_WITHOUT_EFFECT = {
     # Kratos' default is true here (false for contact). The tied D and M do not depend on how a
     # clipped polygon is cut on a flat interface; the fan is used either way.
     ("", "consider_tessellation"): "the clipped polygons of the tied pairs are cut as a fan either way",
+    # Kratos condenses inside the conditions with their parent elements; here the MixedULM solver
+    # condenses the multipliers of the components tie (contact_settings.use_mixed_ulm_solver).
+    ("", "consider_static_condensation"): "the multipliers of ComponentsMeshTying are condensed by the MixedULM "
+                                          "solver (contact_settings.use_mixed_ulm_solver) whatever its value",
 }
 
 
@@ -79,10 +83,6 @@ class MeshTyingProcess(SearchBaseProcess):
             self.python_module, TYING_KINDS[self.variable.Type()],
             f"{self.python_module}: {settings['variable_name'].Where()} '{self.variable.Name()}'")
         warn_about_keys_without_effect(settings, defaults, KEYS_WITHOUT_EFFECT)
-        if settings["consider_static_condensation"].GetBool():
-            raise _core.NotImplementedFeatureError(
-                f"{settings['consider_static_condensation'].Where()}: true (condensation of the tying multipliers "
-                "inside the conditions) is not implemented yet; the multipliers are solved for")
         scale = settings["scale_factor_parameters"]
         for key in ("stiffness_factor", "scale_factor"):
             if not 0.0 < scale[key].GetDouble() < float("inf"):

@@ -170,7 +170,13 @@ def test_tied_patch_2d_transmits_a_constant_stress_exactly(tmp_path):
     assert _check_patch(analysis, gradient, [0.0, 1.0], 2) == 4
 
 
-def _two_blocks_3d(lower=(2, 2, 2), upper=(3, 3, 2), upper_tets=False):
+def _tetrahedra(hexahedra):
+    """Each hexahedron cut into six tetrahedra around its 0-6 diagonal (its faces into two triangles)."""
+    cut = (0, 1, 2, 6), (0, 2, 3, 6), (0, 3, 7, 6), (0, 7, 4, 6), (0, 4, 5, 6), (0, 5, 1, 6)
+    return [tuple(h[i] for i in t) for h in hexahedra for t in cut]
+
+
+def _two_blocks_3d(lower=(2, 2, 2), upper=(3, 3, 2), lower_tets=False, upper_tets=False):
     c1, h1 = cb.structured_hexes(*lower, 1.0, 1.0, 1.0)
     c2, h2 = cb.structured_hexes(*upper, 1.0, 1.0, 1.0)
     c2 = c2 + np.array([0.0, 0.0, 1.0])
@@ -178,35 +184,43 @@ def _two_blocks_3d(lower=(2, 2, 2), upper=(3, 3, 2), upper_tets=False):
     h2 = [tuple(n + n1 for n in h) for h in h2]
     coords = np.vstack([c1, c2])
     ids = np.arange(1, len(coords) + 1)
-    elements = {"SmallDisplacementElement3D8N": list(h1)}
-    if upper_tets:  # each hexahedron cut into six tetrahedra around its 0-6 diagonal
-        tets = []
-        for h in h2:
-            a = (0, 1, 2, 6), (0, 2, 3, 6), (0, 3, 7, 6), (0, 7, 4, 6), (0, 4, 5, 6), (0, 5, 1, 6)
-            tets += [tuple(h[i] for i in t) for t in a]
-        elements["SmallDisplacementElement3D4N"] = tets
-        count = len(tets)
-    else:
-        elements["SmallDisplacementElement3D8N"] += h2
-        count = len(h2)
+    blocks = [_tetrahedra(h1) if lower_tets else h1, _tetrahedra(h2) if upper_tets else h2]
+    names = ["SmallDisplacementElement3D4N" if len(cells[0]) == 4 else "SmallDisplacementElement3D8N"
+             for cells in blocks]
+    elements = {}
+    for name, cells in zip(names, blocks):
+        elements.setdefault(name, []).extend(cells)
+    # write_mdpa numbers the elements consecutively, one element block after the other.
+    first, count = {}, 1
+    for name, cells in elements.items():
+        first[name] = count
+        count += len(cells)
+    lower_numbers = range(first[names[0]], first[names[0]] + len(blocks[0]))
+    offset = first[names[1]] + (len(blocks[0]) if names[1] == names[0] else 0)
+    upper_numbers = range(offset, offset + len(blocks[1]))
     top_lower = ids[:n1][np.isclose(c1[:, 2], 1.0)]
     bottom_upper = ids[n1:][np.isclose(c2[:, 2], 1.0)]
     parts = {
-        "Lower": {"nodes": ids[:n1], "elements": range(1, len(h1) + 1)},
-        "Upper": {"nodes": ids[n1:], "elements": range(len(h1) + 1, len(h1) + count + 1)},
+        "Lower": {"nodes": ids[:n1], "elements": lower_numbers},
+        "Upper": {"nodes": ids[n1:], "elements": upper_numbers},
         "Tying": {"nodes": np.concatenate([top_lower, bottom_upper])},
     }
     return coords, elements, parts
 
 
-@pytest.mark.parametrize("upper_tets", [False, True], ids=["quads-on-quads", "quads-on-triangles"])
-def test_tied_patch_3d_transmits_a_constant_stress_exactly(tmp_path, upper_tets):
-    """Non-matching 3D interface at z = 1 (2 x 2 slave quads against 3 x 3 master quads, or against the
-    triangle faces of tetrahedra): rollers on x = 0, y = 0, z = 0 and the normal displacement of
+VARIANTS_3D = {"quads-on-quads": (False, False), "quads-on-triangles": (False, True),
+               "triangles-on-quads": (True, False), "triangles-on-triangles": (True, True)}
+
+
+@pytest.mark.parametrize("variant", list(VARIANTS_3D))
+def test_tied_patch_3d_transmits_a_constant_stress_exactly(tmp_path, variant):
+    """Non-matching 3D interface at z = 1 (2 x 2 slave hexahedron faces against 3 x 3 master ones, either
+    side possibly the triangle faces of tetrahedra: quadrilaterals, triangles and mixed pairs): rollers on x = 0, y = 0, z = 0 and the normal displacement of
     u = G x prescribed on x = 1, y = 1, z = 2 (triaxial stress); exact linear field everywhere and
     k lambda = sigma n at every slave node (the rollers' edge rows excepted, see _check_patch)."""
     gradient = np.diag([1.0e-3, -1.5e-3, 8.0e-4])
-    coords, elements, parts = _two_blocks_3d(upper_tets=upper_tets)
+    lower_tets, upper_tets = VARIANTS_3D[variant]
+    coords, elements, parts = _two_blocks_3d(lower_tets=lower_tets, upper_tets=upper_tets)
     constraints = []
     for axis, (low, high) in enumerate(((0.0, 1.0), (0.0, 1.0), (0.0, 2.0))):
         ids = np.arange(1, len(coords) + 1)
@@ -378,6 +392,7 @@ def test_mesh_tying_process_keys(tmp_path):
     assert isinstance(error, mc.InputError) and "'TEMPERATURE' is not an unknown" in str(error)
     error, _ = run("typo", _tying(variable_name="DISPLACMENT"))
     assert isinstance(error, mc.InputError) and "DISPLACEMENT" in str(error)
-    # consider_static_condensation: not implemented
-    error, _ = run("condensation", _tying(consider_static_condensation=True))
-    assert isinstance(error, mc.NotImplementedFeatureError) and "consider_static_condensation" in str(error)
+    # consider_static_condensation: the MixedULM solver condenses the multipliers either way
+    condensed, log = run("condensation", _tying(consider_static_condensation=True))
+    assert "consider_static_condensation' = true" in log and "has no effect" in log
+    assert condensed.solver.contact_linear_solver.last_solve_was_condensed
