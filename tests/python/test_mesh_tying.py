@@ -215,9 +215,11 @@ VARIANTS_3D = {"quads-on-quads": (False, False), "quads-on-triangles": (False, T
 @pytest.mark.parametrize("variant", list(VARIANTS_3D))
 def test_tied_patch_3d_transmits_a_constant_stress_exactly(tmp_path, variant):
     """Non-matching 3D interface at z = 1 (2 x 2 slave hexahedron faces against 3 x 3 master ones, either
-    side possibly the triangle faces of tetrahedra: quadrilaterals, triangles and mixed pairs): rollers on x = 0, y = 0, z = 0 and the normal displacement of
-    u = G x prescribed on x = 1, y = 1, z = 2 (triaxial stress); exact linear field everywhere and
-    k lambda = sigma n at every slave node (the rollers' edge rows excepted, see _check_patch)."""
+    side possibly the triangle faces of tetrahedra: quadrilaterals, triangles and mixed pairs): rollers
+    on x = 0, y = 0, z = 0 and the normal displacement of u = G x prescribed on x = 1, y = 1, z = 2
+    (triaxial stress); exact linear field everywhere and k lambda = sigma n at every slave node (the
+    rollers' edge rows excepted, see _check_patch); the MixedULM condensation gives the monolithic
+    solution."""
     gradient = np.diag([1.0e-3, -1.5e-3, 8.0e-4])
     lower_tets, upper_tets = VARIANTS_3D[variant]
     coords, elements, parts = _two_blocks_3d(lower_tets=lower_tets, upper_tets=upper_tets)
