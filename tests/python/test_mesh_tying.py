@@ -66,6 +66,11 @@ def test_shared_mesh_tying_case(csma_cases, monkeypatch, case):
           f"{kratos_to_reference:.1e})")
     assert to_kratos <= KRATOS_TOLERANCE
     assert iterations == kratos["newton_iterations"]
+    # The reference files come from older Kratos revisions (Kratos 10.4 differs from them as much as
+    # we do); the cases' own check is absolute 1e-3, which they pass by far.
+    reference = _reference(case)
+    assert max(abs(analysis.snapshot[key][name] - value) for key, node in reference.items()
+               for name, value in node.items()) <= 1e-3
 
 
 # ---------------------------------------------------------------------------------------------
