@@ -223,3 +223,48 @@ def test_bad_settings_are_named():
     mapper = _core.SimpleMortarMapperProcess(origin, destination, _core.Parameters('{"origin_variable": "NODAL_H"}'))
     with pytest.raises(mc.InputError, match="not a solution-step variable"):
         mapper.Execute()
+
+
+def _surfaces(slave_nodes, slave_faces, master_nodes, master_faces):
+    model = mc.Model()
+    root = model.CreateModelPart("Structure")
+    root.AddNodalSolutionStepVariable(mc.TEMPERATURE)
+    slave, master = root.CreateSubModelPart("Slave"), root.CreateSubModelPart("Master")
+    properties = root.GetProperties(0)
+    for part, nodes, faces, first in ((slave, slave_nodes, slave_faces, 1), (master, master_nodes, master_faces, 100)):
+        for node_id, x in nodes.items():
+            part.CreateNewNode(node_id, *x)
+        for k, face in enumerate(faces):
+            part.CreateNewCondition("SurfaceCondition3D3N" if len(face) == 3 else "SurfaceCondition3D4N", first + k,
+                                    face, properties)
+    return model, slave, master
+
+
+@pytest.mark.parametrize("case", ["MAP-C1", "MAP-C2", "MAP-C3"])
+def test_kratos_core_mapper_cases(case):
+    """Kratos' C++ mapper tests (tests/cases/mortar_integration_reference.md section 6): T = x^2 + y^2
+    (MAP-C3: z^2 + y^2) on a master surface 0.01 (0.001) away, nearly parallel, tilted or folded, listed in
+    either orientation; the slave nodes get the field at their own position within the Kratos tolerance
+    (1e-4; MAP-C3 1e-3)."""
+    if case == "MAP-C1":
+        slave = {1: (0, 0, 0), 2: (1, 0, 0), 3: (0, 1, 0.01)}
+        master = {4: (0, 0, 0.01), 5: (1, 0, 0.01), 6: (0, 1, 0.02)}
+        model, s, m = _surfaces(slave, [[3, 2, 1]], master, [[4, 5, 6]])
+    elif case == "MAP-C2":
+        slave = {1: (0, 0, 0), 2: (1, 0, 0), 3: (1, 1, 0.01), 4: (0, 1, 0.01)}
+        master = {5: (0, 0, 0.01), 6: (1, 0, 0.01), 7: (1, 1, 0.02), 8: (0, 1, 0.02)}
+        model, s, m = _surfaces(slave, [[1, 2, 3, 4]], master, [[8, 7, 6, 5]])
+    else:
+        slave = {1: (0, 0, 0), 2: (1, 1, 1), 3: (1, 0, 1), 4: (1, 1, 0)}
+        master = {5: (1.001, 0, 1), 6: (1.001, 1, 0), 7: (0.001, 0, 0), 8: (1.001, 1, 1)}
+        model, s, m = _surfaces(slave, [[4, 3, 1], [4, 2, 3]], master, [[7, 5, 6], [5, 8, 6]])
+    field = (lambda x, y, z: z * z + y * y) if case == "MAP-C3" else (lambda x, y, z: x * x + y * y)
+    for node in m.Nodes:
+        node.SetSolutionStepValue(mc.TEMPERATURE, field(node.X, node.Y, node.Z))
+    mapper = _core.SimpleMortarMapperProcess(m, s, _core.Parameters("{}"))
+    mapper.Execute()
+    assert mapper.NumberOfMappedNodes() == s.NumberOfNodes()
+    tolerance = 1e-3 if case == "MAP-C3" else 1e-4
+    for node in s.Nodes:
+        assert node.GetSolutionStepValue(mc.TEMPERATURE) == pytest.approx(field(node.X, node.Y, node.Z),
+                                                                        abs=tolerance), node.Id
