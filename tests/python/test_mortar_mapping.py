@@ -249,15 +249,15 @@ def test_kratos_core_mapper_cases(case):
     if case == "MAP-C1":
         slave = {1: (0, 0, 0), 2: (1, 0, 0), 3: (0, 1, 0.01)}
         master = {4: (0, 0, 0.01), 5: (1, 0, 0.01), 6: (0, 1, 0.02)}
-        model, s, m = _surfaces(slave, [[3, 2, 1]], master, [[4, 5, 6]])
+        _model, s, m = _surfaces(slave, [[3, 2, 1]], master, [[4, 5, 6]])
     elif case == "MAP-C2":
         slave = {1: (0, 0, 0), 2: (1, 0, 0), 3: (1, 1, 0.01), 4: (0, 1, 0.01)}
         master = {5: (0, 0, 0.01), 6: (1, 0, 0.01), 7: (1, 1, 0.02), 8: (0, 1, 0.02)}
-        model, s, m = _surfaces(slave, [[1, 2, 3, 4]], master, [[8, 7, 6, 5]])
+        _model, s, m = _surfaces(slave, [[1, 2, 3, 4]], master, [[8, 7, 6, 5]])
     else:
         slave = {1: (0, 0, 0), 2: (1, 1, 1), 3: (1, 0, 1), 4: (1, 1, 0)}
         master = {5: (1.001, 0, 1), 6: (1.001, 1, 0), 7: (0.001, 0, 0), 8: (1.001, 1, 1)}
-        model, s, m = _surfaces(slave, [[4, 3, 1], [4, 2, 3]], master, [[7, 5, 6], [5, 8, 6]])
+        _model, s, m = _surfaces(slave, [[4, 3, 1], [4, 2, 3]], master, [[7, 5, 6], [5, 8, 6]])
     field = (lambda x, y, z: z * z + y * y) if case == "MAP-C3" else (lambda x, y, z: x * x + y * y)
     for node in m.Nodes:
         node.SetSolutionStepValue(mc.TEMPERATURE, field(node.X, node.Y, node.Z))
