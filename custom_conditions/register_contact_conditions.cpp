@@ -10,6 +10,7 @@
 #include "custom_conditions/alm_frictionless_components_mortar_contact_condition.h"
 #include "custom_conditions/alm_frictionless_mortar_contact_condition.h"
 #include "custom_conditions/axisymmetric_mortar_contact_condition.h"
+#include "custom_conditions/mesh_tying_mortar_condition.h"
 #include "custom_conditions/normal_variation_mortar_contact_condition.h"
 #include "custom_conditions/penalty_frictional_mortar_contact_condition.h"
 #include "custom_conditions/penalty_frictionless_mortar_contact_condition.h"
@@ -47,6 +48,7 @@ void RegisterAll() {
   AddAllGeometries<PenaltyFrictionalMortarContactCondition>();
   AddAllGeometries<ALMNVFrictionalMortarContactCondition>();
   AddAllGeometries<PenaltyNVFrictionalMortarContactCondition>();
+  AddAllGeometries<MeshTyingMortarCondition>();
 
   Add<ALMFrictionlessAxisymMortarContactCondition, 2, 2, 2>(GT::Line2D2, GT::Line2D2);
   Add<PenaltyFrictionlessAxisymMortarContactCondition, 2, 2, 2>(GT::Line2D2, GT::Line2D2);

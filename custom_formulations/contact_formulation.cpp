@@ -99,7 +99,7 @@ std::string ContactFormulation::ConditionStem(bool normal_variation, bool axisym
     throw NotImplementedError(Concat("alternative_formulations.axisymmetric: ", d_.mortar_type,
                                      " has no axisymmetric conditions (Kratos has none either)"));
   return Concat(d_.enforcement, normal_variation ? "NV" : "", d_.contact_kind, axisymmetric ? "Axisym" : "",
-                "MortarContactCondition");
+                d_.condition_suffix);
 }
 
 std::shared_ptr<ConvergenceCriteria> ContactFormulation::CreateActiveSetCriterion(Parameters contact_settings) const {

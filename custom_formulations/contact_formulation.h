@@ -32,6 +32,9 @@ class ContactFormulation {
     std::string contact_type;  ///< that process' contact_type: "Frictionless"
     std::string enforcement;   ///< condition name stem: "ALM", "Penalty"
     std::string contact_kind;  ///< condition name stem: "Frictionless", "FrictionlessComponents"
+    /// End of the condition name stem: the contact pairs' ("MortarContactCondition") or the tying
+    /// pairs' ("MortarCondition", spec 6.2: MeshTyingMortarCondition3D4N).
+    std::string condition_suffix = "MortarContactCondition";
     /// Nodal solution-step variables the solver adds, and the (DoF, reaction) pairs.
     std::vector<std::string> variables;
     std::vector<std::pair<std::string, std::string>> dofs;

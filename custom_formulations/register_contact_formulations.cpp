@@ -116,12 +116,37 @@ void RegisterAll() {
         .active_set_criterion = FrictionalCriterion<PenaltyFrictionalMortarConvergenceCriteria>(pure_slip),
     });
   }
-  for (const std::string& mortar_type : {"ScalarMeshTying", "ComponentsMeshTying"})
-    ContactFormulation::Register(
-        D{.mortar_type = mortar_type,
-          .process = "mesh_tying_process",
-          .active_set_criterion = [](Parameters) { return std::make_shared<MeshTyingMortarConvergenceCriteria>(); },
-          .not_implemented = "mortar mesh tying"});
+  // Mesh tying (spec 2.10): no inequality, so no active set; the tied variable comes from the
+  // process' variable_name, which must match (array -> components, scalar -> scalar). The condition
+  // name has no enforcement / kind tokens: "MeshTyingMortarCondition" + geometry.
+  const auto tying_criterion = [](Parameters) { return std::make_shared<MeshTyingMortarConvergenceCriteria>(); };
+  ContactFormulation::Register(D{
+      .mortar_type = "ComponentsMeshTying",
+      .process = "mesh_tying_process",
+      .contact_type = "Components",
+      .enforcement = "MeshTying",
+      .condition_suffix = "MortarCondition",
+      .variables = {"VECTOR_LAGRANGE_MULTIPLIER", "WEIGHTED_VECTOR_RESIDUAL"},
+      .dofs = vector_multiplier,
+      .multiplier = "VECTOR_LAGRANGE_MULTIPLIER",
+      .multiplier_blocks = 1,
+      // Kratos solves the tie monolithically; its rows have the structure MixedULM condenses (slave rows
+      // -k D_jj I per node, every tied slave node ACTIVE: MeshTyingUtilities), with the same solution.
+      .condensable = true,
+      .active_set_criterion = tying_criterion,
+  });
+  ContactFormulation::Register(D{
+      .mortar_type = "ScalarMeshTying",
+      .process = "mesh_tying_process",
+      .contact_type = "Scalar",
+      .enforcement = "MeshTying",
+      .condition_suffix = "MortarCondition",
+      .variables = {"SCALAR_LAGRANGE_MULTIPLIER", "WEIGHTED_SCALAR_RESIDUAL"},
+      .dofs = {{"SCALAR_LAGRANGE_MULTIPLIER", "WEIGHTED_SCALAR_RESIDUAL"}},
+      .multiplier = "SCALAR_LAGRANGE_MULTIPLIER",
+      .multiplier_blocks = 1,
+      .active_set_criterion = tying_criterion,
+  });
 
   // As in Kratos, the condensing solver wraps the solver of linear_solver_settings and is chosen
   // by contact_settings.mixed_ulm_solver_parameters; as a linear solver of its own it has nothing

@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Bindings of the contact interface set-up, search and ALM parameter processes.
+// Bindings of the contact interface set-up, search, ALM parameter, mesh-tying and mortar mapping processes.
 #include "core/model/model_part.h"
 #include "core/parameters/parameters.h"
 #include "custom_processes/alm_variables_calculation_process.h"
 #include "custom_processes/contact_interface_builder.h"
 #include "custom_processes/contact_output_utilities.h"
 #include "custom_processes/contact_search_process.h"
+#include "custom_processes/mesh_tying_utilities.h"
+#include "custom_processes/simple_mortar_mapper_process.h"
 #include "custom_python/python_module.h"
 
 namespace mc::python {
@@ -107,6 +109,26 @@ void AddContactProcessesToPython(py::module_& m) {
            "and the nodal INITIAL_PENALTY.")
       .def("Penalty", &ALMVariablesCalculationProcess::Penalty, "The penalty of the last Execute (force / length^3).")
       .def("ScaleFactor", &ALMVariablesCalculationProcess::ScaleFactor, "The scale factor of the last Execute.");
+
+  py::class_<MeshTyingUtilities>(m, "MeshTyingUtilities", "What the mesh-tying process does to its tied pairs.")
+      .def_static("UpdateTiedSlaveNodes", &MeshTyingUtilities::UpdateTiedSlaveNodes, py::arg("computing_part"),
+                  "Flags the tied slave nodes ACTIVE (for the MixedULM condensation), fixes to zero the tying "
+                  "multipliers whose rows have no free DoF in any pair (Dirichlet conditions on both sides there) "
+                  "and frees the others; returns how many were fixed.");
+
+  py::class_<SimpleMortarMapperProcess>(
+      m, "SimpleMortarMapperProcess",
+      "Mortar mapping of a nodal scalar or array variable from an origin surface to a non-matching destination "
+      "surface (Kratos' SimpleMortarMapperProcess settings; consistent or conservative, with or without D^-1).")
+      .def(py::init<ModelPart&, ModelPart&, Parameters>(), py::arg("origin"), py::arg("destination"),
+           py::arg("settings") = Parameters(), py::keep_alive<1, 2>(), py::keep_alive<1, 3>(),
+           "A mapper between the faces of the two model parts; settings are validated against the defaults.")
+      .def_static("GetDefaultParameters", &SimpleMortarMapperProcess::GetDefaultParameters,
+                  "Kratos' keys and defaults, plus conservative (false) and inverse_of_d (true).")
+      .def("Execute", &SimpleMortarMapperProcess::Execute, "Maps the current values of origin_variable.")
+      .def("NumberOfPairs", &SimpleMortarMapperProcess::NumberOfPairs, "Overlapping pairs of the last Execute.")
+      .def("NumberOfMappedNodes", &SimpleMortarMapperProcess::NumberOfMappedNodes,
+           "Destination nodes reached by an overlap in the last Execute.");
 
   m.def("ComputeContactOutputs", &ComputeContactOutputs, py::arg("part"), py::arg("clear_inactive"),
         "The contact tractions, forces and gaps of the slave nodes at the end of a converged step; with "

@@ -4,7 +4,7 @@ and writes the requested nodal values at the requested time:
 
     python kratos_case_runner.py PARAMETERS REQUEST FORMULATION OUTPUT
 REQUEST: {"time": t, "nodes": {"NODE_<id>": ["VAR", ...]}}; FORMULATION: scalar | components |
-frictional (as written), the formulation PARAMETERS were migrated to (recorded only).
+frictional or tying (as written), the formulation PARAMETERS were migrated to (recorded only).
 Non-historical variables (AUGMENTED_NORMAL_CONTACT_PRESSURE) are read with GetValue. The Newton
 iterations of every step are stored too.
 """

@@ -33,11 +33,13 @@ sys.path.insert(0, os.path.join(ROOT, "benchmarks", "hertz"))
 sys.path.insert(0, os.path.join(ROOT, "tests", "python"))
 
 import harness  # noqa: E402
-from csma_cases import FRICTIONAL_CASES, FRICTIONLESS_CASES, reference_values  # noqa: E402
+from csma_cases import FRICTIONAL_CASES, FRICTIONLESS_CASES, MESH_TYING_CASES, reference_values  # noqa: E402
 from kratos_migration import CSMA_CASES, migrated_case  # noqa: E402
 
 OUTPUT = os.path.join(ROOT, "tests", "cases", "kratos_10_4")
 RUNNER = os.path.join(HERE, "kratos_case_runner.py")
+#: formulations run as the case is written (no switch of the contact processes)
+AS_WRITTEN = ("frictional", "tying")
 
 
 def main(argv=None) -> int:
@@ -45,7 +47,7 @@ def main(argv=None) -> int:
     parser.add_argument("--cases", default="all", help="comma-separated case paths (folder/case) or 'all'")
     args = parser.parse_args(argv)
     python = harness.kratos_python()
-    known = dict(FRICTIONLESS_CASES + FRICTIONAL_CASES)
+    known = dict(FRICTIONLESS_CASES + FRICTIONAL_CASES + MESH_TYING_CASES)
     cases = list(known) if args.cases == "all" else args.cases.split(",")
     os.makedirs(OUTPUT, exist_ok=True)
     with tempfile.TemporaryDirectory() as folder:
@@ -57,7 +59,7 @@ def main(argv=None) -> int:
                 json.dump({"time": time, "nodes": nodes}, f)
             for formulation in formulations:
                 parameters = migrated_case(os.path.join(CSMA_CASES, f"{case}_parameters.json"), folder,
-                                           None if formulation == "frictional" else formulation)
+                                           None if formulation in AS_WRITTEN else formulation)
                 out = os.path.join(OUTPUT, f"{os.path.basename(case)}_{formulation}.json")
                 subprocess.run([python, RUNNER, parameters, request, formulation, out], check=True,
                                env={**os.environ, "OMP_NUM_THREADS": "1"})

@@ -3,7 +3,8 @@ under their module by the process factory."""
 from __future__ import annotations
 
 from .alm_contact_process import ALMContactProcess
-from .not_implemented_processes import ExplicitPenaltyContactProcess, MeshTyingProcess, MPCContactProcess
+from .mesh_tying_process import MeshTyingProcess
+from .not_implemented_processes import ExplicitPenaltyContactProcess, MPCContactProcess
 from .penalty_contact_process import PenaltyContactProcess
 
 CONTACT_MODULE = "ContactStructuralMechanicsApplication"

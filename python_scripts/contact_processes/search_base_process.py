@@ -29,9 +29,11 @@ class NotImplementedContactProcess(Process):
 
 
 class SearchBaseProcess(Process):
-    """Base of the ALM and penalty processes: interface set-up and contact search."""
+    """Base of the ALM, penalty and mesh-tying processes: interface set-up and contact search."""
 
     python_module = ""
+    #: The slot keys are "<pair_prefix>_model_part" and "<pair_prefix>_property_ids" (spec 4.1).
+    pair_prefix = "contact"
 
     @classmethod
     def GetDefaultParameters(cls) -> _core.Parameters:
@@ -69,15 +71,20 @@ class SearchBaseProcess(Process):
     def interface_slots(self) -> list[tuple[str, list[str], list[str], int, float]]:
         """(slot, parts, slave parts, property id, friction coefficient) of the non-empty slots;
         all empty -> one slot over the skin of the whole model (spec 4.1)."""
-        parts, slaves = self.settings["contact_model_part"], self.settings["assume_master_slave"]
-        ids, mus = self.settings["contact_property_ids"], self.settings["friction_coefficients"]
+        parts, slaves = self.settings[f"{self.pair_prefix}_model_part"], self.settings["assume_master_slave"]
+        ids = self.settings[f"{self.pair_prefix}_property_ids"]
+
+        def mu(slot: str) -> float:  # mesh tying has no friction coefficients
+            mus = self.settings["friction_coefficients"] if self.settings.Has("friction_coefficients") else None
+            return mus[slot].GetDouble() if mus is not None else 0.0
+
         slots = []
         for slot in _settings.SLOTS:
             names = parts[slot].GetStringArray()
             if names:
-                slots.append((slot, names, slaves[slot].GetStringArray(), ids[slot].GetInt(), mus[slot].GetDouble()))
+                slots.append((slot, names, slaves[slot].GetStringArray(), ids[slot].GetInt(), mu(slot)))
         if not slots:
-            slots.append(("0", [], slaves["0"].GetStringArray(), ids["0"].GetInt(), mus["0"].GetDouble()))
+            slots.append(("0", [], slaves["0"].GetStringArray(), ids["0"].GetInt(), mu("0")))
         return slots
 
     # Hooks ---------------------------------------------------------------------------------------

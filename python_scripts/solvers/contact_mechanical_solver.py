@@ -109,6 +109,7 @@ class ContactMechanicalSolver(MechanicalSolver):
         self.mortar_updater = updater  # its timings are read by the benchmarks
         criteria = create_contact_convergence_criteria(s, self._formulation_of_run(), self.echo_level, updater)
         linear_solver = self._create_contact_linear_solver()
+        self.contact_linear_solver = linear_solver  # the tests read whether MixedULM condensed
         initialize, finalize = self.sub_step_callbacks
         return create_contact_strategy(part, s, self._create_scheme(part), linear_solver, criteria,
                                        self.echo_level, updater, initialize, finalize)

@@ -30,6 +30,13 @@ FRICTIONAL_CASES = [
     ("penalty_frictional_contact_test_2D/hyper_simple_slip_patch_test", ("frictional",)),
 ]
 
+#: The mesh-tying cases (issue 13), run as written ("tying": ComponentsMeshTying, mesh_tying_process).
+MESH_TYING_CASES = [
+    ("mesh_tying_test/simple_patch_test_2D", ("tying",)),
+    ("mesh_tying_test/hyper_simple_slope_patch_test_2D", ("tying",)),
+    ("mesh_tying_test/3D_contact_simplest_patch_matching_test", ("tying",)),
+]
+
 #: Cases whose reference time is never reached with their own time stepping: the reference file
 #: (t = 1.1) and the parameters (dt 0.5 up to 0.99) come from different Kratos revisions. The
 #: values are taken at the last step instead, for the comparison with Kratos 10.4 only.

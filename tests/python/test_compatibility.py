@@ -26,7 +26,8 @@ def test_parameters_files_validate(path, monkeypatch):
     contact = solver_settings["contact_settings"]["mortar_type"].GetString() \
         if solver_settings.Has("contact_settings") else ""
     implemented = contact in ("", "ALMContactFrictionless", "PenaltyContactFrictionless", "ALMContactFrictional",
-                              "ALMContactFrictionalPureSlip", "PenaltyContactFrictional") \
+                              "ALMContactFrictionalPureSlip", "PenaltyContactFrictional",
+                              "ComponentsMeshTying", "ScalarMeshTying") \
         and not solver_settings.Has("mpc_contact_settings")
     if implemented:
         create_solver(mc.Model(), solver_settings)

@@ -21,8 +21,14 @@ def test_formulations_are_registered_once():
     assert formulation.mortar_type == "ALMContactFrictionless"
     with pytest.raises(mc.InputError, match="did you mean 'ALMContactFrictionless'"):
         _core.ContactFormulation.Get("ALMContatFrictionless")
-    with pytest.raises(mc.NotImplementedFeatureError, match=r"ComponentsMeshTying.*mesh tying"):
-        _core.ContactFormulation.Get("ComponentsMeshTying")
+    # Mesh tying (issue 13): no contact_type of its own; the process picks it by the tied variable's kind.
+    tying = _core.ContactFormulation.OfProcess("mesh_tying_process", "Components")
+    assert tying.mortar_type == "ComponentsMeshTying"
+    assert tying.ConditionStem(False, False) == "MeshTyingMortarCondition"
+    assert (tying.multiplier, tying.multiplier_blocks, tying.condensable) == ("VECTOR_LAGRANGE_MULTIPLIER", 1, True)
+    scalar = _core.ContactFormulation.OfProcess("mesh_tying_process", "Scalar")
+    assert scalar.mortar_type == "ScalarMeshTying" and scalar.dofs == [("SCALAR_LAGRANGE_MULTIPLIER",
+                                                                         "WEIGHTED_SCALAR_RESIDUAL")]
     assert _core.ContactFormulation.ContactTypes("penalty_contact_process") == [
         "Frictional", "FrictionalPureSlip", "Frictionless"]
 
