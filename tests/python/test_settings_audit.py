@@ -759,7 +759,8 @@ def test_search_keys(tmp_path):
 
 def test_normal_check_proportion(tmp_path):
     """The inverted-normal check steps normal_check_proportion x the face size off each interface
-    face: a step beyond the parent element cannot see that the face points into it."""
+    face and flips a face that points into its element, with a warning naming it (as Kratos does); a
+    step beyond the parent element cannot see it, and 0 turns the check off."""
     def inverted(folder):
         path = contact_case(folder)
         mdpa = os.path.join(folder, "contact.mdpa")
@@ -774,10 +775,20 @@ def test_normal_check_proportion(tmp_path):
             f.write(text)
         return path
     faces = {"contact_model_part": {"0": ["Contact_Part", "upper_face"]}}
-    error = _run(tmp_path / "default", base=inverted, edit=_process(**faces))
-    assert isinstance(error, mc.InputError) and "inverted normals" in str(error), error
-    blind = _run(tmp_path / "blind", base=inverted, edit=_process(**faces, normal_check_proportion=5.0))
-    assert not (isinstance(blind, Exception) and "inverted normals" in str(blind)), blind
+    flipped, log = _run_logged(tmp_path / "default", base=inverted, edit=_process(**faces))
+    assert not isinstance(flipped, Exception), flipped
+    assert "condition 1 (nodes 6 5) points into element" in log and "flipped" in log, log
+    condition = flipped.model.GetModelPart("Structure.upper_face").GetCondition(1)
+    assert [node.Id for node in condition.GetNodes()] == [5, 6]
+    # The flipped face duplicates a master face of Contact_Part: the displacements are those of the
+    # case without it (the multipliers balance two master faces instead of one).
+    def displacements(analysis):
+        return [(node, values[:3]) for node, values in _nodal_values(analysis)]
+    assert displacements(flipped) == displacements(_run(tmp_path / "plain"))
+    blind, log = _run_logged(tmp_path / "blind", base=inverted, edit=_process(**faces, normal_check_proportion=5.0))
+    assert "flipped" not in log, log
+    off, log = _run_logged(tmp_path / "off", base=inverted, edit=_process(**faces, normal_check_proportion=0.0))
+    assert "flipped" not in log, log
 
 
 def test_vtk_condition_keys(tmp_path):
