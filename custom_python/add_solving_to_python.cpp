@@ -120,7 +120,10 @@ void AddSolvingToPython(py::module_& m) {
                }),
            py::arg("id"), py::arg("slave"), py::arg("masters"), py::arg("weights"), py::arg("constant") = 0.0,
            "InputError when masters and weights differ in size or the slave is also a master.")
-      .def("Id", &MasterSlaveConstraint::Id, "The constraint's id.");
+      .def("Id", &MasterSlaveConstraint::Id, "The constraint's id.")
+      .def("IsActive", &MasterSlaveConstraint::IsActive, "Whether the builders eliminate it.")
+      .def("SetActive", &MasterSlaveConstraint::SetActive, py::arg("active"),
+           "Switches it on or off; takes effect at the builder's next DoF set-up.");
   py::class_<BlockBuilderAndSolver, BuilderAndSolver, std::shared_ptr<BlockBuilderAndSolver>>(
       m, "BlockBuilderAndSolver",
       "block: every DoF is an unknown; fixed rows and columns are zeroed with a positive diagonal (Kratos "
