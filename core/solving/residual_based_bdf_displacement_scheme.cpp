@@ -2,8 +2,6 @@
 #include "core/solving/residual_based_bdf_displacement_scheme.h"
 
 #include "core/model/model_part.h"
-#include "core/model/parallel_utilities.h"
-#include "core/solving/time_derivatives.h"
 
 namespace mc {
 
@@ -74,95 +72,27 @@ void ResidualBasedBDFDisplacementScheme::FinalizeSolutionStep(ModelPart& model_p
 }
 
 void ResidualBasedBDFDisplacementScheme::UpdateDerivatives(const DofsArray& dofs) const {
-  const long n = static_cast<long>(dofs.size());
-#pragma omp parallel for schedule(static) if (n >= kMinParallelDofs)
-  for (long i = 0; i < n; ++i) {
-    const Dof& d = *dofs[i];
-    const Variable<double>* vel = TimeDerivativeOf(*d.variable, 1);
-    const Variable<double>* acc = TimeDerivativeOf(*d.variable, 2);
-    if (!vel || !d.node->HasSolutionStepValue(*vel) || !d.node->HasSolutionStepValue(*acc)) continue;
+  ForEachDynamicDof(dofs, false, [&](const Dof& d, const Variable<double>& vel, const Variable<double>& acc) {
     Node& node = *d.node;
     double v = 0.0;
     for (int k = 0; k <= order_; ++k) v += c_[static_cast<std::size_t>(k)] * d.Value(k);
-    node.FastGetSolutionStepValue(*vel) = v;
+    node.FastGetSolutionStepValue(vel) = v;
     double a = 0.0;
-    for (int k = 0; k <= order_; ++k) a += c_[static_cast<std::size_t>(k)] * node.FastGetSolutionStepValue(*vel, k);
-    node.FastGetSolutionStepValue(*acc) = a;
-  }
+    for (int k = 0; k <= order_; ++k) a += c_[static_cast<std::size_t>(k)] * node.FastGetSolutionStepValue(vel, k);
+    node.FastGetSolutionStepValue(acc) = a;
+  });
 }
 
 void ResidualBasedBDFDisplacementScheme::Predict(ModelPart& model_part, const DofsArray& dofs) {
-  const long n = static_cast<long>(dofs.size());
-#pragma omp parallel for schedule(static) if (n >= kMinParallelDofs)
-  for (long i = 0; i < n; ++i) {
-    const Dof& d = *dofs[i];
-    if (d.fixed) continue;
-    const Variable<double>* vel = TimeDerivativeOf(*d.variable, 1);
-    if (!vel || !d.node->HasSolutionStepValue(*vel)) continue;
-    d.Value(0) = d.Value(1) + dt_ * d.node->FastGetSolutionStepValue(*vel, 1);
-  }
+  ForEachDynamicDof(dofs, true, [&](const Dof& d, const Variable<double>& vel, const Variable<double>&) {
+    d.Value(0) = d.Value(1) + dt_ * d.node->FastGetSolutionStepValue(vel, 1);
+  });
   UpdateDerivatives(dofs);
 }
 
 void ResidualBasedBDFDisplacementScheme::Update(ModelPart& model_part, const DofsArray& dofs, const Vector& dx) {
   Scheme::Update(model_part, dofs, dx);
   UpdateDerivatives(dofs);
-}
-
-void ResidualBasedBDFDisplacementScheme::Check(const ModelPart& model_part) const {
-  Scheme::Check(model_part);
-  if (model_part.GetBufferSize() < static_cast<std::size_t>(order_) + 1)
-    throw InputError(Concat(Name(), " scheme: buffer_size ", model_part.GetBufferSize(), " of model part ",
-                            model_part.Name(), " must be at least ", order_ + 1));
-  for (const VariableData* v :
-       {static_cast<const VariableData*>(&VELOCITY), static_cast<const VariableData*>(&ACCELERATION)})
-    if (!model_part.HasNodalSolutionStepVariable(*v))
-      throw InputError(
-          Concat(Name(), " scheme: ", v->Name(), " is not a historical variable of model part ", model_part.Name()));
-}
-
-void ResidualBasedBDFDisplacementScheme::CalculateSystemContributions(Entity& entity, Matrix& lhs, Vector& rhs,
-                                                                      EquationIdVectorType& ids,
-                                                                      const ProcessInfo& info) {
-  entity.CalculateLocalSystem(lhs, rhs, info);
-  AddDynamics(entity, &lhs, &rhs, ids, info);
-}
-
-void ResidualBasedBDFDisplacementScheme::CalculateLHSContribution(Entity& entity, Matrix& lhs,
-                                                                  EquationIdVectorType& ids, const ProcessInfo& info) {
-  entity.CalculateLeftHandSide(lhs, info);
-  AddDynamics(entity, &lhs, nullptr, ids, info);
-}
-
-void ResidualBasedBDFDisplacementScheme::CalculateRHSContribution(Entity& entity, Vector& rhs,
-                                                                  EquationIdVectorType& ids, const ProcessInfo& info) {
-  entity.CalculateRightHandSide(rhs, info);
-  AddDynamics(entity, nullptr, &rhs, ids, info);
-}
-
-void ResidualBasedBDFDisplacementScheme::AddDynamics(Entity& entity, Matrix* lhs, Vector* rhs,
-                                                     EquationIdVectorType& ids, const ProcessInfo& info) {
-  static thread_local Matrix mass;
-  static thread_local Matrix damping;
-  static thread_local Vector derivative;
-  entity.CalculateMassMatrix(mass, info);
-  entity.CalculateDampingMatrix(damping, info);
-  const double c0 = c_[0];
-  if (lhs) {
-    if (mass.size() > 0) *lhs += c0 * c0 * mass;
-    if (damping.size() > 0) *lhs += c0 * damping;
-  }
-  if (rhs) {
-    if (mass.size() > 0) {
-      entity.GetSecondDerivativesVector(derivative, 0);
-      rhs->noalias() -= mass * derivative;
-    }
-    if (damping.size() > 0) {
-      entity.GetFirstDerivativesVector(derivative, 0);
-      rhs->noalias() -= damping * derivative;
-    }
-  }
-  entity.EquationIdVector(ids, info);
 }
 
 }  // namespace mc

@@ -4,7 +4,7 @@
 #include <array>
 #include <string>
 
-#include "core/solving/scheme.h"
+#include "core/solving/implicit_dynamic_scheme.h"
 
 namespace mc {
 
@@ -22,7 +22,7 @@ namespace mc {
 /// velocity into an O(dt) error that drifts over the run, first order globally): they are
 /// filled with the Taylor expansion of the initial state backwards in time,
 /// u(-s) = u_0 - s v_0 + s^2/2 a_0, v(-s) = v_0 - s a_0, consistent to second order.
-class ResidualBasedBDFDisplacementScheme : public Scheme {
+class ResidualBasedBDFDisplacementScheme : public ImplicitDynamicScheme {
  public:
   static constexpr int kMaxOrder = 5;
 
@@ -42,19 +42,15 @@ class ResidualBasedBDFDisplacementScheme : public Scheme {
   /// u_{n+1} = u_n + dt v_n for free DoFs; derivatives of every DoF follow its value.
   void Predict(ModelPart& model_part, const DofsArray& dofs) override;
   void Update(ModelPart& model_part, const DofsArray& dofs, const Vector& dx) override;
-  void Check(const ModelPart& model_part) const override;
 
-  void CalculateSystemContributions(Entity& entity, Matrix& lhs, Vector& rhs, EquationIdVectorType& ids,
-                                    const ProcessInfo& info) override;
-  void CalculateLHSContribution(Entity& entity, Matrix& lhs, EquationIdVectorType& ids,
-                                const ProcessInfo& info) override;
-  void CalculateRHSContribution(Entity& entity, Vector& rhs, EquationIdVectorType& ids,
-                                const ProcessInfo& info) override;
+ protected:
+  int MinimumBufferSize() const override { return order_ + 1; }
+  double MassFactor() const override { return c_[0] * c_[0]; }
+  double DampingFactor() const override { return c_[0]; }
 
  private:
   void UpdateDerivatives(const DofsArray& dofs) const;
   void FillInitialHistory(ModelPart& model_part) const;
-  void AddDynamics(Entity& entity, Matrix* lhs, Vector* rhs, EquationIdVectorType& ids, const ProcessInfo& info);
 
   int order_;
   double dt_ = 0.0;
