@@ -677,13 +677,18 @@ def test_process_info_keys_of_the_contact_process(tmp_path):
 
 def test_normal_variation_chooses_the_conditions(tmp_path):
     """normal_variation "nodal_elemental_derivatives" and "elemental_derivatives" both build the NV
-    conditions (the exact dn/du of the nodal normals; see alm_contact_process.NORMAL_DERIVATIVES)."""
-    names = {variation: {name for name, _ in _pairs(_run(tmp_path / variation, edit=_process(
-        normal_variation=variation)))} for variation in ("no_derivatives_computation", "elemental_derivatives",
-                                                          "nodal_elemental_derivatives")}
+    conditions (the exact dn/du of the nodal normals; see alm_contact_process.NORMAL_DERIVATIVES);
+    "elemental_derivatives" warns that it runs as the other."""
+    names, logs = {}, {}
+    for variation in ("no_derivatives_computation", "elemental_derivatives", "nodal_elemental_derivatives"):
+        analysis, logs[variation] = _run_logged(tmp_path / variation, edit=_process(normal_variation=variation))
+        names[variation] = {name for name, _ in _pairs(analysis)}
     assert names["no_derivatives_computation"] == {"ALMFrictionlessMortarContactCondition2D2N"}
     assert names["elemental_derivatives"] == names["nodal_elemental_derivatives"] == {
         "ALMNVFrictionlessMortarContactCondition2D2N"}
+    warnings = [m for m in NO_EFFECT.finditer(logs["elemental_derivatives"]) if m["key"] == "normal_variation"]
+    assert len(warnings) == 1 and 'runs as "nodal_elemental_derivatives"' in logs["elemental_derivatives"]
+    assert "normal_variation" not in logs["nodal_elemental_derivatives"]
 
 
 def test_manual_alm_parameters(tmp_path):
@@ -785,9 +790,9 @@ def test_normal_check_proportion(tmp_path):
     def displacements(analysis):
         return [(node, values[:3]) for node, values in _nodal_values(analysis)]
     assert displacements(flipped) == displacements(_run(tmp_path / "plain"))
-    blind, log = _run_logged(tmp_path / "blind", base=inverted, edit=_process(**faces, normal_check_proportion=5.0))
+    _, log = _run_logged(tmp_path / "blind", base=inverted, edit=_process(**faces, normal_check_proportion=5.0))
     assert "flipped" not in log, log
-    off, log = _run_logged(tmp_path / "off", base=inverted, edit=_process(**faces, normal_check_proportion=0.0))
+    _, log = _run_logged(tmp_path / "off", base=inverted, edit=_process(**faces, normal_check_proportion=0.0))
     assert "flipped" not in log, log
 
 
@@ -857,7 +862,8 @@ def test_scheme_type(tmp_path):
     assert bdf2.model.GetModelPart("Structure").GetBufferSize() == 3
     backward_euler = run("backward_euler", "backward_euler")
     assert _nodal_values(backward_euler) == _nodal_values(run("bdf1", "bdf1"))
-    answers = {str(_nodal_values(a)) for a in (bdf2, backward_euler, run("bossak", "bossak"), run("newmark", "newmark"))}
+    runs = (bdf2, backward_euler, run("bossak", "bossak"), run("newmark", "newmark"))
+    answers = {str(_nodal_values(a)) for a in runs}
     assert len(answers) == 4
     error = _run(tmp_path / "relaxation", base=_dense_square, edit=_solver(solver_type="Dynamic",
                                                                            scheme_type="relaxation"))
