@@ -31,12 +31,26 @@ namespace mc {
 ///
 /// Fixed DoFs (identity rows of the block builder, absent rows of the elimination builder) are
 /// "other": a fixed multiplier leaves its slave row unpaired and vice versa; unpaired rows and
-/// unknowns stay in the condensed system, which is exact for them too.
+/// unknowns stay in the condensed system, which is exact for them too. With master-slave
+/// constraints a master's row also holds its slaves' rows; where that couples a slave row to
+/// another node's multipliers the block check below fails and the system is solved in full.
 ///
 /// The result equals the monolithic solution. When K_{S_A,LM_A} is not block diagonal by node
-/// (an entry at another node's multiplier |K_sl'| > kDiagonalTolerance * row max, e.g. a dual
-/// basis of a partially covered slave element), a block is singular, or an LM_I row is not
-/// diagonal, the full system is solved by the inner solver and the reason is logged once.
+/// (an entry at another node's multiplier |K_sl'| > kDiagonalTolerance * row max), a block is
+/// singular, or an LM_I row is not diagonal, the full system is solved by the inner solver and
+/// the reason is logged once.
+///
+/// Why K_{S_A,LM_A} can be off the block diagonal (issue 18): K_{S,LM} = dR_S/dlambda = k D^T
+/// (times DYNAMIC_FACTOR), nothing else in the residual of a slave row depends on the multipliers,
+/// and each pair's D is diagonal by construction of its dual basis (to round-off). The exception
+/// is a sliver pair, whose overlap is too thin for a regular dual basis and which takes the
+/// standard one (DualLagrangeMultiplier): its D = M couples the two or more nodes of its slave
+/// face by about the sliver's area. The components patches (hyper-simple, slope, triangle) have
+/// no sliver and condense at every solve; the dynamic Taylor patch (components) meets one and
+/// solves that system in full (the entry was 1.3e-7 against its row's largest;
+/// tests/python/test_contact_cases.py::test_mixed_ulm_condenses_the_components_patches). Dropping it would make the
+/// condensed solution differ from the monolithic one; grouping the coupled nodes into one block would re-analyse the
+/// condensed pattern whenever a sliver appears; a full solve, logged, is exact and rare.
 ///
 /// Work per solve with an unchanged pattern and active set: one pass over precomputed index
 /// lists (no search, no allocation); the inner solver is initialized again only when the

@@ -10,6 +10,7 @@
 
 #include "core/geometries/reference_element.h"
 #include "core/utilities/error.h"
+#include "core/utilities/logger.h"
 #include "core/utilities/string_utilities.h"
 #include "core/variables/kernel_variables.h"
 #include "custom_utilities/contact_search_geometry.h"
@@ -305,33 +306,49 @@ std::vector<Element*> ContactInterfaceBuilder::FindParentElements(ModelPart& roo
 
 void ContactInterfaceBuilder::CheckNormals(ModelPart& sub, const ContactInterfaceSettings& settings) {
   // (1) Each condition's normal must leave its parent element: a point a small step inside
-  // along -n lies in the element, a step along +n does not.
-  const std::vector<Element*> parents = FindParentElements(root_, sub);
-  std::string inverted;
-  std::size_t inverted_count = 0;
-  std::size_t i = 0;
-  for (const Condition* condition : sub.Conditions()) {
-    const Element* parent = parents[i++];
-    if (!parent) continue;
-    const Geometry& face = condition->GetGeometry();
-    const Array3 n = condition->GetValue(NORMAL);
-    const double step = settings.normal_check_proportion * InterfaceCharacteristicLength(face);
-    const Array3 center = face.Center();
-    Array3 local;
-    const Geometry& body = parent->GetGeometry();
-    const bool inner = body.PointLocalCoordinates(Array3(center - step * n), local) && body.IsInsideLocal(local, 1e-9);
-    const bool outer = body.PointLocalCoordinates(Array3(center + step * n), local) && body.IsInsideLocal(local, 1e-9);
-    if (!inner && outer) {
-      if (++inverted_count <= 5)
-        inverted += Concat("\n  condition ", condition->Id(), " (nodes ", NodeIds(face), ") points into element ",
-                           parent->Id());
+  // along -n lies in the element, a step along +n does not. As Kratos' normal check does, a
+  // condition written the other way round is flipped (its node order reversed), with a warning
+  // naming it; normal_check_proportion 0 turns the check off (Kratos' zero-length probe sees
+  // nothing either). Only linear faces can be flipped; another inverted face is an InputError.
+  if (settings.normal_check_proportion > 0.0) {
+    const std::vector<Element*> parents = FindParentElements(root_, sub);
+    std::string flipped;
+    std::size_t flipped_count = 0;
+    std::size_t i = 0;
+    for (Condition* condition : sub.Conditions()) {
+      const Element* parent = parents[i++];
+      if (!parent) continue;
+      Geometry& face = condition->GetGeometry();
+      const Array3 n = condition->GetValue(NORMAL);
+      const double step = settings.normal_check_proportion * InterfaceCharacteristicLength(face);
+      const Array3 center = face.Center();
+      Array3 local;
+      const Geometry& body = parent->GetGeometry();
+      const bool inner =
+          body.PointLocalCoordinates(Array3(center - step * n), local) && body.IsInsideLocal(local, 1e-9);
+      const bool outer =
+          body.PointLocalCoordinates(Array3(center + step * n), local) && body.IsInsideLocal(local, 1e-9);
+      if (inner || !outer) continue;
+      const std::string description =
+          Concat("condition ", condition->Id(), " (nodes ", NodeIds(face), ") points into element ", parent->Id());
+      auto& nodes = face.Nodes();
+      if (face.Type() == GeometryType::Line2D2)
+        std::swap(nodes[0], nodes[1]);
+      else if (face.Type() == GeometryType::Triangle3D3 || face.Type() == GeometryType::Quadrilateral3D4)
+        std::reverse(nodes.begin() + 1, nodes.end());
+      else
+        throw InputError(Concat("contact interface ", sub.FullName(), ": ", description,
+                                "; its node order must make the normal leave the body"));
+      if (++flipped_count <= 10) flipped += Concat("\n  ", description, "; now nodes ", NodeIds(face));
+    }
+    if (flipped_count > 0) {
+      NormalCalculationUtilities::ComputeNodalNormals(sub);
+      Logger::Warning(Concat("contact interface ", sub.FullName(), ": ", flipped_count,
+                             " interface conditions had inverted normals and were flipped (node order reversed, as "
+                             "Kratos does; normal_check_proportion 0 turns the check off):",
+                             flipped, flipped_count > 10 ? "\n  ..." : ""));
     }
   }
-  if (inverted_count > 0)
-    throw InputError(Concat("contact interface ", sub.FullName(), ": ", inverted_count,
-                            " interface conditions have inverted normals (their node order must make the normal "
-                            "leave the body):",
-                            inverted, inverted_count > 5 ? "\n  ..." : ""));
 
   // (2) Slave and master sides must face each other: compare every slave condition with the
   // nearest master condition.

@@ -17,7 +17,7 @@ struct ContactInterfaceSettings {
   int property_id = 0;                   ///< contact_property_ids[k]; 0 -> 100 + k
   double friction_coefficient = 0.0;     ///< friction_coefficients[k]
   /// Fraction of the face size by which the inverted-normal check probes inside the parent
-  /// element (normal_check_proportion).
+  /// element (normal_check_proportion); 0 turns the check and the flipping off.
   double normal_check_proportion = 0.1;
 };
 
@@ -35,8 +35,9 @@ struct ContactInterfaceSettings {
 ///    its FRICTION_COEFFICIENT on every interface node (non-historical);
 ///  - NODAL_H on the interface nodes, condition and nodal NORMAL;
 ///  - the normal checks: an interface condition given in the mdpa whose normal points into its
-///    parent element, or slave and master sides whose normals point the same way, is an
-///    InputError naming the condition, its nodes and the part.
+///    parent element is flipped (node order reversed, as Kratos' normal check does) with a
+///    warning naming it, unless normal_check_proportion is 0; slave and master sides whose
+///    normals point the same way are an InputError naming the conditions and the part.
 class ContactInterfaceBuilder {
  public:
   explicit ContactInterfaceBuilder(ModelPart& root) : root_(root) {}

@@ -9,6 +9,7 @@
 #include <memory>
 #include <mutex>
 #include <numeric>
+#include <optional>
 #include <set>
 #include <unordered_map>
 
@@ -27,6 +28,7 @@
 #include "custom_utilities/contact_variables.h"
 #include "custom_utilities/nodal_normal_support.h"
 #include "custom_utilities/normal_calculation_utilities.h"
+#include "custom_utilities/predicted_configuration.h"
 
 namespace mc {
 
@@ -195,12 +197,9 @@ ContactSearchProcess::ContactSearchProcess(ModelPart& root, ModelPart& interface
 
 void ContactSearchProcess::WarnAboutKeysWithoutEffect() const {
   const Parameters defaults = GetDefaultParameters();
-  NoEffectWarnings::IfGiven(settings_, defaults, "adapt_search",
-                            "search_factor and active_check_factor are used as given, not scaled by the mesh size");
-  NoEffectWarnings::IfGiven(settings_, defaults, "dynamic_search",
-                            "the search uses the current coordinates, not positions predicted with VELOCITY");
-  NoEffectWarnings::IfGiven(settings_, defaults, "static_check_movement",
-                            "the search runs every database_step_update steps whatever the interface moved");
+  if (!root_.HasNodalSolutionStepVariable(VELOCITY))
+    NoEffectWarnings::IfGiven(settings_, defaults, "dynamic_search",
+                              "the problem is static: there is no velocity to predict the positions with");
   NoEffectWarnings::IfGiven(settings_, defaults, "debug_mode", "the search writes no debug output");
   NoEffectWarnings::IfGiven(settings_, defaults, "predict_correct_lagrange_multiplier",
                             "the multipliers are not predicted (Kratos does not read the key either)");
@@ -315,6 +314,8 @@ ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
   const auto start = std::chrono::steady_clock::now();
   ContactSearchStatistics stats;
   ClearMortarConditions();
+  std::optional<PredictedConfiguration> predicted;
+  if (settings_["dynamic_search"].GetBool()) predicted.emplace(interface_);
   NormalCalculationUtilities::ComputeNodalNormals(interface_);
 
   const bool automatic = !slot_.predefined_master_slave && !roles_assigned_;
@@ -482,6 +483,10 @@ ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
   stats.max_search_radius = max_radius;
 
   PredictActiveSet(pairs, stats);
+  if (predicted && predicted->Moved()) {
+    predicted.reset();
+    NormalCalculationUtilities::ComputeNodalNormals(interface_);
+  }
 
   if (pairs.empty() && stats.slave_conditions > 0) {
     Logger::Warning(Concat("contact search of ", interface_.FullName(), ": no master condition found for any of the ",
@@ -520,6 +525,7 @@ void ContactSearchProcess::PredictActiveSet(const std::vector<std::pair<Conditio
     }
   if (masters > 0) master_h /= static_cast<double>(masters);
   const double factor = settings_["active_check_factor"].GetDouble();
+  const bool static_check = settings_["static_check_movement"].GetBool();
   for (Node* node : interface_.Nodes()) {
     if (!node->Is(SLAVE)) continue;
     auto it = pairs_of.find(node);
@@ -561,7 +567,14 @@ void ContactSearchProcess::PredictActiveSet(const std::vector<std::pair<Conditio
     if (gap == std::numeric_limits<double>::max()) gap = nearest_plane_gap;
     if (gap == std::numeric_limits<double>::max()) continue;  // every paired face parallel to the normal
     node->SetValue(NORMAL_GAP, gap);
-    const double threshold = factor * (masters > 0 ? master_h : ContactInterfaceBuilder::GetNodalH(*node));
+    double threshold = factor * (masters > 0 ? master_h : ContactInterfaceBuilder::GetNodalH(*node));
+    if (static_check) {
+      // At rest or opening since the last search: close enough to be pressed again.
+      const auto previous = previous_gap_.find(node);
+      if (previous != previous_gap_.end() && gap - previous->second > -1e-3 * std::abs(gap))
+        threshold = std::max(threshold, kStaticCheckGap);
+      previous_gap_[node] = gap;
+    }
     // As in Kratos, a node that is active stays so while its weighted gap per unit nodal area (of
     // the last iterate, i.e. the previous step's solution) is below the threshold too: the
     // pressure it carries is not dropped because its nodal gap has opened by a little.

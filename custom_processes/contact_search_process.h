@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -57,6 +58,19 @@ struct ContactSearchSlot {
 /// last weighted gap over its nodal area is below that too, and inactive otherwise, with h_M the
 /// mean NODAL_H of the master interface nodes (Kratos' length scale).
 ///
+/// Dynamic aids (issue 18):
+///  - dynamic_search: the search and the prediction run on the positions the last step's
+///    motion reaches within this step, x + dt v + dt^2/2 a (PredictedConfiguration); a body
+///    about to hit is paired and predicted active before the step that closes the gap, not
+///    after. The coordinates and normals are put back afterwards. Static problems: no effect.
+///  - static_check_movement: a slave node whose normal gap has not closed since the previous
+///    search (it is at rest or moving away) is predicted active up to Kratos' fixed gap of
+///    kStaticCheckGap (a length) instead of the active-check threshold, when that is smaller.
+///    (Kratos widens the threshold only together with consider_gap_threshold, so the key alone
+///    does nothing there, and it compares the weighted gap with its own history, which the step
+///    has just copied: the check never sees a movement. Here the gap is compared with the one of
+///    the previous search.)
+///
 /// Pair names: condition_name + geometry token (+ final_string), e.g.
 /// "ALMFrictionlessMortarContactCondition" + "3D3N4N"; the prototype must be a
 /// PairedCondition registered in Registry<Condition>.
@@ -67,16 +81,20 @@ struct ContactSearchSlot {
 /// group keeps both roles, pairing each condition only with higher ids).
 class ContactSearchProcess {
  public:
+  /// The gap below which static_check_movement predicts a node at rest active (Kratos'
+  /// GapThreshold).
+  static constexpr double kStaticCheckGap = 2.0e-4;
+
   /// `search_parameters` is the contact process' block of that name, validated here (unknown keys
   /// are errors naming their JSON path) and read where it lives, so later errors name it too.
   ContactSearchProcess(ModelPart& root, ModelPart& interface, Parameters search_parameters,
                        ContactSearchSlot slot = {});
 
   /// Kratos' search_parameters (spec 4.3), every key with its default. Not all act here:
-  /// adapt_search, dynamic_search, static_check_movement, debug_mode,
-  /// predict_correct_lagrange_multiplier and octree_search_parameters other than
+  /// debug_mode, predict_correct_lagrange_multiplier and octree_search_parameters other than
   /// bounding_box_factor are accepted with a warning when given (NoEffectWarnings), as is
-  /// type_search "octree_with_obb"; database_step_update is the contact process'.
+  /// type_search "octree_with_obb"; database_step_update and adapt_search are the contact
+  /// process'.
   static Parameters GetDefaultParameters();
 
   /// Clears this slot's pairs, searches, creates the pairs and predicts the active set.
@@ -118,6 +136,8 @@ class ContactSearchProcess {
   std::string type_search_;
   std::string check_gap_;
   bool roles_assigned_ = false;
+  /// NORMAL_GAP of each slave node at the previous search (static_check_movement).
+  std::unordered_map<const Node*, double> previous_gap_;
   double total_seconds_ = 0.0;
   std::size_t searches_ = 0;
 };

@@ -686,6 +686,10 @@ void AddModelToPython(py::module_& m) {
           "Elements", [](const ModelPart& p) { return AsList(p.Elements()); }, "Its elements, in id order.")
       .def_property_readonly(
           "Conditions", [](const ModelPart& p) { return AsList(p.Conditions()); }, "Its conditions, in id order.")
+      .def("AddMasterSlaveConstraint", &ModelPart::AddMasterSlaveConstraint, py::arg("constraint"),
+           "Adds a MasterSlaveConstraint here and to every ancestor; the builders eliminate the active ones.")
+      .def_property_readonly("MasterSlaveConstraints", &ModelPart::MasterSlaveConstraints,
+                             "Its master-slave constraints, in the order they were added.")
       .def("NumberOfElements", &ModelPart::NumberOfElements, "Number of its elements.")
       .def("NumberOfConditions", &ModelPart::NumberOfConditions, "Number of its conditions.")
       .def("GetProperties", &ListedProperties, py::arg("id"), py::return_value_policy::reference,

@@ -13,6 +13,7 @@
 #include "core/solving/linear_strategy.h"
 #include "core/solving/newton_raphson_strategy.h"
 #include "core/solving/or_criteria.h"
+#include "core/solving/residual_based_bdf_displacement_scheme.h"
 #include "core/solving/residual_based_bossak_displacement_scheme.h"
 #include "core/solving/residual_based_incremental_update_static_scheme.h"
 #include "core/solving/residual_criteria.h"
@@ -41,6 +42,14 @@ void AddSolvingToPython(py::module_& m) {
       .def("Alpha", &ResidualBasedBossakDisplacementScheme::Alpha, "alpha_m.")
       .def("Beta", &ResidualBasedBossakDisplacementScheme::Beta, "Newmark beta.")
       .def("Gamma", &ResidualBasedBossakDisplacementScheme::Gamma, "Newmark gamma.");
+  py::class_<ResidualBasedBDFDisplacementScheme, Scheme, std::shared_ptr<ResidualBasedBDFDisplacementScheme>>(
+      m, "BDFScheme",
+      "Backward differentiation formula of order 1 to 5 for implicit dynamics, variable step (Kratos "
+      "ResidualBasedBDFDisplacementScheme; scheme_type 'bdf1'..'bdf5', 'backward_euler' = 'bdf1').")
+      .def(py::init<int>(), py::arg("order") = 2, "order: 1 to 5; the model part needs buffer_size >= order + 1.")
+      .def("Order", &ResidualBasedBDFDisplacementScheme::Order, "The order p.")
+      .def("Coefficient", &ResidualBasedBDFDisplacementScheme::Coefficient, py::arg("i"),
+           "c_i of the current step: v_{n+1} = sum_i c_i u_{n+1-i}.");
   py::class_<ExplicitCentralDifferencesScheme, Scheme, std::shared_ptr<ExplicitCentralDifferencesScheme>>(
       m, "ExplicitCentralDifferencesScheme",
       "Explicit central differences with a lumped mass and half-step velocities; stable for dt < 2 / omega_max.")
@@ -111,7 +120,10 @@ void AddSolvingToPython(py::module_& m) {
                }),
            py::arg("id"), py::arg("slave"), py::arg("masters"), py::arg("weights"), py::arg("constant") = 0.0,
            "InputError when masters and weights differ in size or the slave is also a master.")
-      .def("Id", &MasterSlaveConstraint::Id, "The constraint's id.");
+      .def("Id", &MasterSlaveConstraint::Id, "The constraint's id.")
+      .def("IsActive", &MasterSlaveConstraint::IsActive, "Whether the builders eliminate it.")
+      .def("SetActive", &MasterSlaveConstraint::SetActive, py::arg("active"),
+           "Switches it on or off; takes effect at the builder's next DoF set-up.");
   py::class_<BlockBuilderAndSolver, BuilderAndSolver, std::shared_ptr<BlockBuilderAndSolver>>(
       m, "BlockBuilderAndSolver",
       "block: every DoF is an unknown; fixed rows and columns are zeroed with a positive diagonal (Kratos "

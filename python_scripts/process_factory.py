@@ -6,7 +6,7 @@ ProjectParameters.json (spec 1.4).
 registry form ``{"name", "parameters"}``. Dispatch is by (``kratos_module`` without the
 ``KratosMultiphysics.`` prefix, ``python_module``) in ``PROCESS_REGISTRY``; ``process_name``,
 ``help`` and ``check`` are informational only. The registry is filled from the packages below
-this module: ``processes`` (kernel processes), ``contact_processes``, ``output`` and ``restart``.
+this module: ``processes`` (kernel and structural processes), ``contact_processes``, ``output`` and ``restart``.
 """
 from __future__ import annotations
 
@@ -17,11 +17,12 @@ from . import _core
 from .contact_processes import CONTACT_MODULE, CONTACT_PROCESSES
 from .output import OUTPUT_PROCESSES
 from .process import Process
-from .processes import KERNEL_PROCESSES
+from .processes import KERNEL_PROCESSES, STRUCTURAL_PROCESSES
 from .restart import RESTART_PROCESSES
 from .utilities import nearest
 
 KERNEL = "KratosMultiphysics"
+STRUCTURAL = "StructuralMechanicsApplication"
 
 #: (normalised kratos_module, python_module) -> process class
 PROCESS_REGISTRY: dict[tuple[str, str], type[Process]] = {
@@ -29,6 +30,7 @@ PROCESS_REGISTRY: dict[tuple[str, str], type[Process]] = {
     **{(KERNEL, name): cls for name, cls in OUTPUT_PROCESSES.items()},
     **{(KERNEL, name): cls for name, cls in RESTART_PROCESSES.items()},
     **{(CONTACT_MODULE, name): cls for name, cls in CONTACT_PROCESSES.items()},
+    **{(STRUCTURAL, name): cls for name, cls in STRUCTURAL_PROCESSES.items()},
 }
 
 _ITEM_KEYS = ["python_module", "kratos_module", "process_name", "help", "check", "Parameters"]

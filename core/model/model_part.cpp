@@ -189,6 +189,10 @@ void ModelPart::AddCondition(Condition* condition) {
   for (ModelPart* part = this; part; part = part->parent_) part->conditions_.Add(condition);
 }
 
+void ModelPart::AddMasterSlaveConstraint(std::shared_ptr<MasterSlaveConstraint> constraint) {
+  for (ModelPart* part = this; part; part = part->parent_) part->constraints_.push_back(constraint);
+}
+
 void ModelPart::AddElements(const std::vector<IndexType>& ids) {
   const ModelPart& root = GetRootModelPart();
   for (Element* e : FindAll<Element>(*this, ids, "element", [&root](IndexType id) { return root.FindElement(id); }))

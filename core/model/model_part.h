@@ -9,6 +9,7 @@
 #include "core/model/condition.h"
 #include "core/model/element.h"
 #include "core/model/entity_container.h"
+#include "core/model/master_slave_constraint.h"
 #include "core/model/node.h"
 #include "core/model/process_info.h"
 #include "core/model/properties.h"
@@ -89,6 +90,14 @@ class ModelPart {
   void RemoveConditionsFlagged(const Flag& flag);
   void RemoveElementsFlagged(const Flag& flag);
 
+  // Master-slave constraints ------------------------------------------------------------------
+  /// Adds a constraint here and to every ancestor. Builders eliminate the active ones of the
+  /// model part they solve, read at each DoF set-up (Kratos' ModelPart::MasterSlaveConstraints).
+  void AddMasterSlaveConstraint(std::shared_ptr<MasterSlaveConstraint> constraint);
+  const std::vector<std::shared_ptr<MasterSlaveConstraint>>& MasterSlaveConstraints() const noexcept {
+    return constraints_;
+  }
+
   // Properties --------------------------------------------------------------------------------
   /// Returns the properties with this id, creating them in the root if needed, and lists them here.
   Properties& GetOrCreateProperties(IndexType id);
@@ -129,6 +138,7 @@ class ModelPart {
   EntityContainer<Node> nodes_;
   EntityContainer<Element> elements_;
   EntityContainer<Condition> conditions_;
+  std::vector<std::shared_ptr<MasterSlaveConstraint>> constraints_;
   std::map<IndexType, Properties*> properties_;
   std::map<IndexType, Table> tables_;
   std::map<std::string, std::unique_ptr<ModelPart>> sub_model_parts_;

@@ -61,6 +61,13 @@ void BuilderAndSolver::SetUpDofSet(ModelPart& model_part, const Scheme& scheme) 
     v.erase(std::unique(v.begin(), v.end()), v.end());
     dofs_.insert(dofs_.end(), v.begin(), v.end());
   }
+  std::vector<std::shared_ptr<const MasterSlaveConstraint>> constraints = added_constraints_;
+  constraints.insert(constraints.end(), model_part.MasterSlaveConstraints().begin(),
+                     model_part.MasterSlaveConstraints().end());
+  if (constraints != constraints_) {
+    constraints_ = std::move(constraints);
+    constraints_changed_ = true;
+  }
   for (const auto& c : constraints_) {
     if (!c->IsActive()) continue;
     dofs_.push_back(&c->Slave());
@@ -126,11 +133,13 @@ void BuilderAndSolver::SetUpSystem() {
 // Constraints -----------------------------------------------------------------------------------
 
 void BuilderAndSolver::AddConstraint(std::shared_ptr<const MasterSlaveConstraint> constraint) {
+  added_constraints_.push_back(constraint);
   constraints_.push_back(std::move(constraint));
   constraints_changed_ = true;
 }
 
 void BuilderAndSolver::ClearConstraints() {
+  added_constraints_.clear();
   constraints_.clear();
   constraints_changed_ = true;
 }
@@ -470,15 +479,10 @@ void BuilderAndSolver::SolveSystem() {
       linear_solver_->Initialize(A_);
       solver_pattern_version_ = pattern_version_;
     }
-    if (linear_solver_->AdditionalPhysicalDataIsNeeded()) {
-      // Rows of the reduced system T^T K T mix the DoFs of a constraint: no row has one DoF.
-      if (!slave_of_.empty() || n_system_ != n_assembled_)
-        throw NotImplementedError(Concat("linear solver ", linear_solver_->Name(),
-                                         " with master-slave constraints: its system rows must map one-to-one to "
-                                         "DoFs (",
-                                         slave_of_.size(), " constrained DoFs here)"));
-      linear_solver_->ProvideAdditionalData(A_, dofs_by_equation_);
-    }
+    // System row i is the equation of dofs_by_equation_[i]. With master-slave constraints the
+    // row of a master also holds its slaves' rows (T^T K T): a solver that splits the system by
+    // DoF (MixedULM) must check the blocks it relies on, and solves in full where they fail.
+    if (linear_solver_->AdditionalPhysicalDataIsNeeded()) linear_solver_->ProvideAdditionalData(A_, dofs_by_equation_);
     x_system_.setZero(static_cast<Eigen::Index>(n_system_));
     try {
       linear_solver_->Solve(A_, x_system_, b_system_);

@@ -56,8 +56,9 @@ class BuilderAndSolver {
   int GetEchoLevel() const noexcept { return echo_level_; }
 
   // DoFs ----------------------------------------------------------------------------------------
-  /// The DoFs of every active element and condition (and of the constraints), sorted by node
-  /// id and variable, without duplicates.
+  /// The DoFs of every active element and condition (and of the active constraints: those
+  /// added here and those of the model part), sorted by node id and variable, without
+  /// duplicates.
   void SetUpDofSet(ModelPart& model_part, const Scheme& scheme);
   /// Equation ids, constraint bookkeeping; the pattern is rebuilt on the next build.
   void SetUpSystem();
@@ -70,8 +71,10 @@ class BuilderAndSolver {
 
   // Constraints ---------------------------------------------------------------------------------
   /// Their DoFs join the DoF set at the next SetUpDofSet; the numbering is redone at the next
-  /// build.
+  /// build. The model part's own constraints (ModelPart::MasterSlaveConstraints) join them at
+  /// each SetUpDofSet.
   void AddConstraint(std::shared_ptr<const MasterSlaveConstraint> constraint);
+  /// Removes the constraints added here (the model part's come back at the next SetUpDofSet).
   void ClearConstraints();
   const std::vector<std::shared_ptr<const MasterSlaveConstraint>>& Constraints() const noexcept { return constraints_; }
 
@@ -156,7 +159,8 @@ class BuilderAndSolver {
   [[noreturn]] void ThrowSingular(const std::vector<const Dof*>& dofs, const std::string& detail) const;
 
   std::shared_ptr<LinearSolver> linear_solver_;
-  std::vector<std::shared_ptr<const MasterSlaveConstraint>> constraints_;
+  std::vector<std::shared_ptr<const MasterSlaveConstraint>> added_constraints_;  ///< by AddConstraint
+  std::vector<std::shared_ptr<const MasterSlaveConstraint>> constraints_;        ///< added + model part's
   std::unordered_map<const Dof*, const MasterSlaveConstraint*> slave_of_;
   std::vector<Dof*> dofs_by_equation_;
   bool numbered_ = false;

@@ -4,7 +4,7 @@
 #include <memory>
 #include <optional>
 
-#include "core/solving/scheme.h"
+#include "core/solving/implicit_dynamic_scheme.h"
 
 namespace mc {
 
@@ -19,7 +19,7 @@ namespace mc {
 ///   RHS = f_ext - f_int - M [(1 - a) acc + a acc_n] - D v,
 /// with M and D from the entities (Rayleigh damping is the entities' damping matrix).
 /// Velocities and accelerations of DISPLACEMENT / ROTATION DoFs follow the displacements.
-class ResidualBasedBossakDisplacementScheme : public Scheme {
+class ResidualBasedBossakDisplacementScheme : public ImplicitDynamicScheme {
  public:
   explicit ResidualBasedBossakDisplacementScheme(double alpha_m = -0.3,
                                                  std::optional<double> newmark_beta = std::nullopt);
@@ -39,23 +39,17 @@ class ResidualBasedBossakDisplacementScheme : public Scheme {
   /// Constant-acceleration guess for free DoFs; derivatives of fixed DoFs follow their values.
   void Predict(ModelPart& model_part, const DofsArray& dofs) override;
   void Update(ModelPart& model_part, const DofsArray& dofs, const Vector& dx) override;
-  void Check(const ModelPart& model_part) const override;
 
-  void CalculateSystemContributions(Entity& entity, Matrix& lhs, Vector& rhs, EquationIdVectorType& ids,
-                                    const ProcessInfo& info) override;
-  void CalculateLHSContribution(Entity& entity, Matrix& lhs, EquationIdVectorType& ids,
-                                const ProcessInfo& info) override;
-  void CalculateRHSContribution(Entity& entity, Vector& rhs, EquationIdVectorType& ids,
-                                const ProcessInfo& info) override;
+ protected:
+  int MinimumBufferSize() const override { return 2; }
+  double MassFactor() const override { return c0_; }
+  double DampingFactor() const override { return c1_; }
+  /// (1 - alpha) acc + alpha acc_n.
+  void InertialAcceleration(const Entity& entity, Vector& acceleration) const override;
 
  private:
   /// Velocity and acceleration of every DoF with time derivatives, from its current value.
   void UpdateDerivatives(const DofsArray& dofs) const;
-  /// Adds the inertia and damping terms of `entity` to the LHS and / or RHS given, then its
-  /// equation ids.
-  void AddDynamics(Entity& entity, Matrix* lhs, Vector* rhs, EquationIdVectorType& ids, const ProcessInfo& info);
-  void AddDynamicsToLHS(Matrix& lhs, const Matrix& mass, const Matrix& damping) const;
-  void AddDynamicsToRHS(const Entity& entity, Vector& rhs, const Matrix& mass, const Matrix& damping) const;
 
   double alpha_;
   double beta_;

@@ -38,9 +38,6 @@ BaseMortarConvergenceCriteria::BaseMortarConvergenceCriteria(Parameters settings
   const Parameters defaults = GetDefaultParameters();
   settings.AddMissingParameters(defaults);
   compute_dynamic_factor_ = settings["compute_dynamic_factor"].GetBool();
-  NoEffectWarnings::IfGiven(settings, defaults, "compute_dynamic_factor",
-                            "the contact updater does not compute the dynamic factor (Kratos' UpdateDynamicFactor), "
-                            "DYNAMIC_FACTOR stays 1");
   NoEffectWarnings::IfGiven(settings, defaults, "gidio_debug", "no per-iteration debug files are written");
   print_ = settings["print_convergence_criterion"].GetBool();
 }

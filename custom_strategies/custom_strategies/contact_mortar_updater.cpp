@@ -6,6 +6,7 @@
 #include "core/model/model_part.h"
 #include "core/variables/kernel_variables.h"
 #include "custom_conditions/contact_condition_utilities.h"
+#include "custom_utilities/contact_variables.h"
 #include "custom_utilities/normal_calculation_utilities.h"
 
 namespace mc {
@@ -47,6 +48,22 @@ void ContactMortarUpdater::UpdateNormals(ModelPart& model_part) {
   NormalCalculationUtilities::ComputeNodalNormals(*interface);
   timings_.normals += SecondsSince(start);
   ++timings_.normals_calls;
+}
+
+void ContactMortarUpdater::UpdateDynamicFactor(ModelPart& model_part) {
+  ModelPart* contact = FindContactPart(model_part, "Contact");
+  const int step = model_part.GetProcessInfo().GetValue(STEP);
+  if (!contact || !contact->HasNodalSolutionStepVariable(WEIGHTED_GAP) || contact->GetBufferSize() < 2 ||
+      step == dynamic_factor_step_)
+    return;
+  dynamic_factor_step_ = step;
+  for (Node* node : contact->Nodes()) {
+    if (!node->Is(SLAVE)) continue;
+    const double start = node->FastGetSolutionStepValue(WEIGHTED_GAP, 1);
+    const double predicted = node->FastGetSolutionStepValue(WEIGHTED_GAP);
+    const bool closes = node->GetValue(NODAL_AREA) > 0.0 && start > 0.0 && predicted < 0.0;
+    node->SetValue(DYNAMIC_FACTOR, closes ? -predicted / (start - predicted) : 1.0);
+  }
 }
 
 }  // namespace mc

@@ -61,6 +61,11 @@ void ResidualBasedNewtonRaphsonContactStrategy::InitializeSolutionStep() {
 }
 
 void ResidualBasedNewtonRaphsonContactStrategy::Predict() {
+  // The scheme's predictor first, as Kratos 10.4 does: it makes the velocities and accelerations
+  // of a dynamic scheme consistent with the first guess. Without it they kept the last step's
+  // values, and a body in free flight (no load, an initial velocity) had a zero residual at the
+  // first iteration and stood still.
+  scheme_->Predict(model_part_, builder_->GetDofSet());
   ModelPart* contact = FindContactModelPart(model_part_);
   if (contact && contact->HasNodalSolutionStepVariable(WEIGHTED_GAP)) {
     const bool slip = model_part_.Is(SLIP) && contact->HasNodalSolutionStepVariable(WEIGHTED_SLIP);

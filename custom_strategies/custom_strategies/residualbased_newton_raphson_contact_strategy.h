@@ -35,9 +35,10 @@ struct ContactStrategySettings {
 ///    complete Newton loop (the active set is updated after its first iteration, then frozen),
 ///    followed by an active-set check with NL_ITERATION_NUMBER = 1; done when the set no longer
 ///    changes. ProcessInfo[INNER_LOOP_ITERATION] holds the pass.
-///  - Predict: zeroes WEIGHTED_GAP on the "Contact" nodes, asks the MortarUpdater to integrate
-///    it at the coordinates of the last converged step, then moves the mesh to X0 + DISPLACEMENT.
-///    The scheme's predictor is not called (as in Kratos: it can break dynamic contact).
+///  - Predict: the scheme's predictor (dynamic schemes: the first guess and its velocities and
+///    accelerations), then zeroes WEIGHTED_GAP on the "Contact" nodes, asks the MortarUpdater to
+///    integrate it at the coordinates of the last converged step, and moves the mesh to
+///    X0 + DISPLACEMENT.
 ///  - With `adaptative_strategy`: a step that does not converge (or inverts an element: the
 ///    Jacobian determinant of every solid element is checked after each update) is restarted
 ///    from its initial state and marched in DELTA_TIME / split_factor^s sub-steps, s = 1 ..

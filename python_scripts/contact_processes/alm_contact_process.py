@@ -18,9 +18,15 @@ NORMAL_VARIATIONS = {
 NORMAL_UPDATE = "WithNormalUpdate"
 #: The values whose tangent includes dn/du: the NV conditions. Kratos' "elemental_derivatives"
 #: linearises only each face's own normal, an approximate tangent of the same residual (the
-#: normals follow the mesh in every mode); the NV conditions differentiate the averaged nodal
-#: normals exactly, so they serve both and Newton keeps its quadratic rate.
+#: normals follow the mesh in every mode, and the residual uses the averaged nodal ones); the NV
+#: conditions differentiate the averaged nodal normals exactly, at the same assembly cost, so
+#: they serve both, Newton keeps its quadratic rate, and "elemental_derivatives" warns that it
+#: runs as "nodal_elemental_derivatives" (issue 18).
 NORMAL_DERIVATIVES = ("elemental_derivatives", "nodal_elemental_derivatives")
+ELEMENTAL_DERIVATIVES_RUN_AS_NODAL = (
+    "it runs as \"nodal_elemental_derivatives\": the derivative of each face's own normal is an approximate "
+    "tangent of a residual built on the averaged nodal normals; the exact derivative of those costs the same and "
+    "keeps Newton quadratic")
 _FRICTIONAL = "only the frictional formulations (contact_type Frictional*) read it"
 _EXPLICIT = "only the explicit penalty process reads it, and it is not implemented"
 #: Read by the frictional formulations only: without effect on the frictionless ones.
@@ -90,6 +96,8 @@ class ALMContactProcess(SearchBaseProcess):
         if self.normal_update and variation == "no_derivatives_computation":
             variation = "no_derivatives_computation_with_normal_update"
         self.normal_variation = variation
+        if variation == "elemental_derivatives":
+            _core.NoEffectWarnings.Warn(self.settings, "normal_variation", ELEMENTAL_DERIVATIVES_RUN_AS_NODAL)
         self.axisymmetric = self.settings["alternative_formulations"]["axisymmetric"].GetBool()
         self.condition_stem = self.formulation.ConditionStem(variation in NORMAL_DERIVATIVES, self.axisymmetric)
         without_effect = dict(KEYS_WITHOUT_EFFECT)

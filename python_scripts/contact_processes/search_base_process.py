@@ -9,6 +9,18 @@ from ..utilities import warn
 from . import _settings
 from .initial_overlap import check_initial_overlap
 
+#: Why consider_tessellation (a Delaunay instead of a fan triangulation of the clipped overlap
+#: polygons, spec 4.2) is not followed (issue 18): the overlap polygons are convex, and their
+#: integrands are polynomials on triangular faces (smooth on quadrilateral ones), so every
+#: triangulation integrates them alike to the quadrature's accuracy; Delaunay only pays off on
+#: non-convex cells, which clipping never makes. The fan has one more merit for the exact tangent
+#: (MortarPairKinematics differentiates through the cells): its cells keep their topology as the
+#: mesh moves, while a Delaunay triangulation flips an edge whenever four vertices pass through a
+#: common circle, making D and M only piecewise smooth.
+TESSELLATION_WITHOUT_EFFECT = ("the overlap polygons are convex, so the fan triangulation integrates them as a "
+                               "Delaunay one would, and it keeps the exact tangent smooth (no edge flips as the mesh "
+                               "moves)")
+
 
 class NotImplementedContactProcess(Process):
     """Validates every key against the documented defaults, then says that the feature is not
@@ -48,11 +60,15 @@ class SearchBaseProcess(Process):
         self.settings.RecursivelyValidateAndAssignDefaults(self.GetDefaultParameters())
         self.interval = _settings.interval_of(self.settings)
         self.searches = []
+        #: (STEP, statistics of UpdateMortarConditions) of every search so far, slot after slot
+        self.search_statistics = []
         self.root = None
         self._steps_since_search = None
         self._inside = None
         self._check_types()
         self._check_factors()
+        _core.NoEffectWarnings.IfGiven(self.settings, self.GetDefaultParameters(), "consider_tessellation",
+                                       TESSELLATION_WITHOUT_EFFECT)
 
     # Settings ----------------------------------------------------------------------------------
     def _check_types(self) -> None:
@@ -93,23 +109,48 @@ class SearchBaseProcess(Process):
         self.check_solver_variables()
         info = self.root.GetProcessInfo()
         sp = self.settings["search_parameters"]
-        info.SetValue(_core.ACTIVE_CHECK_FACTOR, sp["active_check_factor"].GetDouble())
         if not info.Has(_core.DISTANCE_THRESHOLD):
             info.SetValue(_core.DISTANCE_THRESHOLD, 1.0e24)
         info.SetValue(_core.ZERO_TOLERANCE_FACTOR, self.settings["zero_tolerance_factor"].GetDouble())
         builder = _core.ContactInterfaceBuilder(self.root)
+        interfaces = []
         for slot, parts, slaves, property_id, mu in self.interface_slots():
             interface = builder.Build(slot, parts, slaves, property_id, mu,
                                       self.settings["normal_check_proportion"].GetDouble())
             check_initial_overlap(interface, slot)
+            interfaces.append((slot, interface, slaves, mu))
+        if sp["adapt_search"].GetBool():
+            self._adapt_search([interface for _, interface, _, _ in interfaces])
+        info.SetValue(_core.ACTIVE_CHECK_FACTOR, sp["active_check_factor"].GetDouble())
+        for slot, interface, slaves, mu in interfaces:
             properties = _core.ContactInterfaceBuilder.InterfaceProperties(self.root, slot)
             self._check_friction_coefficient(slot, mu, properties)
             properties.SetValue(_core.INTEGRATION_ORDER_CONTACT, self.settings["integration_order"].GetInt())
-            properties.SetValue(_core.CONSIDER_TESSELLATION, self.settings["consider_tessellation"].GetBool())
             properties.SetValue(_core.ACTIVE_CHECK_FACTOR, sp["active_check_factor"].GetDouble())
             self.searches.append(_core.ContactSearchProcess(
                 self.root, interface, sp, slot=slot, condition_name=self.condition_stem,
                 predefined_master_slave=bool(slaves), property_id=properties.Id))
+
+    def _adapt_search(self, interfaces) -> None:
+        """adapt_search (spec 4.3): search_factor and active_check_factor times the ratio of the
+        largest to the smallest NODAL_H, as Kratos does. Kratos takes the ratio over every node of
+        the model; NODAL_H exists here on the interface nodes only, and the interface is what the
+        search and the prediction measure."""
+        lengths = []
+        for interface in interfaces:
+            historical = interface.HasNodalSolutionStepVariable(_core.NODAL_H)
+            values = (interface.GetNodalValues(_core.NODAL_H) if historical
+                      else interface.GetNodalNonHistoricalValues(_core.NODAL_H))
+            lengths.extend(float(v) for v in values)
+        if not lengths or min(lengths) <= 0.0:
+            return
+        factor = max(lengths) / min(lengths)
+        sp = self.settings["search_parameters"]
+        for key in ("search_factor", "active_check_factor"):
+            sp[key].SetDouble(sp[key].GetDouble() * factor)
+        warn(f"{sp.Where()}.adapt_search: search_factor and active_check_factor scaled by the interface's "
+             f"largest / smallest NODAL_H = {factor:.3g}, to {sp['search_factor'].GetDouble():.3g} and "
+             f"{sp['active_check_factor'].GetDouble():.3g}")
 
     def _check_friction_coefficient(self, slot: str, mu: float, properties) -> None:
         """friction_coefficients[k] only fills a property without FRICTION_COEFFICIENT (spec 4.1):
@@ -141,8 +182,9 @@ class SearchBaseProcess(Process):
         self._inside = True
         update = max(1, self.settings["search_parameters"]["database_step_update"].GetInt())
         if self._steps_since_search is None or self._steps_since_search >= update:
+            step = info.GetValue(_core.STEP)
             for search in self.searches:
-                search.UpdateMortarConditions()
+                self.search_statistics.append((step, search.UpdateMortarConditions()))
             self._steps_since_search = 0
         self._steps_since_search += 1
 

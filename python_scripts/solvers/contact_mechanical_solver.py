@@ -76,6 +76,9 @@ class ContactMechanicalSolver(MechanicalSolver):
         without_effect = dict(KEYS_WITHOUT_EFFECT)
         if self.formulation.multiplier_blocks != 3:
             without_effect.update(FRICTIONAL_KEYS_WITHOUT_EFFECT)
+        if not self.dynamic:
+            without_effect[("", "compute_dynamic_factor")] = ("the problem is static: the dynamic factor (the share of "
+                                                              "a step a node spends in contact) needs velocities")
         warn_about_keys_without_effect(settings["contact_settings"], contact_settings_defaults(), without_effect)
 
     def AddVariables(self) -> None:

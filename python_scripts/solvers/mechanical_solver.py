@@ -70,10 +70,16 @@ class MechanicalSolver:
         if scheme not in IMPLICIT_SCHEMES:
             raise _core.InputError(f"{self.settings.Where()}.scheme_type: unknown scheme \"{scheme}\""
                                    f"{nearest(scheme, IMPLICIT_SCHEMES)}")
-        if scheme not in ("bossak", "newmark", "pseudo_static"):
+        if scheme == "relaxation":
             raise _core.NotImplementedFeatureError(f"{self.settings.Where()}.scheme_type: \"{scheme}\" is not "
-                                                   "implemented; use \"bossak\" or \"newmark\"")
+                                                   "implemented; use \"bossak\", \"newmark\" or \"bdf1\"..\"bdf5\"")
         return scheme
+
+    def _bdf_order(self) -> int:
+        """The BDF order of the scheme (backward_euler is bdf1), 0 for the other schemes."""
+        if self.scheme_type == "backward_euler":
+            return 1
+        return int(self.scheme_type[3:]) if self.scheme_type.startswith("bdf") else 0
 
     def _check_names(self) -> None:
         criterion = self.settings["convergence_criterion"].GetString().lower()
@@ -116,7 +122,8 @@ class MechanicalSolver:
             self.main_model_part.AddNodalSolutionStepVariable(_core.GetVariable(name))
 
     def minimum_buffer_size(self) -> int:
-        return 2
+        # A BDF scheme of order p differentiates over p + 1 buffer positions (spec 2.5).
+        return max(2, self._bdf_order() + 1)
 
     def ImportModelPart(self) -> None:
         """Reads the mesh named by ``model_import_settings``: ``input_type`` ``"mdpa"`` (Kratos), or
@@ -296,6 +303,8 @@ class MechanicalSolver:
         process_info.SetValue(_core.RAYLEIGH_BETA, s["rayleigh_beta"].GetDouble())
         if self.scheme_type == "static" or self.scheme_type == "pseudo_static":
             scheme = _core.StaticScheme()
+        elif self._bdf_order():
+            scheme = _core.BDFScheme(order=self._bdf_order())
         elif self.scheme_type == "newmark":
             scheme = _core.BossakScheme(alpha_m=0.0, newmark_beta=s["newmark_beta"].GetDouble())
         else:

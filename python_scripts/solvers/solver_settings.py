@@ -105,7 +105,8 @@ KEYS_WITHOUT_EFFECT = {
     ("model_import_settings", "reorder"): "the nodes keep their ids; the linear solvers order the system themselves",
     ("model_import_settings", "reorder_consecutive"): "the nodes keep their ids",
     ("model_import_settings", "serializer_trace"): "restart checkpoints are HDF5 files, not Kratos' serializer's",
-    ("", "multi_point_constraints_used"): "there are no multi-point constraints; the builder is the same either way",
+    ("", "multi_point_constraints_used"): "both builders eliminate the model part's master-slave constraints "
+                                          "whenever it has some",
     ("", "delta_time_refresh"): _PREDICTION,
     ("", "max_delta_time"): _PREDICTION,
     ("", "fraction_delta_time"): _PREDICTION,

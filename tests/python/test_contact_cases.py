@@ -38,6 +38,7 @@ HERTZ_RUNNER = os.path.join(os.path.dirname(__file__), "..", "..", "benchmarks",
 # reference differs from Kratos 10.4 by up to 60 % and is compared with Kratos 10.4 only.
 SHARED_TOLERANCE = {
     "hyper_simple_patch_test": 1e-3,
+    "hyper_simple_patch_test_with_elimination_with_constraints": 1e-3,
     "hyper_simple_slope_patch_test": 1e-3,
     "hyper_simple_triangle_patch_test": 1e-3,
     "3D_contact_simplest_patch_matching_triquad_test": 5e-3,
@@ -48,6 +49,7 @@ SHARED_TOLERANCE = {
 # to 3e-3, and its converged weighted gaps stay at 1e-6 (ours close to 1e-11); noted on issue 3.
 KRATOS_TOLERANCE = {
     "hyper_simple_patch_test": 1e-9,
+    "hyper_simple_patch_test_with_elimination_with_constraints": 1e-9,
     "hyper_simple_slope_patch_test": 1e-9,
     "hyper_simple_triangle_patch_test": 1e-9,
     "3D_contact_simplest_patch_matching_triquad_test": 1e-2,
@@ -334,3 +336,33 @@ def test_penalty_3d_patch_closes_the_gap(csma_cases, monkeypatch):
     contact = analysis.model["Structure.Contact"]
     z = contact.NodeCoordinates(initial=False)[:, 2]
     assert np.ptp(z) < 1e-4 * (1.0 + np.abs(z).max())
+
+
+#: components runs of the frictionless patches -> whether MixedULM solves a system in full
+#: (custom_linear_solvers/mixed_ulm_linear_solver.h: only a sliver pair, which has no dual basis,
+#: couples two nodes in K(S_A, LM_A))
+MIXED_ULM_FULL_SOLVES = {
+    "ALM_frictionless_contact_test_2D/hyper_simple_patch_test": False,
+    "ALM_frictionless_contact_test_2D/hyper_simple_slope_patch_test": False,
+    "ALM_frictionless_contact_test_2D/hyper_simple_triangle_patch_test": False,
+    "ALM_frictionless_contact_test_2D/taylor_patch_dynamic_test": True,
+}
+
+
+@pytest.mark.parametrize("case", list(MIXED_ULM_FULL_SOLVES), ids=os.path.basename)
+def test_mixed_ulm_condenses_the_components_patches(csma_cases, monkeypatch, case):
+    """Issue 18, item 6: the condensing solver condenses every system of the components patches
+    without slivers; the dynamic Taylor patch meets one, whose standard basis couples two slave
+    nodes by an entry tiny against its row (the reason names them), and solves that system in full."""
+    monkeypatch.chdir(csma_cases)
+    messages = []
+    mc._core.SetLogSink(lambda level, message: messages.append(message))
+    try:
+        run_csma_case(case, "components")
+    finally:
+        mc._core.ResetLogSink()
+    full = [m for m in messages if "solving the full system" in m]
+    assert bool(full) == MIXED_ULM_FULL_SOLVES[case], full
+    for message in full:
+        entry = float(message.split(" has ")[1].split(" at ")[0])
+        assert "K(S_A, LM_A) is not diagonal node by node" in message and abs(entry) < 1e-6, message

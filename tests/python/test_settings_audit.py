@@ -677,13 +677,18 @@ def test_process_info_keys_of_the_contact_process(tmp_path):
 
 def test_normal_variation_chooses_the_conditions(tmp_path):
     """normal_variation "nodal_elemental_derivatives" and "elemental_derivatives" both build the NV
-    conditions (the exact dn/du of the nodal normals; see alm_contact_process.NORMAL_DERIVATIVES)."""
-    names = {variation: {name for name, _ in _pairs(_run(tmp_path / variation, edit=_process(
-        normal_variation=variation)))} for variation in ("no_derivatives_computation", "elemental_derivatives",
-                                                          "nodal_elemental_derivatives")}
+    conditions (the exact dn/du of the nodal normals; see alm_contact_process.NORMAL_DERIVATIVES);
+    "elemental_derivatives" warns that it runs as the other."""
+    names, logs = {}, {}
+    for variation in ("no_derivatives_computation", "elemental_derivatives", "nodal_elemental_derivatives"):
+        analysis, logs[variation] = _run_logged(tmp_path / variation, edit=_process(normal_variation=variation))
+        names[variation] = {name for name, _ in _pairs(analysis)}
     assert names["no_derivatives_computation"] == {"ALMFrictionlessMortarContactCondition2D2N"}
     assert names["elemental_derivatives"] == names["nodal_elemental_derivatives"] == {
         "ALMNVFrictionlessMortarContactCondition2D2N"}
+    warnings = [m for m in NO_EFFECT.finditer(logs["elemental_derivatives"]) if m["key"] == "normal_variation"]
+    assert len(warnings) == 1 and 'runs as "nodal_elemental_derivatives"' in logs["elemental_derivatives"]
+    assert "normal_variation" not in logs["nodal_elemental_derivatives"]
 
 
 def test_manual_alm_parameters(tmp_path):
@@ -759,7 +764,8 @@ def test_search_keys(tmp_path):
 
 def test_normal_check_proportion(tmp_path):
     """The inverted-normal check steps normal_check_proportion x the face size off each interface
-    face: a step beyond the parent element cannot see that the face points into it."""
+    face and flips a face that points into its element, with a warning naming it (as Kratos does); a
+    step beyond the parent element cannot see it, and 0 turns the check off."""
     def inverted(folder):
         path = contact_case(folder)
         mdpa = os.path.join(folder, "contact.mdpa")
@@ -774,10 +780,20 @@ def test_normal_check_proportion(tmp_path):
             f.write(text)
         return path
     faces = {"contact_model_part": {"0": ["Contact_Part", "upper_face"]}}
-    error = _run(tmp_path / "default", base=inverted, edit=_process(**faces))
-    assert isinstance(error, mc.InputError) and "inverted normals" in str(error), error
-    blind = _run(tmp_path / "blind", base=inverted, edit=_process(**faces, normal_check_proportion=5.0))
-    assert not (isinstance(blind, Exception) and "inverted normals" in str(blind)), blind
+    flipped, log = _run_logged(tmp_path / "default", base=inverted, edit=_process(**faces))
+    assert not isinstance(flipped, Exception), flipped
+    assert "condition 1 (nodes 6 5) points into element" in log and "flipped" in log, log
+    condition = flipped.model.GetModelPart("Structure.upper_face").GetCondition(1)
+    assert [node.Id for node in condition.GetNodes()] == [5, 6]
+    # The flipped face duplicates a master face of Contact_Part: the displacements are those of the
+    # case without it (the multipliers balance two master faces instead of one).
+    def displacements(analysis):
+        return [(node, values[:3]) for node, values in _nodal_values(analysis)]
+    assert displacements(flipped) == displacements(_run(tmp_path / "plain"))
+    _, log = _run_logged(tmp_path / "blind", base=inverted, edit=_process(**faces, normal_check_proportion=5.0))
+    assert "flipped" not in log, log
+    _, log = _run_logged(tmp_path / "off", base=inverted, edit=_process(**faces, normal_check_proportion=0.0))
+    assert "flipped" not in log, log
 
 
 def test_vtk_condition_keys(tmp_path):
@@ -834,9 +850,26 @@ def test_problem_name_labels_the_summary(tmp_path):
 
 
 def test_scheme_type(tmp_path):
-    """scheme_type picks the implicit scheme: "bdf2" is known to Kratos but not implemented here."""
-    error = _run(tmp_path, base=_dense_square, edit=_solver(solver_type="Dynamic", scheme_type="bdf2"))
+    """scheme_type picks the implicit scheme: bossak, newmark and the BDF family (backward_euler is
+    bdf1; bdf2 raises the buffer to 3) give different answers; "relaxation" is known to Kratos but
+    not implemented here, plain "bdf" is no scheme (spec 2.5)."""
+    def run(folder, scheme):
+        analysis = _run(tmp_path / folder, base=_dense_square, edit=_solver(solver_type="Dynamic", scheme_type=scheme))
+        assert not isinstance(analysis, Exception), analysis
+        return analysis
+
+    bdf2 = run("bdf2", "bdf2")
+    assert bdf2.model.GetModelPart("Structure").GetBufferSize() == 3
+    backward_euler = run("backward_euler", "backward_euler")
+    assert _nodal_values(backward_euler) == _nodal_values(run("bdf1", "bdf1"))
+    runs = (bdf2, backward_euler, run("bossak", "bossak"), run("newmark", "newmark"))
+    answers = {str(_nodal_values(a)) for a in runs}
+    assert len(answers) == 4
+    error = _run(tmp_path / "relaxation", base=_dense_square, edit=_solver(solver_type="Dynamic",
+                                                                           scheme_type="relaxation"))
     assert isinstance(error, mc.NotImplementedFeatureError) and "scheme_type" in str(error), error
+    error = _run(tmp_path / "bdf", base=_dense_square, edit=_solver(solver_type="Dynamic", scheme_type="bdf"))
+    assert isinstance(error, mc.InputError) and "scheme_type" in str(error), error
 
 
 def test_move_mesh_flag(tmp_path):

@@ -339,18 +339,34 @@ TEST_P(Builders, FixedDofsAndActiveSetChangesMatchMonolithic) {
   EXPECT_EQ(mixed->InnerInitializations(), initializations + 1);
 }
 
-TEST_P(Builders, MasterSlaveConstraintsAreRefusedByName) {
-  ContactSystem<2, 2, 2> system({true, false});
-  auto builder = MakeBuilder(GetParam(), std::make_shared<MixedULMLinearSolver>(std::make_unique<UmfpackSolver>()));
-  builder->AddConstraint(std::make_shared<MasterSlaveConstraint>(
-      1, system.others[1]->GetDof(DISPLACEMENT_Y), std::vector<Dof*>{&system.others[0]->GetDof(DISPLACEMENT_Y)},
-      std::vector<double>{1.0}));
-  try {
-    BuildAndSolve(*builder, system.root);
-    FAIL() << "expected NotImplementedError";
-  } catch (const NotImplementedError& e) {
-    EXPECT_NE(std::string(e.what()).find("mixed_ulm_linear_solver"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("master-slave constraints"), std::string::npos) << e.what();
+// Master-slave constraints (issue 18): the rows of T^T K T are those of the unconstrained DoFs,
+// each holding its slaves' rows. Tying two DoFs off the interface leaves the dual blocks alone:
+// condensed. Tying a slave node's displacement to another slave node's: the elimination builder
+// drops the tied row, its node's multiplier is left unpaired and stays in the condensed system
+// (condensed); the block builder keeps it as an identity row without a multiplier pivot, and the
+// block check sends the system to the full solve. Every answer equals the monolithic one with the
+// same constraint.
+TEST_P(Builders, MasterSlaveConstraintsCondenseOrSolveInFull) {
+  for (const bool on_slave_side : {false, true}) {
+    ContactSystem<2, 2, 2> system({true, true});
+    auto constrain = [&](BuilderAndSolver& builder) {
+      Node& tied = on_slave_side ? *system.slaves[1] : *system.others[1];
+      Node& master = on_slave_side ? *system.slaves[0] : *system.others[0];
+      builder.AddConstraint(std::make_shared<MasterSlaveConstraint>(1, tied.GetDof(DISPLACEMENT_X),
+                                                                    std::vector<Dof*>{&master.GetDof(DISPLACEMENT_X)},
+                                                                    std::vector<double>{-1.0}));
+    };
+    auto mixed = std::make_shared<MixedULMLinearSolver>(std::make_unique<UmfpackSolver>());
+    auto builder = MakeBuilder(GetParam(), mixed);
+    auto reference_builder = MakeBuilder(GetParam(), std::make_shared<UmfpackSolver>());
+    constrain(*builder);
+    constrain(*reference_builder);
+    const auto x = BuildAndSolve(*builder, system.root);
+    const bool condensed = !on_slave_side || std::string(GetParam()) == "elimination";
+    EXPECT_EQ(mixed->LastSolveWasCondensed(), condensed) << mixed->FallbackReason();
+    if (!condensed)
+      EXPECT_NE(mixed->FallbackReason().find("K(S_A, LM_A)"), std::string::npos) << mixed->FallbackReason();
+    EXPECT_LE(MaxRelativeDifference(x, BuildAndSolve(*reference_builder, system.root)), 1e-10) << on_slave_side;
   }
 }
 

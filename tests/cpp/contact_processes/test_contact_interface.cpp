@@ -151,15 +151,45 @@ TEST(ContactInterface, UnknownPartSuggestsNearestName) {
   EXPECT_NE(message.find("Contact_Part"), std::string::npos) << message;
 }
 
-TEST(ContactInterface, InvertedMdpaConditionIsAnError) {
+TEST(ContactInterface, InvertedMdpaConditionIsFlippedWithAWarning) {
   Model model;
   ModelPart& root = test::ReadPatch2D(model);
   ModelPart& part = root.CreateSubModelPart("Given");
-  part.CreateNewCondition("LineCondition2D2N", 1, {4, 3}, &root.GetOrCreateProperties(0));  // points into element 1
+  Condition& inverted =
+      part.CreateNewCondition("LineCondition2D2N", 1, {4, 3}, &root.GetOrCreateProperties(0));  // into element 1
   part.CreateNewCondition("LineCondition2D2N", 2, {5, 6}, &root.GetOrCreateProperties(0));
-  const std::string message =
-      test::ErrorMessageOf([&] { test::BuildInterface(root, {"Given"}, {"Parts_Parts_Auto2"}); });
-  EXPECT_NE(message.find("condition 1 (nodes 4 3) points into element 1"), std::string::npos) << message;
+  std::vector<std::string> warnings;
+  ModelPart* sub = nullptr;
+  {
+    test::WarningCapture capture;
+    sub = &test::BuildInterface(root, {"Given"}, {"Parts_Parts_Auto2"});
+    warnings = capture.Messages();
+  }
+  EXPECT_EQ(inverted.GetGeometry()[0].Id(), 3u);
+  EXPECT_EQ(inverted.GetGeometry()[1].Id(), 4u);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("condition 1 (nodes 4 3) points into element 1; now nodes 3 4"), std::string::npos)
+      << warnings[0];
+  // The flipped face's normal leaves its element, as the generated face 3-4 of the same side would.
+  const Array3 n = inverted.GetValue(NORMAL);
+  const Array3 nodal = sub->GetNode(3).FastGetSolutionStepValue(NORMAL);
+  EXPECT_GT(n.dot(nodal), 0.99) << n.transpose() << " / " << nodal.transpose();
+}
+
+TEST(ContactInterface, NormalCheckProportionZeroKeepsTheFacesAsGiven) {
+  Model model;
+  ModelPart& root = test::ReadPatch2D(model);
+  ModelPart& part = root.CreateSubModelPart("Given");
+  Condition& inverted = part.CreateNewCondition("LineCondition2D2N", 1, {4, 3}, &root.GetOrCreateProperties(0));
+  part.CreateNewCondition("LineCondition2D2N", 2, {5, 6}, &root.GetOrCreateProperties(0));
+  ContactInterfaceSettings settings;
+  settings.parts = {"Given"};
+  settings.slave_parts = {"Parts_Parts_Auto2"};
+  settings.normal_check_proportion = 0.0;
+  // Not flipped, the face then meets the check that the two sides face each other.
+  const std::string message = test::ErrorMessageOf([&] { ContactInterfaceBuilder(root).Build(settings); });
+  EXPECT_NE(message.find("slave condition 1 (nodes 4 3)"), std::string::npos) << message;
+  EXPECT_EQ(inverted.GetGeometry()[0].Id(), 4u);
 }
 
 TEST(ContactInterface, SidesNormalsPointingTheSameWayIsAnError) {

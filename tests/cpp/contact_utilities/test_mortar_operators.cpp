@@ -104,6 +104,9 @@ TEST(DualLagrangeMultiplier, SliverOverlapTakesTheStandardBasis) {
   EXPECT_NEAR(k.D.sum(), k.area, 1e-22);
   EXPECT_LT(std::abs(k.weighted_gap(1)), 1e-6 * gap * k.area);
   EXPECT_NEAR(k.weighted_gap(0), gap * k.area, 1e-6 * gap * k.area);
+  // With the standard basis D = M couples the two nodes (why MixedULM solves such a system in full).
+  EXPECT_GT(std::abs(k.D(0, 1)), 0.0);
+  EXPECT_NEAR(k.D(0, 1), k.D(1, 0), 1e-30);
   // A thin but regular overlap keeps its own basis.
   ASSERT_TRUE(k.Compute(x1, Rows<K::MasterMatrix>({1.0 - 1e-3, -gap, 3.0, -gap}), down, Order(2)));
   EXPECT_FALSE(k.sliver);

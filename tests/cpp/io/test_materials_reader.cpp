@@ -70,7 +70,7 @@ TEST(MaterialsReader, AppliesEverySharedCaseMaterialsFile) {
     }
     ++cases;
   }
-  EXPECT_EQ(cases, 21u);
+  EXPECT_EQ(cases, 22u);  // with hyper_simple_patch_test_with_elimination_with_constraints (issue 18)
 }
 
 /// A root with one quad element and one line condition in the sub part "Parts".

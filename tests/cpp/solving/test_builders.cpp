@@ -258,6 +258,34 @@ TEST_P(BothBuilders, MasterSlaveConstraintGivesTiedSolution) {
   EXPECT_EQ(builder->SystemSize(), GetParam() == "block" ? 4u : 1u);
 }
 
+// The model part's constraints (what impose_rigid_movement_process adds) join the builder's at
+// each DoF set-up; an inactive one is left out at the next set-up.
+TEST_P(BothBuilders, ModelPartConstraintsAreEliminatedWhileActive) {
+  Model model;
+  ModelPart& mp = test::MakeModelPart(model);
+  for (IndexType i = 1; i <= 3; ++i) AddNode(mp, i, static_cast<double>(i), 0.0);
+  const double k = 10.0, P = 4.0;
+  AddSpring(mp, 1, 1, 2, k);
+  AddSpring(mp, 2, 2, 3, k);
+  AddLoad(mp, 1, 3, P);
+  mp.GetNode(1).Fix(DISPLACEMENT_X);
+  auto constraint = std::make_shared<MasterSlaveConstraint>(1, mp.GetNode(3).GetDof(DISPLACEMENT_X),
+                                                            std::vector<Dof*>{&mp.GetNode(2).GetDof(DISPLACEMENT_X)},
+                                                            std::vector<double>{1.0});
+  mp.CreateSubModelPart("Tied").AddMasterSlaveConstraint(constraint);
+  ASSERT_EQ(mp.MasterSlaveConstraints().size(), 1u);
+  auto builder = MakeBuilder(GetParam());
+  LinearStrategy strategy(mp, std::make_shared<ResidualBasedIncrementalUpdateStaticScheme>(), builder, false, true);
+  ASSERT_TRUE(strategy.Solve());
+  // Node 3 moves with node 2: the second spring is unstretched, the first carries P.
+  EXPECT_NEAR(mp.GetNode(2).FastGetSolutionStepValue(DISPLACEMENT_X), P / k, 1e-14);
+  EXPECT_NEAR(mp.GetNode(3).FastGetSolutionStepValue(DISPLACEMENT_X), P / k, 1e-14);
+  constraint->SetActive(false);
+  mp.CloneTimeStep(2.0);
+  ASSERT_TRUE(strategy.Solve());
+  EXPECT_NEAR(mp.GetNode(3).FastGetSolutionStepValue(DISPLACEMENT_X), 2.0 * P / k, 1e-14);
+}
+
 TEST_P(BothBuilders, SingularSystemNamesTheFreeDofs) {
   Model model;
   ModelPart& mp = test::MakeModelPart(model);

@@ -2,7 +2,8 @@
 // Issue 3 (solving): Bossak/Newmark and explicit central differences on a one-DoF oscillator:
 // period within 1% of 2 pi sqrt(m/k), Newmark conserves energy, Bossak dissipates, damping
 // from the entities' damping matrix follows the analytic decay, explicit matches the analytic
-// solution; explicit options that are not implemented are reported by key.
+// solution; explicit options that are not implemented are reported by key. BDF1/BDF2 (issue 18):
+// coefficients against the textbook ones, order of accuracy against the closed form.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,6 +13,7 @@
 #include "core/solving/block_builder_and_solver.h"
 #include "core/solving/explicit_strategy.h"
 #include "core/solving/newton_raphson_strategy.h"
+#include "core/solving/residual_based_bdf_displacement_scheme.h"
 #include "core/solving/residual_based_bossak_displacement_scheme.h"
 #include "core/solving/residual_criteria.h"
 #include "core/variables/kernel_variables.h"
@@ -29,7 +31,7 @@ const double kPeriod = 2.0 * std::numbers::pi / kOmega;
 struct Oscillator {
   Model model;
   ModelPart& mp = test::MakeModelPart(model);
-  explicit Oscillator(double damping = 0.0) {
+  explicit Oscillator(double damping = 0.0, int buffer_size = 2) : mp(test::MakeModelPart(model, buffer_size)) {
     test::AddNode(mp, 1, 0.0, 0.0);
     Node& n = test::AddNode(mp, 2, 1.0, 0.0);
     test::AddSpring(mp, 1, 1, 2, kStiffness);
@@ -109,6 +111,64 @@ TEST(Newmark, DampingMatrixGivesAnalyticDecay) {
   }
   EXPECT_LT(worst, 2e-3);
   EXPECT_LT(t.energy.back(), 0.3 * t.energy.front());  // exp(-2 xi omega 2T) = 0.28
+}
+
+// Largest |u - cos(omega t)| over one period with `steps` steps.
+double BdfError(int order, int steps) {
+  Oscillator o(0.0, order + 1);
+  const auto t = RunImplicit(o, std::make_shared<ResidualBasedBDFDisplacementScheme>(order), kPeriod / steps, steps);
+  double worst = 0.0;
+  for (std::size_t n = 0; n < t.u.size(); ++n) worst = std::max(worst, std::abs(t.u[n] - std::cos(kOmega * t.time[n])));
+  return worst;
+}
+
+TEST(BDF, CoefficientsAreTheBackwardDifferenceFormulas) {
+  Oscillator o(0.0, 4);
+  const double dt = 0.1;
+  o.mp.CloneTimeStep(dt);
+  ResidualBasedBDFDisplacementScheme bdf2(2);
+  bdf2.InitializeSolutionStep(o.mp);
+  EXPECT_NEAR(bdf2.Coefficient(0), 1.5 / dt, 1e-12);
+  EXPECT_NEAR(bdf2.Coefficient(1), -2.0 / dt, 1e-12);
+  EXPECT_NEAR(bdf2.Coefficient(2), 0.5 / dt, 1e-12);
+  // A halved step after a full one: c = ((2 + rho) / (1 + rho), -(1 + rho), rho^2 / (1 + rho)) / dt,
+  // rho = dt / dt_previous = 1/2 (the variable-step BDF2).
+  bdf2.FinalizeSolutionStep(o.mp);
+  o.mp.CloneTimeStep(1.5 * dt);
+  o.mp.GetProcessInfo().SetValue(DELTA_TIME, 0.5 * dt);
+  bdf2.InitializeSolutionStep(o.mp);
+  const double rho = 0.5, h = 0.5 * dt;
+  EXPECT_NEAR(bdf2.Coefficient(0), (1.0 + 2.0 * rho) / (1.0 + rho) / h, 1e-10);
+  EXPECT_NEAR(bdf2.Coefficient(1), -(1.0 + rho) / h, 1e-10);
+  EXPECT_NEAR(bdf2.Coefficient(2), rho * rho / (1.0 + rho) / h, 1e-10);
+  ResidualBasedBDFDisplacementScheme bdf3(3);
+  o.mp.GetProcessInfo().SetValue(DELTA_TIME, dt);
+  bdf3.InitializeSolutionStep(o.mp);
+  const double expected[] = {11.0 / 6.0, -3.0, 1.5, -1.0 / 3.0};
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(bdf3.Coefficient(i) * dt, expected[i], 1e-12) << i;
+  EXPECT_EQ(bdf3.Name(), "bdf3");
+  EXPECT_THROW(ResidualBasedBDFDisplacementScheme(6), InputError);
+}
+
+TEST(BDF, OrderOfAccuracyOnTheOscillator) {
+  // Halving the step divides the error by 2^p.
+  for (int order : {1, 2}) {
+    const double coarse = BdfError(order, 200), fine = BdfError(order, 400), finer = BdfError(order, 800);
+    const double rate = std::log2(fine / finer);
+    EXPECT_NEAR(std::log2(coarse / fine), order, 0.15) << "bdf" << order << ": " << coarse << " " << fine;
+    EXPECT_NEAR(rate, order, 0.1) << "bdf" << order << ": " << fine << " " << finer;
+  }
+}
+
+TEST(BDF, BufferTooShortIsReported) {
+  Oscillator o;  // buffer 2
+  auto scheme = std::make_shared<ResidualBasedBDFDisplacementScheme>(2);
+  try {
+    scheme->Check(o.mp);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("must be at least 3"), std::string::npos) << e.what();
+  }
 }
 
 TEST(ExplicitCentralDifferences, OscillatorMatchesAnalyticSolution) {
