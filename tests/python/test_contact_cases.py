@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 import mortarcontact as mc
-from mortarcontact.analysis_stage import ConvergenceFailure, StructuralMechanicsAnalysis
+from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
 from mortarcontact.cases import hertz
 from mortarcontact.processes.from_json_check_result_process import CheckResultError
 from mortarcontact.project_parameters import read_project_parameters
@@ -168,14 +168,20 @@ FRICTIONAL_KRATOS_TOLERANCE = {
 }
 KRATOS_FAILS = {"friction_block_test": "Kratos 10.4.4 stops at step 38 (t = 0.19): its linear solver finds the "
                                        "matrix structurally singular (zero column 748)"}
+# Kratos 10.4's penalty friction takes the virtual work of the tangential traction on the variation
+# of the slip increment ((D - D_n) w1 - (M - M_n) w2), not on the virtual jump (D w1 - M w2): on the
+# penalty slip patch it transmits no friction at all (the same displacements to 12 digits for
+# FRICTION_COEFFICIENT 0, 0.01 and 0.05, and our run with mu = 0 to 3e-5), so its values and its 4
+# Newton iterations are those of a frictionless problem. The reference file (an older revision)
+# transmits it, and is the yardstick (ours: 1.1e-2 from it at the case's residual tolerance, Kratos
+# 10.4: 1.7e-2); ours converges in 7 iterations (the first one sticks, the
+# tangential spring releases the interface, which opens once and closes again).
+KRATOS_WITHOUT_FRICTION = {"hyper_simple_slip_patch_test": 7}
 REFERENCE_ONLY_TOLERANCE = {"friction_block_test": 1e-2}
 #: Frictional cases that do not run yet: (what they raise, why).
 KNOWN_FAILURES = {
     "hyper_simple_stick_patch_test": (mc.NotImplementedFeatureError, "advance_ALM_parameters.adapt_penalty (true in "
                                                                      "this case) is not implemented"),
-    "hyper_simple_slip_patch_test": (ConvergenceFailure, "penalty friction: step 1 not converged in 10 iterations "
-                                                         "although |r_u|^2/|r_u0|^2 = 5.8e-11 and neither set changes "
-                                                         "(Kratos 10.4: 4 iterations); to investigate"),
     "mesh_moving_matching_test": (CheckResultError, "pure slip on a moving mesh: its own json check fails at t = 1 "
                                                     "(u_x of nodes 15, 20, 26 off by 2.6e-3, tolerance 1e-3); to "
                                                     "investigate against Kratos 10.4, which meets the t = 17.3 "
@@ -224,6 +230,9 @@ def test_frictional_case(csma_cases, monkeypatch, case):
         assert to_reference <= REFERENCE_ONLY_TOLERANCE[name]
         return
     assert to_reference <= FRICTIONAL_REFERENCE_GAP[name] + 1e-3
+    if name in KRATOS_WITHOUT_FRICTION:
+        assert sum(iterations) <= KRATOS_WITHOUT_FRICTION[name]
+        return
     with open(os.path.join(KRATOS_SNAPSHOTS, f"{name}_frictional.json")) as f:
         kratos = json.load(f)
     to_kratos = worst_difference(analysis.snapshot, kratos["nodes"])
