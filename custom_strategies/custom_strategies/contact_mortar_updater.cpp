@@ -6,6 +6,7 @@
 #include "core/model/model_part.h"
 #include "core/variables/kernel_variables.h"
 #include "custom_conditions/contact_condition_utilities.h"
+#include "custom_utilities/adaptive_penalty_utilities.h"
 #include "custom_utilities/normal_calculation_utilities.h"
 
 namespace mc {
@@ -47,6 +48,11 @@ void ContactMortarUpdater::UpdateNormals(ModelPart& model_part) {
   NormalCalculationUtilities::ComputeNodalNormals(*interface);
   timings_.normals += SecondsSince(start);
   ++timings_.normals_calls;
+}
+
+void ContactMortarUpdater::AdaptPenalty(ModelPart& model_part) {
+  if (ModelPart* interface = FindContactPart(model_part, "Contact"))
+    AdaptivePenaltyUtilities::AdaptNodalPenalties(*interface);
 }
 
 }  // namespace mc

@@ -9,7 +9,8 @@ namespace mc {
 
 /// The MortarUpdater of the ALM and penalty contact processes: nodal normals of the `Contact`
 /// interface from its conditions, and the weighted gap (and NODAL_AREA) of the slave nodes from
-/// the explicit contribution of every pair condition of `ComputingContact`.
+/// the explicit contribution of every pair condition of `ComputingContact`, and the adapted nodal
+/// penalties of the `Contact` slave nodes (AdaptivePenaltyUtilities).
 class ContactMortarUpdater : public MortarUpdater {
  public:
   /// Cumulative wall-clock seconds and calls, for benchmarks.
@@ -22,6 +23,7 @@ class ContactMortarUpdater : public MortarUpdater {
 
   void ComputeWeightedGap(ModelPart& model_part) override;
   void UpdateNormals(ModelPart& model_part) override;
+  void AdaptPenalty(ModelPart& model_part) override;
   const Timings& GetTimings() const noexcept { return timings_; }
 
  private:

@@ -38,8 +38,6 @@ FRICTIONAL_KEYS_WITHOUT_EFFECT = {
 KEYS_WITHOUT_EFFECT = {
     ("", "operator_threshold"): "no condition reads it: the frictional conditions always take the mortar operators "
                                 "of the last converged step as the previous ones",
-    ("advance_ALM_parameters", "max_gap_factor"): "only the adaptive penalty (adapt_penalty) reads it, "
-                                                  "which is not implemented",
     **{("advance_explicit_parameters", key): _EXPLICIT
        for key in ("manual_max_gap_theshold", "automatic_gap_factor", "max_gap_threshold", "max_gap_factor",
                    "logistic_exponent_factor")},
@@ -95,11 +93,10 @@ class ALMContactProcess(SearchBaseProcess):
         without_effect = dict(KEYS_WITHOUT_EFFECT)
         if not self.frictional:
             without_effect.update(FRICTIONAL_KEYS_WITHOUT_EFFECT)
+        if not self.settings["advance_ALM_parameters"]["adapt_penalty"].GetBool():
+            without_effect[("advance_ALM_parameters", "max_gap_factor")] = \
+                "only the adaptive penalty reads it, and adapt_penalty is false"
         warn_about_keys_without_effect(self.settings, self.GetDefaultParameters(), without_effect)
-        if self.settings["advance_ALM_parameters"]["adapt_penalty"].GetBool():
-            raise _core.NotImplementedFeatureError(
-                f"{self.settings['advance_ALM_parameters'].Where()}.adapt_penalty: the adaptive penalty is not "
-                "implemented yet")
         self._check_friction_settings()
 
     def _check_friction_settings(self) -> None:

@@ -156,14 +156,12 @@ FRICTIONAL_REFERENCE_GAP = {
     "hyper_simple_patch_test": 1.3e-2,
     "threshold_slip_hyper_simple_patch_test": 5.6e-3,
     "mesh_moving_matching_test": 6.4e-3,
-    "hyper_simple_stick_patch_test": 1.8e-6,
     "hyper_simple_slip_patch_test": 1.7e-2,
 }
 FRICTIONAL_KRATOS_TOLERANCE = {
     "hyper_simple_patch_test": 1e-3,
     "threshold_slip_hyper_simple_patch_test": 1e-3,
     "mesh_moving_matching_test": 1e-3,
-    "hyper_simple_stick_patch_test": 1e-4,
     "hyper_simple_slip_patch_test": 1e-3,
 }
 KRATOS_FAILS = {"friction_block_test": "Kratos 10.4.4 stops at step 38 (t = 0.19): its linear solver finds the "
@@ -180,8 +178,6 @@ KRATOS_WITHOUT_FRICTION = {"hyper_simple_slip_patch_test": 7}
 REFERENCE_ONLY_TOLERANCE = {"friction_block_test": 1e-2}
 #: Frictional cases that do not run yet: (what they raise, why).
 KNOWN_FAILURES = {
-    "hyper_simple_stick_patch_test": (mc.NotImplementedFeatureError, "advance_ALM_parameters.adapt_penalty (true in "
-                                                                     "this case) is not implemented"),
     "mesh_moving_matching_test": (CheckResultError, "pure slip on a moving mesh: its own json check fails at t = 1 "
                                                     "(u_x of nodes 15, 20, 26 off by 2.6e-3, tolerance 1e-3); to "
                                                     "investigate against Kratos 10.4, which meets the t = 17.3 "
@@ -190,6 +186,9 @@ KNOWN_FAILURES = {
                                               "reference (-115.3 against -74.0 at node 4); to investigate (Kratos "
                                               "10.4 cannot run it)"),
 }
+#: The penalty stick patch (adapt_penalty) is tested in test_adaptive_penalty.py: Kratos 10.4 and its
+#: reference file check a collapsed penalty there (the blocks overlap by 64 times max_gap).
+CHECKED_ELSEWHERE = {"hyper_simple_stick_patch_test"}
 #: Hundreds of steps: run with -m slow.
 SLOW = {"mesh_moving_matching_test", "friction_block_test"}
 
@@ -205,7 +204,8 @@ def _frictional_params(case: str):
     return pytest.param(case, id=name, marks=marks)
 
 
-@pytest.mark.parametrize("case", [_frictional_params(case) for case, _ in FRICTIONAL_CASES])
+@pytest.mark.parametrize("case", [_frictional_params(case) for case, _ in FRICTIONAL_CASES
+                                  if os.path.basename(case) not in CHECKED_ELSEWHERE])
 def test_frictional_case(csma_cases, monkeypatch, case):
     """The frictional Kratos cases (ALM stick/slip and threshold slip, ALM pure slip on a moving
     mesh, the 3D friction block, penalty stick and slip) run unchanged, their own json checks pass,

@@ -20,8 +20,6 @@ from mortarcontact.solvers import create_solver
 IMPLEMENTED = {("alm_contact_process", "Frictionless"), ("penalty_contact_process", "Frictionless"),
                ("alm_contact_process", "Frictional"), ("alm_contact_process", "FrictionalPureSlip"),
                ("penalty_contact_process", "Frictional")}
-#: Cases whose contact set-up asks for something else that is not implemented.
-NOT_IMPLEMENTED_OPTIONS = {"hyper_simple_stick_patch_test_parameters.json": "adapt_penalty"}
 
 
 def _contact_items(parameters: dict):
@@ -43,11 +41,7 @@ def test_every_csma_case_contact_list_validates(csma_cases):
             model = _core.Model()
             settings = item.get("Parameters", {})
             key = (item["python_module"], settings.get("contact_type", "Frictionless"))
-            option = NOT_IMPLEMENTED_OPTIONS.get(os.path.basename(path))
-            if option:
-                with pytest.raises(mc.NotImplementedFeatureError, match=option):
-                    create_process(_core.Parameters(json.dumps(item)), model)
-            elif key in IMPLEMENTED:
+            if key in IMPLEMENTED:
                 process = create_process(_core.Parameters(json.dumps(item)), model)
                 assert process.settings["search_parameters"]["search_factor"].GetDouble() > 0
             else:
