@@ -6,8 +6,9 @@ and writes the requested nodal values at the requested time:
 REQUEST: {"time": t, "nodes": {"NODE_<id>": ["VAR", ...]}}; FORMULATION: scalar | components |
 frictional (as written), the formulation PARAMETERS were migrated to (recorded only).
 Non-historical variables (AUGMENTED_NORMAL_CONTACT_PRESSURE) are read with GetValue. The Newton
-iterations of every step are stored too. A run that fails after the requested time still writes
-its values, with the error (its first line) under "error".
+iterations of every step are stored too. A run that fails still writes what it has (the values if
+it reached the requested time, and the iterations of its converged steps), with the error (its first
+line) under "error".
 """
 import json
 import os
@@ -51,13 +52,11 @@ def main(parameters_file, request_file, formulation, output):
     error = None
     try:
         Analysis(model, params).Run()
-    except Exception as e:  # Kratos raises plain RuntimeErrors; reported with the values
-        if not snapshot:
-            raise
+    except Exception as e:  # Kratos raises plain RuntimeErrors; reported with what was computed
         error = str(e).strip().splitlines()[0] if str(e).strip() else type(e).__name__
     finally:
         os.chdir(cwd)
-    if not snapshot:
+    if not snapshot and not error:
         raise SystemExit(f"{parameters_file}: time {request['time']} was never reached")
     result = {"kratos": "10.4.4", "formulation": formulation, "time": request["time"], "nodes": snapshot,
               "newton_iterations": iterations}
