@@ -74,7 +74,8 @@ test-cpp:
 test-python:
 	$(PYTHON) -m pytest -q tests/python
 
-# Structural block (0.1M-1M DoFs), Hertz cases and the structural parity sweep side by side with
+# Structural block (0.1M-1M DoFs), Hertz cases, the structural parity sweep and the frictional
+# shared cases (Newton iterations, benchmarks/kratos_cases/frictional_iterations.md) side by side with
 # Kratos 10.4 (its wheels go into a separate virtual environment created by the scripts, never
 # into this one).
 bench: install
@@ -82,6 +83,7 @@ bench: install
 	$(PYTHON) benchmarks/hertz/compare.py --cases hertz2d_2k,hertz2d_8k,hertz2d_30k,hertz3d_15k,hertz3dgrid_15k
 	$(PYTHON) benchmarks/hertz/contact_scaling.py
 	$(PYTHON) benchmarks/structural_parity/run.py
+	$(PYTHON) benchmarks/kratos_cases/frictional_iterations.py
 
 # The large Hertz cases, one run each (Kratos needs about 25 minutes for hertz3d_50k alone); the
 # 3D cases past 50k DoFs with ours only, on the PETSc field split (algebraic multigrid): a direct

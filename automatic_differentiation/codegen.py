@@ -71,9 +71,11 @@ class Symbols:
         self.eps = [S(f"eps({j})") for j in range(n)]
         self.df = [S(f"df({j})") for j in range(n)]
         self.k = S("k")
-        # Friction: nodal coefficient mu_j, tangent factor c_tau, slip augmentation c_slip, and the
+        # Friction: nodal Coulomb coefficient mu_j, tangent factor c_tau, slip augmentation c_slip, and the
         # weighted slip s_j, an intermediate like g_j (its total derivative: AddSlipChainRule).
         self.mu = [S(f"mu({j})") for j in range(n)]
+        # Tresca: the nodal threshold tau_j of the tangential traction (0 for Coulomb).
+        self.tau = [S(f"tau({j})") for j in range(n)]
         self.ct = S("ct")
         self.cs = S("cslip")
         self.s = [[S(f"s({j}, {c})") for c in range(d)] for j in range(n)]
@@ -301,7 +303,7 @@ def emit_lhs_branch(branch: Branch, j: int, indent: str):
 def used_names(lines) -> set:
     """The input names (C++ locals) that the emitted lines refer to."""
     text = "\n".join(lines)
-    names = {name for name in ("D", "M", "x1", "x2", "n1", "g", "lm", "eps", "df", "mu", "s")
+    names = {name for name in ("D", "M", "x1", "x2", "n1", "g", "lm", "eps", "df", "mu", "tau", "s")
              if re.search(rf"(?<![A-Za-z0-9_]){name}\(", text)}
     names |= {name for name in ("k", "ct", "cslip") if re.search(rf"(?<![A-Za-z0-9_]){name}(?![A-Za-z0-9_(])", text)}
     return names

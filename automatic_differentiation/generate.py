@@ -62,6 +62,7 @@ def preamble(names: set, f, kinematics: bool) -> list:
         "eps": "data.penalty",
         "df": "data.dynamic_factor",
         "mu": "data.friction_coefficient",
+        "tau": "data.friction_threshold",
         "s": "data.weighted_slip",
     }
     for name, source in sources.items():

@@ -80,6 +80,8 @@ void FrictionalMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::Complet
   const Geometry& slave = this->GetGeometry();
   for (int j = 0; j < TNumNodes; ++j) {
     data.friction_coefficient(j) = FrictionCoefficient(slave[j]);
+    data.friction_threshold(j) =
+        slave[j].Has(TRESCA_FRICTION_THRESHOLD) ? slave[j].GetValue(TRESCA_FRICTION_THRESHOLD) : 0.0;
     // Without an augmented tangent pressure the slip direction is undefined; the stick branch is
     // then the regular one (its tangential traction vanishes with it).
     data.slip[j] = slave[j].Is(SLIP) && AugmentedTangentPressure(data, j).norm() > 0.0;

@@ -33,7 +33,8 @@ struct MortarKernelData {
   /// s_j = T_j [(D - D_n) x1 - (M - M_n) x2]_j (WeightedSlip): this pair's weighted, frame-indifferent
   /// tangential slip increment of the step; T_j = I - n_j n_j^T.
   SlaveMatrix weighted_slip = SlaveMatrix::Zero();
-  SlaveVector friction_coefficient = SlaveVector::Zero();  ///< mu_j
+  SlaveVector friction_coefficient = SlaveVector::Zero();  ///< mu_j (Coulomb)
+  SlaveVector friction_threshold = SlaveVector::Zero();    ///< tau_j (Tresca)
   std::array<bool, TNumNodes> slip{};                      ///< SLIP flag of each (active) slave node
   double tangent_factor = 1.0;                             ///< c_tau
   double slip_augmentation = 0.0;                          ///< c_slip

@@ -15,6 +15,7 @@
 #include "core/variables/kernel_variables.h"
 #include "custom_utilities/contact_search_geometry.h"
 #include "custom_utilities/contact_search_tree.h"
+#include "custom_utilities/contact_variables.h"
 #include "custom_utilities/normal_calculation_utilities.h"
 #include "structural/application/register_structural_mechanics.h"
 
@@ -134,9 +135,13 @@ ModelPart& ContactInterfaceBuilder::Build(const ContactInterfaceSettings& settin
     if (source) static_cast<DataValueContainer&>(properties) = static_cast<const DataValueContainer&>(*source);
   }
   if (!properties.Has(FRICTION_COEFFICIENT)) properties.SetValue(FRICTION_COEFFICIENT, settings.friction_coefficient);
-  // The frictional conditions and active-set utilities read the coefficient per node.
+  // The frictional conditions and active-set utilities read the coefficient (and the Tresca
+  // threshold, when the properties have one) per node.
   const double friction_coefficient = properties.GetValue(FRICTION_COEFFICIENT);
   for (Node* node : sub.Nodes()) node->SetValue(FRICTION_COEFFICIENT, friction_coefficient);
+  if (properties.Has(TRESCA_FRICTION_THRESHOLD))
+    for (Node* node : sub.Nodes())
+      node->SetValue(TRESCA_FRICTION_THRESHOLD, properties.GetValue(TRESCA_FRICTION_THRESHOLD));
 
   // Roles (spec 4.1: the listed parts are the slave side).
   std::unordered_set<const Node*> slave_nodes;

@@ -79,6 +79,8 @@ SetChanges UpdateFrictionalSet(ModelPart& contact_part, bool alm, bool pure_slip
       continue;
     }
     const double mu = node.GetValue(FRICTION_COEFFICIENT);
+    const double bound = FrictionBound(
+        mu, node.Has(TRESCA_FRICTION_THRESHOLD) ? node.GetValue(TRESCA_FRICTION_THRESHOLD) : 0.0, augmented_normal);
     const Array3 slip = has_slip ? Array3(node.FastGetSolutionStepValue(WEIGHTED_SLIP)) : Array3(Array3::Zero());
     const Array3 augmented_tangent = AugmentedTangentPressure(k, TangentialPart(multiplier, normal),
                                                               was_slip ? slip_factor : tangent_factor, eps, slip);
@@ -88,24 +90,23 @@ SetChanges UpdateFrictionalSet(ModelPart& contact_part, bool alm, bool pure_slip
       if (alm)
         node.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER) =
             ActivationPressure(k, augmented_normal) * normal +
-            (mu > 0.0 ? Array3(augmented_tangent / k) : Array3(Array3::Zero()));
+            (bound > 0.0 ? Array3(augmented_tangent / k) : Array3(Array3::Zero()));
     }
     const double theta = SlipTestFactor(was_slip, slip_threshold);
-    const bool slips = IsSlip(augmented_tangent.norm(), mu, augmented_normal, theta);
+    const bool slips = IsSlip(augmented_tangent.norm(), bound, theta);
     Array3 traction = augmented_tangent;
     if (slips) {
       // ALM: along the tangential multiplier (after a possible activation), else along lbar_t.
       const Array3 along =
           alm ? TangentialPart(node.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER), normal) : augmented_tangent;
-      traction = CoulombLimit(mu, augmented_normal, along.norm() > 0.0 ? along : augmented_tangent);
+      traction = FrictionLimit(bound, along.norm() > 0.0 ? along : augmented_tangent);
     }
     node.SetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE, traction);
     bool slip_now = slips;
     if (pure_slip) {
       if (!slips && echo_level >= 1)
-        Logger::Warning(Concat("pure slip: slave node ", node.Id(),
-                               " would stick (|lbar_t| = ", augmented_tangent.norm(),
-                               " <= mu |lbar_n| = ", mu * std::abs(augmented_normal), "); kept slipping"));
+        Logger::Warning(Concat("pure slip: slave node ", node.Id(), " would stick (|lbar_t| = ",
+                               augmented_tangent.norm(), " <= its friction bound ", bound, "); kept slipping"));
       slip_now = true;
     }
     node.Set(SLIP, slip_now);

@@ -48,11 +48,11 @@ constexpr double ActivationPressure(double scale_factor, double augmented_pressu
   return augmented_pressure / scale_factor;
 }
 
-/// Coulomb friction. With the unit normal n, the tangential multiplier lambda_t = lambda - (n . lambda) n
+/// Coulomb and Tresca friction. With the unit normal n, the tangential multiplier lambda_t = lambda - (n . lambda) n
 /// and the weighted slip s (tangential), the augmented tangent pressure is
 ///   lbar_t = k lambda_t + c eps s,   c = c_tau (stick node), c_slip c_tau (slip node)
 /// (k = 0 and c = c_tau for the penalty formulation). The node slips when |lbar_t| exceeds the
-/// Coulomb limit -mu lbar_n times theta, theta = 1 for a sticking node and 1 - SLIP_THRESHOLD for
+/// friction bound b (FrictionBound) times theta, theta = 1 for a sticking node and 1 - SLIP_THRESHOLD for
 /// one that already slips: the small hysteresis keeps a node at the limit from chattering.
 
 /// The part of `v` orthogonal to the unit `normal`.
@@ -69,18 +69,24 @@ constexpr double SlipTestFactor(bool was_slip, double slip_threshold) noexcept {
   return was_slip ? 1.0 - slip_threshold : 1.0;
 }
 
-/// |lbar_t| > theta (-mu lbar_n). Without friction (mu = 0) any tangent pressure slips.
-inline bool IsSlip(double tangent_pressure_norm, double friction_coefficient, double augmented_normal_pressure,
-                   double theta) noexcept {
-  return tangent_pressure_norm > theta * (-friction_coefficient * augmented_normal_pressure);
+/// The largest tangent traction of a node: b = tau - mu lbar_n (Coulomb: tau = 0; Tresca: mu = 0,
+/// tau = TRESCA_FRICTION_THRESHOLD, whatever the normal pressure).
+constexpr double FrictionBound(double friction_coefficient, double friction_threshold,
+                               double augmented_normal_pressure) noexcept {
+  return friction_threshold - friction_coefficient * augmented_normal_pressure;
 }
 
-/// The tangent traction of a slipping node: the Coulomb limit -mu lbar_n along `direction`
-/// (normalised here; a zero direction gives a zero traction).
-inline Array3 CoulombLimit(double friction_coefficient, double augmented_normal_pressure, const Array3& direction) {
+/// |lbar_t| > theta b. Without friction (b = 0) any tangent pressure slips.
+inline bool IsSlip(double tangent_pressure_norm, double friction_bound, double theta) noexcept {
+  return tangent_pressure_norm > theta * friction_bound;
+}
+
+/// The tangent traction of a slipping node: the bound b along `direction` (normalised here; a
+/// zero direction gives a zero traction).
+inline Array3 FrictionLimit(double friction_bound, const Array3& direction) {
   const double norm = direction.norm();
   if (!(norm > 0.0)) return Array3::Zero();
-  return (-friction_coefficient * augmented_normal_pressure / norm) * direction;
+  return (friction_bound / norm) * direction;
 }
 
 /// What an update changed: nodes that switched ACTIVE and (frictional formulations) active nodes
@@ -107,21 +113,21 @@ std::size_t ComputeALMFrictionlessComponentsActiveSet(ModelPart& contact_part, C
 /// Penalty: lambda_bar = eps g, i.e. the sign of the weighted gap.
 std::size_t ComputePenaltyFrictionlessActiveSet(ModelPart& contact_part, ChangedNodes* changed = nullptr);
 
-/// Vector ALM with Coulomb friction, on the SLAVE nodes of `contact_part`: AUGMENTED_NORMAL_CONTACT_PRESSURE
+/// Vector ALM with friction, on the SLAVE nodes of `contact_part`: AUGMENTED_NORMAL_CONTACT_PRESSURE
 /// and AUGMENTED_TANGENT_CONTACT_PRESSURE (non-historical) as above, ACTIVE from lbar_n; a node that
 /// switches on starts from lambda = n lbar_n / k + lbar_t / k (normal part only when mu = 0). An
 /// active node is set SLIP by the slip test, and then its tangent pressure is stored at the
-/// Coulomb limit along its tangential multiplier. With `pure_slip` every active node is SLIP
+/// friction bound along its tangential multiplier. With `pure_slip` every active node is SLIP
 /// (a node the test finds sticking is reported at echo level >= 1) and no stick/slip change is
-/// counted. Inactive nodes lose SLIP and their WEIGHTED_SLIP. FRICTION_COEFFICIENT is nodal
-/// (non-historical); TANGENT_FACTOR, SLIP_THRESHOLD, SLIP_AUGMENTATION_COEFFICIENT come from the
-/// ProcessInfo (the last two 0 when absent). `changed`: the nodes whose ACTIVE or SLIP changed.
+/// counted. Inactive nodes lose SLIP and their WEIGHTED_SLIP. FRICTION_COEFFICIENT and
+/// TRESCA_FRICTION_THRESHOLD (0 when absent) are nodal (non-historical); TANGENT_FACTOR, SLIP_THRESHOLD,
+/// SLIP_AUGMENTATION_COEFFICIENT come from the ProcessInfo (the last two 0 when absent). `changed`: the nodes whose
+/// ACTIVE or SLIP changed.
 SetChanges ComputeALMFrictionalActiveSet(ModelPart& contact_part, bool pure_slip, int echo_level = 0,
                                          ChangedNodes* changed = nullptr);
 
-/// Penalty with Coulomb friction: lbar_n = eps g, lbar_t = c_tau eps s, slip when
-/// |lbar_t| > -mu lbar_n (no hysteresis); otherwise as ComputeALMFrictionalActiveSet, the slip
-/// traction directed along lbar_t.
+/// Penalty with friction: lbar_n = eps g, lbar_t = c_tau eps s, slip when |lbar_t| > theta b; otherwise as
+/// ComputeALMFrictionalActiveSet, the slip traction directed along lbar_t.
 SetChanges ComputePenaltyFrictionalActiveSet(ModelPart& contact_part, bool pure_slip, int echo_level = 0,
                                              ChangedNodes* changed = nullptr);
 

@@ -1,8 +1,9 @@
 # SPDX-License-Identifier: BSD-3-Clause
-"""Augmented Lagrangian Coulomb frictional mortar contact (derivation in README.md).
+"""Augmented Lagrangian frictional mortar contact, Coulomb and Tresca (derivation in README.md).
 
-Vector multiplier lambda_j; lbar_n = k n.lambda + eps g is the augmented normal pressure and
-T(v) = v - n (n.v) the tangential part at slave node j."""
+Vector multiplier lambda_j; lbar_n = k n.lambda + eps g is the augmented normal pressure, T(v) =
+v - n (n.v) the tangential part at slave node j, and b = tau - mu lbar_n the friction bound of a
+slipping node (Coulomb: tau = 0; Tresca: mu = 0)."""
 
 from codegen import dot
 
@@ -30,19 +31,19 @@ def stick(sym, j):
 
 
 def slip(sym, j):
-    """Slip: the Coulomb traction lbar_n n - mu lbar_n d (d = lbar_t / |lbar_t|, lbar_t = k T(lambda)
-    + c_slip c_tau eps s) against the virtual jump, the normal constraint and the tangential
-    constraint -k^2/(c_tau eps) T(wl) . (T(lambda) + mu lbar_n d / k) driving k T(lambda) to the
-    Coulomb limit."""
+    """Slip: the traction lbar_n n + b d (d = lbar_t / |lbar_t|, lbar_t = k T(lambda) + c_slip c_tau
+    eps s, b = tau - mu lbar_n) against the virtual jump, the normal constraint and the tangential
+    constraint -k^2/(c_tau eps) T(wl) . (T(lambda) - b d / k) driving k T(lambda) to the limit."""
     n, s = sym.n1[j], sym.weighted_slip(j)
     pressure = _normal_pressure(sym, j)
     lm_t = sym.tangential(j, sym.lm[j])
     augmented_t = [sym.k * lc + sym.cs * sym.ct * sym.eps[j] * sc for lc, sc in zip(lm_t, s)]
     direction = sym.direction(j, augmented_t)
-    traction = [pressure * nc - sym.mu[j] * pressure * dc for nc, dc in zip(n, direction)]
+    bound = sym.tau[j] - sym.mu[j] * pressure
+    traction = [pressure * nc + bound * dc for nc, dc in zip(n, direction)]
     work = dot(traction, sym.test_jump(j))
     normal_constraint = sym.k * sym.weighted_gap(j) * dot(n, sym.wl[j])
-    limit = [lc + sym.mu[j] * pressure * dc / sym.k for lc, dc in zip(lm_t, direction)]
+    limit = [lc - bound * dc / sym.k for lc, dc in zip(lm_t, direction)]
     tangential = -(sym.k**2 / (sym.ct * sym.eps[j])) * dot(sym.tangential(j, sym.wl[j]), limit)
     return sym.df[j] * work + normal_constraint + tangential
 

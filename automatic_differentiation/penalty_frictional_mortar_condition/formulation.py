@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: BSD-3-Clause
-"""Penalty Coulomb frictional mortar contact (derivation in README.md)."""
+"""Penalty frictional mortar contact, Coulomb and Tresca (derivation in README.md)."""
 
 from codegen import dot
 
@@ -18,11 +18,13 @@ def stick(sym, j):
 
 
 def slip(sym, j):
-    """Slip: the Coulomb traction eps g n - mu eps g d, d = s / |s| (the direction of the augmented
-    tangent pressure c_tau eps s), against the virtual jump."""
+    """Slip: the traction eps g n + b d, b = tau - mu eps g (Coulomb: tau = 0; Tresca: mu = 0),
+    d = s / |s| (the direction of the augmented tangent pressure c_tau eps s), against the virtual
+    jump."""
     eps, g, s = sym.eps[j], sym.weighted_gap(j), sym.weighted_slip(j)
     direction = sym.direction(j, s)
-    traction = [eps * g * nc - sym.mu[j] * eps * g * dc for nc, dc in zip(sym.n1[j], direction)]
+    bound = sym.tau[j] - sym.mu[j] * eps * g
+    traction = [eps * g * nc + bound * dc for nc, dc in zip(sym.n1[j], direction)]
     return sym.df[j] * dot(traction, sym.test_jump(j))
 
 

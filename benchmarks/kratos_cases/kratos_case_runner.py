@@ -6,7 +6,9 @@ and writes the requested nodal values at the requested time:
 REQUEST: {"time": t, "nodes": {"NODE_<id>": ["VAR", ...]}}; FORMULATION: scalar | components |
 frictional or tying (as written), the formulation PARAMETERS were migrated to (recorded only).
 Non-historical variables (AUGMENTED_NORMAL_CONTACT_PRESSURE) are read with GetValue. The Newton
-iterations of every step are stored too.
+iterations of every step are stored too. A run that fails still writes what it has (the values if
+it reached the requested time, and the iterations of its converged steps), with the error (its first
+line) under "error".
 """
 import json
 import os
@@ -47,16 +49,21 @@ def main(parameters_file, request_file, formulation, output):
     KM.Logger.GetDefaultOutput().SetSeverity(KM.Logger.Severity.WARNING)
     cwd = os.getcwd()
     os.chdir(os.path.dirname(parameters_file))
+    error = None
     try:
         Analysis(model, params).Run()
+    except Exception as e:  # Kratos raises plain RuntimeErrors; reported with what was computed
+        error = str(e).strip().splitlines()[0] if str(e).strip() else type(e).__name__
     finally:
         os.chdir(cwd)
-    if not snapshot:
+    if not snapshot and not error:
         raise SystemExit(f"{parameters_file}: time {request['time']} was never reached")
+    result = {"kratos": "10.4.4", "formulation": formulation, "time": request["time"], "nodes": snapshot,
+              "newton_iterations": iterations}
+    if error:
+        result["error"] = error
     with open(output, "w") as f:
-        json.dump({"kratos": "10.4.4", "formulation": formulation, "time": request["time"], "nodes": snapshot,
-                   "newton_iterations": iterations},
-                  f, indent=1, sort_keys=True)
+        json.dump(result, f, indent=1, sort_keys=True)
         f.write("\n")
 
 

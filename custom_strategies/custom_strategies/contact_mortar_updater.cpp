@@ -7,6 +7,7 @@
 #include "core/variables/kernel_variables.h"
 #include "custom_conditions/contact_condition_utilities.h"
 #include "custom_utilities/contact_variables.h"
+#include "custom_utilities/adaptive_penalty_utilities.h"
 #include "custom_utilities/normal_calculation_utilities.h"
 
 namespace mc {
@@ -64,6 +65,11 @@ void ContactMortarUpdater::UpdateDynamicFactor(ModelPart& model_part) {
     const bool closes = node->GetValue(NODAL_AREA) > 0.0 && start > 0.0 && predicted < 0.0;
     node->SetValue(DYNAMIC_FACTOR, closes ? -predicted / (start - predicted) : 1.0);
   }
+}
+
+void ContactMortarUpdater::AdaptPenalty(ModelPart& model_part) {
+  if (ModelPart* interface = FindContactPart(model_part, "Contact"))
+    AdaptivePenaltyUtilities::AdaptNodalPenalties(*interface);
 }
 
 }  // namespace mc

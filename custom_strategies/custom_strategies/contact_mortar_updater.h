@@ -9,7 +9,8 @@ namespace mc {
 
 /// The MortarUpdater of the ALM and penalty contact processes: nodal normals of the `Contact`
 /// interface from its conditions, and the weighted gap (and NODAL_AREA) of the slave nodes from
-/// the explicit contribution of every pair condition of `ComputingContact`.
+/// the explicit contribution of every pair condition of `ComputingContact`, and the adapted nodal
+/// penalties of the `Contact` slave nodes (AdaptivePenaltyUtilities).
 ///
 /// The dynamic factor (`compute_dynamic_factor`, dynamic problems; the seeds' DynamicFactor, which
 /// scales a node's contact force): once per step, at its first iteration, the fraction of the step
@@ -35,6 +36,7 @@ class ContactMortarUpdater : public MortarUpdater {
   /// Sets DYNAMIC_FACTOR on the slave nodes of `Contact` at the first call of each STEP (the
   /// weighted gap is then the prediction's).
   void UpdateDynamicFactor(ModelPart& model_part) override;
+  void AdaptPenalty(ModelPart& model_part) override;
   const Timings& GetTimings() const noexcept { return timings_; }
 
  private:

@@ -109,11 +109,12 @@ class ResidualBasedNewtonRaphsonContactStrategy : public NewtonRaphsonStrategy {
   /// diverging iterate) counts as non-convergence.
   bool TrySolveWithActiveSet();
   bool AdaptiveStep();
-  /// ACTIVE flag of every slave node of the contact part, in container order.
-  std::vector<char> ActiveStates() const;
-  /// Sets the ACTIVE flag of every slave node of the contact part (the order of ActiveStates).
-  void SetActiveStates(const std::vector<char>& states);
-  /// Adds one flip to every slave node whose state differs from `before`; returns how many.
+  /// Contact state of every slave node of the contact part, in container order: bit 1 if
+  /// ACTIVE, bit 2 if SLIP (the stick / slip set belongs to the state of a frictional node).
+  std::vector<char> ContactStates() const;
+  /// Sets the ACTIVE and SLIP flags of every slave node of the contact part (the order of ContactStates).
+  void SetContactStates(const std::vector<char>& states);
+  /// Adds one flip to every slave node whose ACTIVE flag differs from `before`; returns how many.
   std::size_t CountFlips(const std::vector<char>& before);
   void SaveStepStart();
   void RestoreStepStart();

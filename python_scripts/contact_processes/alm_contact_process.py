@@ -44,26 +44,27 @@ FRICTIONAL_KEYS_WITHOUT_EFFECT = {
 KEYS_WITHOUT_EFFECT = {
     ("", "operator_threshold"): "no condition reads it: the frictional conditions always take the mortar operators "
                                 "of the last converged step as the previous ones",
-    ("advance_ALM_parameters", "max_gap_factor"): "only the adaptive penalty (adapt_penalty) reads it, "
-                                                  "which is not implemented",
     **{("advance_explicit_parameters", key): _EXPLICIT
        for key in ("manual_max_gap_theshold", "automatic_gap_factor", "max_gap_threshold", "max_gap_factor",
                    "logistic_exponent_factor")},
 }
-#: Kratos' frictional laws; only Coulomb's is implemented here.
+#: Kratos' frictional laws: Coulomb (the bound of the tangent traction is mu times the normal
+#: pressure, FRICTION_COEFFICIENT) and Tresca (a constant bound, TRESCA_FRICTION_THRESHOLD in the
+#: materials, whatever the pressure; Kratos 10.4 has it as work in progress only).
 FRICTIONAL_LAWS = ("Coulomb", "Tresca")
 
 
 def is_pure_slip(formulation, contact_part) -> bool:
     """Kratos' pure-slip detection (spec 4.4): the ``PureSlip`` formulations, or a frictional one
-    whose interface nodes (``contact_part``, built) all have a zero FRICTION_COEFFICIENT: nothing
-    can stick."""
+    whose interface nodes (``contact_part``, built) all have a zero FRICTION_COEFFICIENT and no
+    Tresca threshold: nothing can stick."""
     if not formulation.frictional:
         return False
     if formulation.pure_slip:
         return True
-    mus = contact_part.GetNodalNonHistoricalValues(_core.FRICTION_COEFFICIENT)
-    return bool((mus < sys.float_info.epsilon).all())
+    bounds = (contact_part.GetNodalNonHistoricalValues(_core.FRICTION_COEFFICIENT) +
+              contact_part.GetNodalNonHistoricalValues(_core.TRESCA_FRICTION_THRESHOLD))
+    return bool((bounds < sys.float_info.epsilon).all())
 
 
 class ALMContactProcess(SearchBaseProcess):
@@ -103,11 +104,10 @@ class ALMContactProcess(SearchBaseProcess):
         without_effect = dict(KEYS_WITHOUT_EFFECT)
         if not self.frictional:
             without_effect.update(FRICTIONAL_KEYS_WITHOUT_EFFECT)
+        if not self.settings["advance_ALM_parameters"]["adapt_penalty"].GetBool():
+            without_effect[("advance_ALM_parameters", "max_gap_factor")] = \
+                "only the adaptive penalty reads it, and adapt_penalty is false"
         warn_about_keys_without_effect(self.settings, self.GetDefaultParameters(), without_effect)
-        if self.settings["advance_ALM_parameters"]["adapt_penalty"].GetBool():
-            raise _core.NotImplementedFeatureError(
-                f"{self.settings['advance_ALM_parameters'].Where()}.adapt_penalty: the adaptive penalty is not "
-                "implemented yet")
         self._check_friction_settings()
 
     def _check_friction_settings(self) -> None:
@@ -118,9 +118,6 @@ class ALMContactProcess(SearchBaseProcess):
         if law not in FRICTIONAL_LAWS:
             raise _core.InputError(f"{s['frictional_law'].Where()}: unknown frictional law '{law}'"
                                    f"{nearest(law, FRICTIONAL_LAWS)} (valid: {', '.join(FRICTIONAL_LAWS)})")
-        if self.frictional and law != "Coulomb":
-            raise _core.NotImplementedFeatureError(
-                f"{s['frictional_law'].Where()}: the frictional law '{law}' is not implemented yet (only 'Coulomb')")
         for key, low, high, closed in (("tangent_factor", 0.0, math.inf, False),
                                        ("slip_augmentation_coefficient", 0.0, math.inf, True),
                                        ("slip_threshold", 0.0, 1.0, True),
@@ -166,6 +163,8 @@ class ALMContactProcess(SearchBaseProcess):
         for part in (self.root, self.root.GetSubModelPart("Contact"), self.root.GetSubModelPart("ComputingContact")):
             part.Set(_core.CONTACT, True)
             part.Set(_core.SLIP, self.frictional)
+        if self.frictional:
+            self._apply_frictional_law()
         self.pure_slip = is_pure_slip(self.formulation, self.root.GetSubModelPart("Contact"))
         if self.frictional:
             zero = [0.0, 0.0, 0.0]
@@ -178,6 +177,24 @@ class ALMContactProcess(SearchBaseProcess):
             _core.ALMVariablesCalculationProcess(self.root, self.root.GetSubModelPart("Contact"), alm,
                                                  penalty_multiplier=self.penalty_multiplier,
                                                  penalty_floor=self.penalty_floor).Execute()
+
+    def _apply_frictional_law(self) -> None:
+        """One bound per node for the conditions and the active set: Coulomb's uses the nodal
+        FRICTION_COEFFICIENT only (a threshold in the materials has no effect), Tresca's the nodal
+        TRESCA_FRICTION_THRESHOLD only, which every slave node must have, from the materials of
+        its interface."""
+        law = self.settings["frictional_law"]
+        tresca = law.GetString() == "Tresca"
+        for node in self.root.GetSubModelPart("Contact").Nodes:
+            if not tresca:
+                node.SetValue(_core.TRESCA_FRICTION_THRESHOLD, 0.0)
+                continue
+            threshold = node.GetValue(_core.TRESCA_FRICTION_THRESHOLD)
+            if node.Is(_core.SLAVE) and not threshold > 0.0:
+                raise _core.InputError(
+                    f"{law.Where()}: 'Tresca' needs a positive TRESCA_FRICTION_THRESHOLD in the materials of the "
+                    f"contact parts; slave node {node.Id} has {threshold}")
+            node.SetValue(_core.FRICTION_COEFFICIENT, 0.0)
 
     def ExecuteInitializeSolutionStep(self) -> None:
         super().ExecuteInitializeSolutionStep()

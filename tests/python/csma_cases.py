@@ -88,3 +88,25 @@ def reference_values(case: str):
                 nodes.setdefault(key, [])
                 nodes[key] += [v for v in variables if v in reference[key] and v not in nodes[key]]
     return SNAPSHOT_TIME.get(case, time), nodes
+
+
+def reference_nodes(case: str) -> dict:
+    """{"NODE_<id>": {variable: value at the last time}} over every reference file of the case."""
+    nodes = {}
+    for input_file, _, variables, _ in check_blocks(case):
+        with open(os.path.join(CSMA_CASES, input_file)) as f:
+            values = json.load(f)
+        for key, node in values.items():
+            if key.startswith("NODE_"):
+                nodes.setdefault(key, {}).update({v: node[v][-1] for v in variables if v in node})
+    return nodes
+
+
+def worst_difference(values: dict, expected: dict) -> float:
+    """max |value - expected| / max |expected| per variable, over the nodes; the worst variable."""
+    worst = 0.0
+    for name in {n for node in expected.values() for n in node}:
+        pairs = [(values[key][name], node[name]) for key, node in expected.items() if name in node]
+        scale = max(abs(e) for _, e in pairs) or 1.0
+        worst = max(worst, max(abs(v - e) for v, e in pairs) / scale)
+    return worst

@@ -133,12 +133,19 @@ def test_unknown_process_suggests_nearest(tmp_path):
     assert_clean_failure(result, 2, "assign_vector_variable_process")
 
 
-def test_not_implemented_option_of_a_contact_case_is_reported(csma_cases):
-    case = os.path.join(csma_cases, "penalty_frictional_contact_test_2D",
-                        "hyper_simple_stick_patch_test_parameters.json")
-    result = subprocess.run([sys.executable, "-m", "mortarcontact", "run", case], capture_output=True, text=True,
-                            cwd=csma_cases, timeout=300)
-    assert_clean_failure(result, 3, "adapt_penalty")
+def test_not_implemented_option_of_a_contact_case_is_reported(csma_cases, tmp_path):
+    case = os.path.join(csma_cases, "ALM_frictional_contact_test_2D", "hyper_simple_patch_test_parameters.json")
+    with open(case) as f:
+        params = json.load(f)
+    solver = params["solver_settings"]
+    for block, key in (("model_import_settings", "input_filename"), ("material_import_settings", "materials_filename")):
+        solver[block][key] = os.path.join(csma_cases, solver[block][key])
+    params["processes"]["contact_process_list"][0]["Parameters"]["slip_step_reset_frequency"] = -1
+    case = tmp_path / "parameters.json"
+    case.write_text(json.dumps(params))
+    result = subprocess.run([sys.executable, "-m", "mortarcontact", "run", str(case)], capture_output=True, text=True,
+                            cwd=tmp_path, timeout=300)
+    assert_clean_failure(result, 3, "slip_step_reset_frequency")
 
 
 def test_frictional_contact_case_runs_from_the_command_line(csma_cases):

@@ -21,8 +21,6 @@ IMPLEMENTED = {("alm_contact_process", "Frictionless"), ("penalty_contact_proces
                ("alm_contact_process", "Frictional"), ("alm_contact_process", "FrictionalPureSlip"),
                ("penalty_contact_process", "Frictional"),
                ("mesh_tying_process", "Frictionless")}  # mesh tying has no contact_type: the key's default
-#: Cases whose contact set-up asks for something else that is not implemented.
-NOT_IMPLEMENTED_OPTIONS = {"hyper_simple_stick_patch_test_parameters.json": "adapt_penalty"}
 
 
 def _contact_items(parameters: dict):
@@ -44,11 +42,7 @@ def test_every_csma_case_contact_list_validates(csma_cases):
             model = _core.Model()
             settings = item.get("Parameters", {})
             key = (item["python_module"], settings.get("contact_type", "Frictionless"))
-            option = NOT_IMPLEMENTED_OPTIONS.get(os.path.basename(path))
-            if option:
-                with pytest.raises(mc.NotImplementedFeatureError, match=option):
-                    create_process(_core.Parameters(json.dumps(item)), model)
-            elif key in IMPLEMENTED:
+            if key in IMPLEMENTED:
                 process = create_process(_core.Parameters(json.dumps(item)), model)
                 assert process.settings["search_parameters"]["search_factor"].GetDouble() > 0
             else:
@@ -196,17 +190,16 @@ def test_friction_keys_are_checked(settings, fragments):
 
 
 def test_friction_options_not_implemented_yet():
-    with pytest.raises(mc.NotImplementedFeatureError, match=r"frictional_law: the frictional law 'Tresca'"):
-        _process(ALMContactProcess, contact_type="Frictional", frictional_law="Tresca")
     with pytest.raises(mc.NotImplementedFeatureError, match=r"slip_step_reset_frequency: -1"):
         _process(ALMContactProcess, contact_type="Frictional", slip_step_reset_frequency=-1)
     # Without friction they have no effect.
     _process(ALMContactProcess, contact_type="Frictionless", frictional_law="Tresca", slip_step_reset_frequency=-1)
 
 
-def _frictional_patch(csma_cases, settings, mu=None):
+def _frictional_patch(csma_cases, settings, mu=None, threshold=None):
     """The frictional 2D patch (two unit squares 1e-3 apart), its interface set up by an ALM process
-    with `settings`; `mu` on the bodies' properties as materials.json gives it."""
+    with `settings`; `mu` (and the Tresca `threshold`) on the bodies' properties as materials.json
+    gives them."""
     model = _core.Model()
     root = model.CreateModelPart("Structure", 3)
     for var in (_core.DISPLACEMENT, _core.NORMAL, _core.NODAL_H, _core.WEIGHTED_GAP, _core.WEIGHTED_SLIP,
@@ -214,9 +207,10 @@ def _frictional_patch(csma_cases, settings, mu=None):
         root.AddNodalSolutionStepVariable(var)
     _core.ReadModelPart(root, os.path.join(csma_cases, "ALM_frictional_contact_test_2D",
                                            "hyper_simple_patch_test.mdpa"))
-    if mu is not None:
-        for element in root.Elements:
-            element.GetProperties().SetValue(_core.FRICTION_COEFFICIENT, mu)
+    for variable, value in ((_core.FRICTION_COEFFICIENT, mu), (_core.TRESCA_FRICTION_THRESHOLD, threshold)):
+        if value is not None:
+            for element in root.Elements:
+                element.GetProperties().SetValue(variable, value)
     process = ALMContactProcess(model, _core.Parameters(json.dumps({
         "assume_master_slave": {"0": ["Parts_Parts_Auto2"]}, "contact_model_part": {"0": ["Contact_Part"]},
         **settings})))
@@ -263,6 +257,26 @@ def test_frictionless_process_clears_slip(csma_cases):
 def test_pure_slip_detection(csma_cases, contact_type, mu, pure_slip):
     process, _ = _frictional_patch(csma_cases, {"contact_type": contact_type}, mu=mu)
     assert process.pure_slip == pure_slip
+
+
+@needs_bindings
+def test_frictional_law_sets_the_nodal_bounds(csma_cases):
+    """Tresca: the materials' threshold on every interface node and no Coulomb coefficient (not pure
+    slip although mu = 0); Coulomb: the coefficient only; Tresca without a threshold: an input error
+    naming the key, the variable and the node."""
+    process, root = _frictional_patch(csma_cases, {"contact_type": "Frictional", "frictional_law": "Tresca"},
+                                      mu=0.2, threshold=5.0)
+    contact = root.GetSubModelPart("Contact")
+    assert list(contact.GetNodalNonHistoricalValues(_core.TRESCA_FRICTION_THRESHOLD)) == [5.0] * 4
+    assert not contact.GetNodalNonHistoricalValues(_core.FRICTION_COEFFICIENT).any()
+    assert not process.pure_slip
+    process, root = _frictional_patch(csma_cases, {"contact_type": "Frictional"}, mu=0.2, threshold=5.0)
+    contact = root.GetSubModelPart("Contact")
+    assert not contact.GetNodalNonHistoricalValues(_core.TRESCA_FRICTION_THRESHOLD).any()
+    assert list(contact.GetNodalNonHistoricalValues(_core.FRICTION_COEFFICIENT)) == [0.2] * 4
+    with pytest.raises(mc.InputError, match=r"frictional_law: 'Tresca' needs a positive TRESCA_FRICTION_THRESHOLD"
+                                            r".*slave node \d+ has 0"):
+        _frictional_patch(csma_cases, {"contact_type": "Frictional", "frictional_law": "Tresca"}, mu=0.2)
 
 
 @needs_bindings

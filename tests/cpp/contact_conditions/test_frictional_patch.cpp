@@ -148,6 +148,27 @@ TYPED_TEST(FrictionalPatch, SlipForceIsMuTimesNormalForce) {
   EXPECT_NEAR(total[0], kMu * std::abs(total[1]), 1e-12 * std::abs(total[1]));  // along the master's motion
 }
 
+// Tresca (FRICTION_COEFFICIENT 0, TRESCA_FRICTION_THRESHOLD tau): the slipping slave carries the
+// tangential traction tau over its mortar area, whatever the normal pressure: a total force of
+// tau x 2 (the slave line's length), for two penetrations of the master.
+TYPED_TEST(FrictionalPatch, TrescaSlipForceIsThresholdTimesArea) {
+  constexpr double kTau = 0.35;
+  for (const double push : {0.0, 0.02}) {
+    Patch<TypeParam> patch(true);
+    for (Node* node : patch.slave) {
+      node->SetValue(FRICTION_COEFFICIENT, 0.0);
+      node->SetValue(TRESCA_FRICTION_THRESHOLD, kTau);
+    }
+    patch.Move(patch.master, 0.0, Array3(0.05, -push, 0.0));
+    std::vector<Array3> force, multiplier_rows;
+    patch.Forces(force, multiplier_rows);
+    Array3 total = Array3::Zero();
+    for (const Array3& f : force) total += f;
+    EXPECT_GT(std::abs(total[1]), 0.1);
+    EXPECT_NEAR(total[0], kTau * 2.0, 1e-12);  // along the master's motion
+  }
+}
+
 // A pair created after InitializeSolutionStep (a new search within the step) takes D_n, M_n from
 // the previous step's coordinates X0 + DISPLACEMENT(1): the same weighted slip as a pair that
 // stored them at the start of the step.

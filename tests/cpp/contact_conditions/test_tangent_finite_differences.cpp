@@ -193,6 +193,19 @@ TYPED_TEST(FrictionalTangentTest, AllSlip) {
 }
 TYPED_TEST(FrictionalTangentTest, StickSlip) { Fixture<TypeParam>(Pattern::kStickSlip).CheckTangent(); }
 
+// Tresca (mu = 0, a nodal threshold) and the general bound tau - mu lbar_n (both non-zero).
+TYPED_TEST(FrictionalTangentTest, TrescaSlip) {
+  for (const bool coulomb : {false, true}) {
+    Fixture<TypeParam> fixture(Pattern::kStickSlip);
+    int j = 0;
+    for (Node* node : fixture.pair->GetGeometry().Nodes()) {
+      if (!coulomb) node->SetValue(FRICTION_COEFFICIENT, 0.0);
+      node->SetValue(TRESCA_FRICTION_THRESHOLD, 0.4 + 0.1 * j++);
+    }
+    fixture.CheckTangent();
+  }
+}
+
 // The kinematics behind the tangent really has an overlap and non-trivial operator derivatives,
 // so that the test above exercises the chain rule through D, M and the gap.
 TYPED_TEST(TangentTest, OverlapIsNonTrivial) {

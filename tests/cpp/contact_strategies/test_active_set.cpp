@@ -149,14 +149,17 @@ TEST(ActiveSet, FrictionKernels) {
   EXPECT_DOUBLE_EQ(SlipTestFactor(false, 0.25), 1.0);
   EXPECT_DOUBLE_EQ(SlipTestFactor(true, 0.25), 0.75);
   // Coulomb limit mu |lbar_n| = 0.5 for lbar_n = -2, mu = 0.25: at the limit a node sticks.
-  EXPECT_FALSE(IsSlip(0.5, 0.25, -2.0, 1.0));
-  EXPECT_TRUE(IsSlip(0.5 + 1e-12, 0.25, -2.0, 1.0));
-  EXPECT_TRUE(IsSlip(0.4, 0.25, -2.0, 0.75));
+  EXPECT_DOUBLE_EQ(FrictionBound(0.25, 0.0, -2.0), 0.5);  // Coulomb: -mu lbar_n
+  EXPECT_DOUBLE_EQ(FrictionBound(0.0, 0.7, -2.0), 0.7);   // Tresca: the threshold
+  EXPECT_DOUBLE_EQ(FrictionBound(0.0, 0.7, -9.0), 0.7);   // whatever the pressure
+  EXPECT_FALSE(IsSlip(0.5, FrictionBound(0.25, 0.0, -2.0), 1.0));
+  EXPECT_TRUE(IsSlip(0.5 + 1e-12, FrictionBound(0.25, 0.0, -2.0), 1.0));
+  EXPECT_TRUE(IsSlip(0.4, FrictionBound(0.25, 0.0, -2.0), 0.75));
   // Without friction any tangential pressure slips, none sticks.
-  EXPECT_TRUE(IsSlip(1e-300, 0.0, -2.0, 1.0));
-  EXPECT_FALSE(IsSlip(0.0, 0.0, -2.0, 1.0));
-  EXPECT_EQ(CoulombLimit(0.25, -2.0, Array3(0.0, 0.0, 3.0)), Array3(0.0, 0.0, 0.5));
-  EXPECT_EQ(CoulombLimit(0.25, -2.0, Array3::Zero()), Array3::Zero());
+  EXPECT_TRUE(IsSlip(1e-300, FrictionBound(0.0, 0.0, -2.0), 1.0));
+  EXPECT_FALSE(IsSlip(0.0, FrictionBound(0.0, 0.0, -2.0), 1.0));
+  EXPECT_EQ(FrictionLimit(FrictionBound(0.25, 0.0, -2.0), Array3(0.0, 0.0, 3.0)), Array3(0.0, 0.0, 0.5));
+  EXPECT_EQ(FrictionLimit(0.5, Array3::Zero()), Array3::Zero());
 }
 
 // k = 2, eps = 8, c_tau = 0.5 (c_tau eps = 4), mu = 0.25, n = (0, 1, 0): an active node with
