@@ -74,20 +74,30 @@ void ResidualBasedNewtonRaphsonContactStrategy::Predict() {
   if (move_mesh_) MoveMesh();
 }
 
-std::vector<char> ResidualBasedNewtonRaphsonContactStrategy::ActiveStates() const {
+namespace {
+constexpr char kActiveBit = 1;
+constexpr char kSlipBit = 2;
+}  // namespace
+
+std::vector<char> ResidualBasedNewtonRaphsonContactStrategy::ContactStates() const {
   std::vector<char> states;
   if (ModelPart* contact = FindContactModelPart(model_part_))
     for (const Node* node : contact->Nodes())
-      if (node->Is(SLAVE)) states.push_back(node->Is(ACTIVE));
+      if (node->Is(SLAVE))
+        states.push_back(static_cast<char>((node->Is(ACTIVE) ? kActiveBit : 0) | (node->Is(SLIP) ? kSlipBit : 0)));
   return states;
 }
 
-void ResidualBasedNewtonRaphsonContactStrategy::SetActiveStates(const std::vector<char>& states) {
+void ResidualBasedNewtonRaphsonContactStrategy::SetContactStates(const std::vector<char>& states) {
   ModelPart* contact = FindContactModelPart(model_part_);
   if (!contact) return;
   std::size_t i = 0;
   for (Node* node : contact->Nodes())
-    if (node->Is(SLAVE)) node->Set(ACTIVE, static_cast<bool>(states[i++]));
+    if (node->Is(SLAVE)) {
+      node->Set(ACTIVE, (states[i] & kActiveBit) != 0);
+      node->Set(SLIP, (states[i] & kSlipBit) != 0);
+      ++i;
+    }
 }
 
 std::size_t ResidualBasedNewtonRaphsonContactStrategy::CountFlips(const std::vector<char>& before) {
@@ -98,7 +108,7 @@ std::size_t ResidualBasedNewtonRaphsonContactStrategy::CountFlips(const std::vec
   for (const Node* p_node : contact->Nodes()) {
     const Node& node = *p_node;
     if (!node.Is(SLAVE)) continue;
-    if (i < before.size() && static_cast<bool>(before[i]) != node.Is(ACTIVE)) {
+    if (i < before.size() && ((before[i] & kActiveBit) != 0) != node.Is(ACTIVE)) {
       ++flips_[node.Id()];
       ++changes;
     }
@@ -108,12 +118,13 @@ std::size_t ResidualBasedNewtonRaphsonContactStrategy::CountFlips(const std::vec
 }
 
 bool ResidualBasedNewtonRaphsonContactStrategy::NewtonIteration(int iteration) {
-  const std::vector<char> before = ActiveStates();
+  const std::vector<char> before = ContactStates();
   const bool converged = NewtonRaphsonStrategy::NewtonIteration(iteration);
   last_changes_ = CountFlips(before);
   if (FindContactModelPart(model_part_)) {
-    const std::vector<char> after = ActiveStates();
-    history_.back().active_nodes = static_cast<int>(std::count(after.begin(), after.end(), 1));
+    const std::vector<char> after = ContactStates();
+    history_.back().active_nodes =
+        static_cast<int>(std::count_if(after.begin(), after.end(), [](char s) { return (s & kActiveBit) != 0; }));
   }
   if (settings_.adaptative_strategy) inverted_element_ = FindInvertedElement();
   return converged && inverted_element_ == 0;
@@ -138,29 +149,31 @@ bool ResidualBasedNewtonRaphsonContactStrategy::RunFullNewtonLoop() {
   // has no guard and stops at max_iteration). When the set returns to one of an earlier
   // iteration, the union of the sets in the cycle is frozen and Newton converges on it, as in the
   // simplified semi-smooth Newton; the set is then checked at the converged state and, if it
-  // changes, frozen again.
-  std::vector<std::vector<char>> seen{ActiveStates()};
+  // changes, frozen again. The set is the active set with, in frictional contact, the stick / slip
+  // set; a set that did not change in the iteration is no cycle (Newton is still converging on it).
+  std::vector<std::vector<char>> seen{ContactStates()};
   bool frozen = false;
   for (int it = 1; it <= max_iteration_; ++it) {
     const bool converged = NewtonIteration(it);
     if (inverted_element_ != 0) return false;
     if (converged && (!frozen || RecheckActiveSet())) return true;
     if (frozen) continue;
-    std::vector<char> states = ActiveStates();
+    std::vector<char> states = ContactStates();
+    if (states == seen.back()) continue;
     const auto earlier = std::find(seen.begin(), seen.end() - 1, states);
     if (earlier == seen.end() - 1) {
       seen.push_back(std::move(states));
       continue;
     }
     for (auto cycle = earlier; cycle != seen.end(); ++cycle)
-      for (std::size_t i = 0; i < states.size(); ++i) states[i] = states[i] || (*cycle)[i];
-    SetActiveStates(states);
+      for (std::size_t i = 0; i < states.size(); ++i) states[i] = static_cast<char>(states[i] | (*cycle)[i]);
+    SetContactStates(states);
     frozen = true;
     model_part_.Set(INTERACTION, false);
     if (echo_level_ >= 1)
       Logger::Info(Concat(Name(), ": the active set of iteration ", it, " is that of iteration ",
                           earlier - seen.begin(), "; the union of the sets of the cycle (",
-                          std::count(states.begin(), states.end(), 1),
+                          std::count_if(states.begin(), states.end(), [](char s) { return (s & kActiveBit) != 0; }),
                           " active slave nodes) is kept until Newton converges on it"));
   }
   return false;
@@ -170,7 +183,7 @@ bool ResidualBasedNewtonRaphsonContactStrategy::RecheckActiveSet() {
   // NL_ITERATION_NUMBER = 1 lets the mortar criterion update the set; the table row of this check
   // is not printed.
   model_part_.GetProcessInfo().SetValue(NL_ITERATION_NUMBER, 1);
-  const std::vector<char> before = ActiveStates();
+  const std::vector<char> before = ContactStates();
   const int echo = criteria_->GetEchoLevel();
   criteria_->SetEchoLevel(0);
   const bool converged = criteria_->PostCriteria(model_part_, builder_->GetDofSet(), builder_->SystemMatrix(),

@@ -108,11 +108,13 @@ class ResidualBasedNewtonRaphsonContactStrategy : public NewtonRaphsonStrategy {
   /// diverging iterate) counts as non-convergence.
   bool TrySolveWithActiveSet();
   bool AdaptiveStep();
-  /// ACTIVE flag of every slave node of the contact part, in container order.
-  std::vector<char> ActiveStates() const;
-  /// Sets the ACTIVE flag of every slave node of the contact part (the order of ActiveStates).
-  void SetActiveStates(const std::vector<char>& states);
-  /// Adds one flip to every slave node whose state differs from `before`; returns how many.
+  /// State of every slave node of the contact part, in container order: kActiveBit if ACTIVE,
+  /// plus kSlipBit if SLIP (frictional: the stick / slip set is part of the set Newton works on).
+  std::vector<char> ContactStates() const;
+  /// Sets the ACTIVE and SLIP flags of every slave node of the contact part (see ContactStates).
+  void SetContactStates(const std::vector<char>& states);
+  /// Adds one flip to every slave node whose ACTIVE flag differs from `before` (ContactStates);
+  /// returns how many.
   std::size_t CountFlips(const std::vector<char>& before);
   void SaveStepStart();
   void RestoreStepStart();

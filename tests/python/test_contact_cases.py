@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 import mortarcontact as mc
-from mortarcontact.analysis_stage import ConvergenceFailure, StructuralMechanicsAnalysis
+from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
 from mortarcontact.cases import hertz
 from mortarcontact.processes.from_json_check_result_process import CheckResultError
 from mortarcontact.project_parameters import read_project_parameters
@@ -173,9 +173,10 @@ REFERENCE_ONLY_TOLERANCE = {"friction_block_test": 1e-2}
 KNOWN_FAILURES = {
     "hyper_simple_stick_patch_test": (mc.NotImplementedFeatureError, "advance_ALM_parameters.adapt_penalty (true in "
                                                                      "this case) is not implemented"),
-    "hyper_simple_slip_patch_test": (ConvergenceFailure, "penalty friction: step 1 not converged in 10 iterations "
-                                                         "although |r_u|^2/|r_u0|^2 = 5.8e-11 and neither set changes "
-                                                         "(Kratos 10.4: 4 iterations); to investigate"),
+    "hyper_simple_slip_patch_test": (AssertionError, "penalty friction: converges in 7 iterations (Kratos 10.4: 4) "
+                                                     "since the cycle guard also watches the stick / slip set, but "
+                                                     "differs from Kratos 10.4 by 2.2e-2 (from the reference by "
+                                                     "1.1e-2); to investigate"),
     "mesh_moving_matching_test": (CheckResultError, "pure slip on a moving mesh: its own json check fails at t = 1 "
                                                     "(u_x of nodes 15, 20, 26 off by 2.6e-3, tolerance 1e-3); to "
                                                     "investigate against Kratos 10.4, which meets the t = 17.3 "
