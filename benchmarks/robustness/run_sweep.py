@@ -347,8 +347,13 @@ def report(path: str) -> None:
                      f"| {_difference(tight.get('displacement'))} | {_difference(tight.get('pressure'))} "
                      f"| {_difference(tight.get('reaction'))} | {symmetry} | {seconds[0]} "
                      f"| {seconds[1]} | {'yes' if v['pass'] else 'no'} |")
-    errors = [(s["case"], run, s[run]["error"]) for s in summaries for run in RUNS
-              if s[run]["status"] == "failed" and s[run]["error"]]
+    _write_report(path, lines, summaries, RUNS)
+
+
+def _write_report(path: str, lines: list[str], summaries: list[dict], runs) -> None:
+    """Writes ``lines`` and, after them, the last line of each failed run's error."""
+    errors = [(s["case"], run, s[run]["error"]) for s in summaries for run in runs
+              if run in s and s[run]["status"] == "failed" and s[run]["error"]]
     if errors:
         lines += ["", "## Errors", ""]
         lines += [f"- {case} ({run}): `{error.strip().splitlines()[-1][:200]}`" for case, run, error in errors]
@@ -417,13 +422,7 @@ def report_frictional(path: str) -> None:
                      f"| {_iterations(k['iterations'])} | {_iterations(m['iterations'])} "
                      f"| {_difference(written.get('displacement'))} | {_difference(written.get('pressure'))} "
                      f"| {_difference(written.get('reaction'))} | {seconds[0]} | {seconds[1]} |")
-    errors = [(s["case"], run, s[run]["error"]) for s in summaries for run in CODES
-              if s[run]["status"] == "failed" and s[run]["error"]]
-    if errors:
-        lines += ["", "## Errors", ""]
-        lines += [f"- {case} ({run}): `{error.strip().splitlines()[-1][:200]}`" for case, run, error in errors]
-    with open(path, "w") as f:
-        f.write("\n".join(lines) + "\n")
+    _write_report(path, lines, summaries, CODES)
 
 
 def main(argv=None) -> int:
