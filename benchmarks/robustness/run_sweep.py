@@ -101,6 +101,8 @@ def pressures(record: dict, formulation: str) -> dict[str, float]:
     for node in record["slave"]:
         if formulation == "alm":
             p = -scale * (node["lm"] or 0.0)
+        elif formulation == "fric":  # the whole traction vector, normal and tangential
+            p = [scale * c for c in node.get("vector_lm") or [0.0, 0.0, 0.0]]
         elif formulation == "comp":
             p = scale * math.sqrt(sum(c * c for c in node.get("vector_lm") or [0.0]))
         else:
@@ -156,9 +158,16 @@ def compare(variant, records: dict) -> dict:
             reaction = record["reaction_totals"]["DISPLACEMENT_bottom"]
             lateral = math.hypot(*reaction[:variant.dim - 1])
             summary[run]["asymmetry"] = lateral / (math.hypot(*reaction) or 1.0)
-    summary["tight"] = differences(variant, records["mortarcontact_tight"], records["kratos_tight"])
+    if "kratos_tight" in records:
+        summary["tight"] = differences(variant, records["mortarcontact_tight"], records["kratos_tight"])
     summary["as_written"] = differences(variant, records["mortarcontact"], records["kratos"])
     return summary
+
+
+def runs_of(variant) -> dict:
+    """The runs of a case: the frictional ones are compared as written only (both codes to the
+    case's 1e-6 tolerances), the question there being who converges and in how many iterations."""
+    return {run: spec for run, spec in RUNS.items() if not (variant.frictional and run.endswith("_tight"))}
 
 
 def _case_hash(folder: str) -> str:
@@ -177,7 +186,7 @@ def run_case(variant, cases_dir: str, timeout: float, rerun_kratos: bool) -> dic
     folder = sweep_cases.write_case(variant, cases_dir)
     files = _case_hash(folder)
     records = {}
-    for run, (code, overrides) in RUNS.items():
+    for run, (code, overrides) in runs_of(variant).items():
         output = os.path.join(RESULTS_DIR, variant.name, f"{run}.json")
         if code == "kratos" and not rerun_kratos and os.path.exists(output):
             with open(output) as f:
@@ -247,7 +256,8 @@ def verdict(s: dict) -> dict:
              and all(a <= b for a, b in zip(m["iterations"], k["iterations"])))
     return {"kratos_converges": k["status"] == "ok", "we_converge": m["status"] == "ok",
             "iterations_ok": fewer, "within": within,
-            "tight_converge": s["kratos_tight"]["status"] == "ok" and s["mortarcontact_tight"]["status"] == "ok",
+            "tight_converge": all(s.get(run, {}).get("status") == "ok"
+                                  for run in ("kratos_tight", "mortarcontact_tight")),
             "pass": k["status"] == "ok" and m["status"] == "ok" and fewer and within}
 
 
@@ -261,13 +271,15 @@ def _run_cell(run: dict) -> str:
 
 
 def report(path: str) -> None:
-    names = [v.name for v in sweep_cases.variants()]
+    names = [v.name for v in sweep_cases.variants() if not v.frictional]
     summaries = []
     for name in names:
         stored = os.path.join(RESULTS_DIR, f"{name}.json")
         if os.path.exists(stored):
             with open(stored) as f:
                 summaries.append(json.load(f))
+    if not summaries:  # only frictional cases run so far
+        return
     verdicts = [verdict(s) for s in summaries]
     count = {key: sum(v[key] for v in verdicts) for key in ("kratos_converges", "we_converge", "iterations_ok",
                                                               "within", "tight_converge", "pass")}
@@ -336,13 +348,82 @@ def report(path: str) -> None:
                      f"| {_difference(tight.get('displacement'))} | {_difference(tight.get('pressure'))} "
                      f"| {_difference(tight.get('reaction'))} | {symmetry} | {seconds[0]} "
                      f"| {seconds[1]} | {'yes' if v['pass'] else 'no'} |")
-    errors = [(s["case"], run, s[run]["error"]) for s in summaries for run in RUNS
-              if s[run]["status"] == "failed" and s[run]["error"]]
+    _write_report(path, lines, summaries, RUNS)
+
+
+def _write_report(path: str, lines: list[str], summaries: list[dict], runs) -> None:
+    """Writes ``lines`` and, after them, the last line of each failed run's error."""
+    errors = [(s["case"], run, s[run]["error"]) for s in summaries for run in runs
+              if run in s and s[run]["status"] == "failed" and s[run]["error"]]
     if errors:
         lines += ["", "## Errors", ""]
         lines += [f"- {case} ({run}): `{error.strip().splitlines()[-1][:200]}`" for case, run, error in errors]
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
+
+
+def report_frictional(path: str) -> None:
+    """The frictional cases (issue 12): convergence, Newton iterations per step and the difference
+    of the results as written, with the cases where Kratos fails and we converge listed first."""
+    summaries = []
+    for v in sweep_cases.variants():
+        stored = os.path.join(RESULTS_DIR, f"{v.name}.json")
+        if v.frictional and os.path.exists(stored):
+            with open(stored) as f:
+                summaries.append(json.load(f))
+    if not summaries:
+        return
+    verdicts = [verdict(s) for s in summaries]
+    k_ok = sum(v["kratos_converges"] for v in verdicts)
+    m_ok = sum(v["we_converge"] for v in verdicts)
+    only_us = [s["case"] for s, v in zip(summaries, verdicts) if v["we_converge"] and not v["kratos_converges"]]
+    only_k = [s["case"] for s, v in zip(summaries, verdicts) if v["kratos_converges"] and not v["we_converge"]]
+    both = [(s, v) for s, v in zip(summaries, verdicts) if v["kratos_converges"] and v["we_converge"]]
+    total = {code: sum(sum(s[code]["iterations"]) for s, _ in both) for code in CODES}
+    fewer = sum(v["iterations_ok"] for _, v in both)
+    wall = {code: sum(s[code]["wall_seconds"] or 0.0 for s in summaries) for code in CODES}
+    lines = [
+        "# Frictional robustness sweep: mortarcontact against Kratos 10.4 (issue 12)",
+        "",
+        f"Generated by `benchmarks/robustness/run_sweep.py --filter _fric_` from the frictional variants of "
+        f"`sweep_cases.py` (`frictional_variants`): ALMContactFrictional, static indentation in 4 steps (t <= 0.5) "
+        f"followed by 4 steps in which the top is held at its depth and moved along x by {sweep_cases.SHIFT:g} "
+        f"(about the approach: gross sliding for small mu, partial slip for large mu). Each case is run once by "
+        f"each code as written (contact_residual_criterion, relative 1e-6, absolute 1e-12, 30 iterations at "
+        f"most, Kratos' default normal_variation), Kratos {KRATOS_VERSION}, one subprocess per run, "
+        f"OMP_NUM_THREADS=1. Measured {min(s['measured'] for s in summaries)} to "
+        f"{max(s['measured'] for s in summaries)}; the runs add up to {wall['kratos'] / 60.0:.1f} min for Kratos "
+        f"and {wall['mortarcontact'] / 60.0:.1f} min for mortarcontact (wall time on a shared, loaded machine).",
+        "",
+        f"- cases: {len(summaries)}",
+        f"- Kratos converges in every step: {k_ok}; we do: {m_ok}",
+        f"- Kratos fails and we converge: {len(only_us)}" + (f" ({', '.join(only_us)})" if only_us else ""),
+        f"- we fail and Kratos converges: {len(only_k)}" + (f" ({', '.join(only_k)})" if only_k else ""),
+        f"- where both converge ({len(both)}): Newton iterations in total {total['mortarcontact']} (ours) against "
+        f"{total['kratos']} (Kratos); no more iterations than Kratos in every step on {fewer}",
+        "",
+        "Columns: converged (K = Kratos, M = mortarcontact: ok, nc = not converged in some step, failed, "
+        "timeout); Newton iterations per step (`2x3` = three steps of 2; a step that did not converge counts its "
+        "30); du, dt, dR: largest relative difference between the two codes' results of the displacements (all "
+        "nodes), of the slave traction vectors (SCALE_FACTOR times VECTOR_LAGRANGE_MULTIPLIER: normal and "
+        "tangential) and of the total reaction at the clamped bottom, where both codes converge in every step; "
+        "analysis time (s, imports excluded).",
+        "",
+        "| case | nodes | K | M | iterations K | iterations M | du | dt | dR | t K | t M |",
+        "|---|---|---|---|---|---|---|---|---|---|---|",
+    ]
+    order = sorted(zip(summaries, verdicts), key=lambda sv: (not (sv[1]["we_converge"] and not
+                                                                   sv[1]["kratos_converges"]), sv[0]["case"]))
+    for s, _ in order:
+        k, m = s["kratos"], s["mortarcontact"]
+        written = (s.get("as_written") or {}) if k["status"] == m["status"] == "ok" else {}
+        seconds = [f"{c['seconds']:.2f}" if c.get("seconds") is not None else "-" for c in (k, m)]
+        lines.append(f"| {s['case']} | {k.get('nodes') or m.get('nodes') or '-'} "
+                     f"| {SHORT.get(k['status'], k['status'])} | {SHORT.get(m['status'], m['status'])} "
+                     f"| {_iterations(k['iterations'])} | {_iterations(m['iterations'])} "
+                     f"| {_difference(written.get('displacement'))} | {_difference(written.get('pressure'))} "
+                     f"| {_difference(written.get('reaction'))} | {seconds[0]} | {seconds[1]} |")
+    _write_report(path, lines, summaries, CODES)
 
 
 def main(argv=None) -> int:
@@ -352,6 +433,7 @@ def main(argv=None) -> int:
     parser.add_argument("--timeout", type=float, default=300.0, help="seconds per run (default 300)")
     parser.add_argument("--cases-dir", default=sweep_cases.DEFAULT_OUT)
     parser.add_argument("--output", default=os.path.join(HERE, "results.md"))
+    parser.add_argument("--friction-output", default=os.path.join(HERE, "results_friction.md"))
     parser.add_argument("--snapshots", help="also copy the cases with Kratos' values into this folder (tests)")
     parser.add_argument("--report", action="store_true", help="only rebuild the table from stored results")
     parser.add_argument("--rerun-kratos", action="store_true",
@@ -362,14 +444,15 @@ def main(argv=None) -> int:
     if not args.report:
         for i, variant in enumerate(chosen, 1):
             s = run_case(variant, args.cases_dir, args.timeout, args.rerun_kratos)
-            line = " | ".join(f"{run}: {_run_cell(s[run])}" for run in RUNS)
-            tight = s["tight"] or {}
+            line = " | ".join(f"{run}: {_run_cell(s[run])}" for run in runs_of(variant))
+            tight = s.get("tight") or {}
             print(f"[{i}/{len(chosen)}] {variant.name}: {line} | tight du {_difference(tight.get('displacement'))} "
                   f"dp {_difference(tight.get('pressure'))}", flush=True)
             if args.snapshots:
                 write_snapshot(variant, args.cases_dir, args.snapshots)
     report(args.output)
-    print(f"-> {args.output}")
+    report_frictional(args.friction_output)
+    print(f"-> {args.output}, {args.friction_output}")
     return 0
 
 

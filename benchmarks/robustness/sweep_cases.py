@@ -27,7 +27,10 @@ lateral components held). A variant (class ``Variant``) combines:
 - roles: the upper body is the slave, or with ``swapped`` the lower one (the same geometry, so
   "overhang-slave" and r keep naming the upper body)
 - formulation: ALMContactFrictionless (``alm``), ALMContactFrictionlessComponents (``comp``),
-  PenaltyContactFrictionless (``penalty``); ``nv``: normal_variation nodal_elemental_derivatives
+  PenaltyContactFrictionless (``penalty``), ALMContactFrictional (``fric``, Coulomb friction with the
+  coefficient ``mu`` of both bodies, issue 12); ``nv``: normal_variation nodal_elemental_derivatives
+- ``shift`` (frictional cases): the indentation (displacement control, ``steps`` steps) is followed
+  by as many steps in which the top is held at its depth and moved along x by SHIFT
 - kinematics: small displacement (``sd``, the default), total Lagrangian with the linear law
   (``tl``, Saint Venant-Kirchhoff), updated Lagrangian with the neo-Hookean law (``ul``)
 - interface sub-model-parts with nodes only (the contact process builds the faces) or with
@@ -69,6 +72,7 @@ POISSON = 0.3
 GAPS = {"gap": 1e-3, "zero": 0.0, "pen": -2e-4}
 APPROACH = {"flat": 0.01, "inclined": 0.01, "curved": 0.02}  # prescribed top displacement beyond the gap
 LOAD = {"flat": 10.0, "inclined": 10.0, "curved": 4.0}  # force control: load per unit top area
+SHIFT = 0.02  # tangential shift of the top after the indentation (frictional cases)
 H_LOWER = {2: 1.0 / 16.0, 3: 1.0 / 5.0}
 H_LOWER_COARSE = {2: 1.0 / 5.0, 3: 1.0 / 3.0}  # the smallest cases that still show each failure
 MAX_LAYERS_3D = 6  # through-thickness element layers of a fine 3D body (keeps the DoFs in the thousands)
@@ -78,6 +82,7 @@ FORMULATIONS = {
     "comp": ("ALMContactFrictionlessComponents", "FrictionlessComponents", "alm_contact_process",
              "ALMContactProcess"),
     "penalty": ("PenaltyContactFrictionless", "Frictionless", "penalty_contact_process", "PenaltyContactProcess"),
+    "fric": ("ALMContactFrictional", "Frictional", "alm_contact_process", "ALMContactProcess"),
 }
 KINEMATICS = {"sd": ("SmallDisplacementElement", "LinearElastic"),
               "tl": ("TotalLagrangianElement", "LinearElastic"),
@@ -111,6 +116,8 @@ class Variant:
     mesher: str = "grid"  # grid (numpy, structured) or gmsh (unstructured triangles / tetrahedra)
     conditions: bool = False
     coarse: bool = False  # lower body's element size H_LOWER_COARSE
+    mu: float = 0.0  # friction coefficient (formulation "fric")
+    shift: bool = False  # tangential shift after the indentation
 
     @property
     def name(self) -> str:
@@ -118,6 +125,10 @@ class Variant:
         control = "disp" if self.control == "disp" else f"{self.control}-load"
         parts = [f"{self.dim}d", elements, self.shape, f"r{self.ratio:g}", f"overhang-{self.overhang}", self.gap,
                  control, f"{self.steps}step" + ("s" if self.steps > 1 else ""), self.formulation]
+        if self.formulation == "fric":
+            parts.append(f"mu{self.mu:g}")
+        if self.shift:
+            parts.append("shift")
         parts += [flag for flag, on in (("nv", self.nv), ("swapped", self.swapped), ("rot30", self.rotated),
                                         ("gmsh", self.mesher == "gmsh"), ("conditions", self.conditions),
                                         ("coarse", self.coarse))
@@ -142,6 +153,12 @@ class Variant:
                                          and "hex" not in (self.upper, self.lower))
         direction = self.overhang.partition("-")[2]
         assert (self.overhang == "none") or (direction in ("x", "xy")) == (self.dim == 3), self
+        assert (self.formulation == "fric") == (self.mu > 0.0), self
+        assert not self.shift or (self.formulation == "fric" and self.control == "disp" and not self.rotated), self
+
+    @property
+    def frictional(self) -> bool:
+        return self.formulation == "fric"
 
 
 # -- the sweep --------------------------------------------------------------------------------
@@ -222,10 +239,31 @@ def variants() -> list[Variant]:
             r(c2, ratio=0.25, steps=4), r(c2, formulation="comp"), r(c2, formulation="penalty"), r(c2, rotated=True),
             r(c2, gap="pen", control="line"), c3, r(c3, upper="tet"), r(c3, overhang="slave-xy", steps=4),
             r(c3, shape="curved"), r(c3, upper="tet", shape="curved", ratio=1.0), r(c3, overhang="both-xy")]
+    out += frictional_variants()
     unique = list(dict.fromkeys(out))
     for v in unique:
         v.check()
     return unique
+
+
+def frictional_variants() -> list[Variant]:
+    """Issue 12: static indentation followed by a tangential shift with Coulomb friction (mu 0.1 to
+    0.8), flat and curved, matching and non-matching meshes, the slave overhanging the master,
+    structured and unstructured, 2D and 3D."""
+    r = dataclasses.replace
+    f2 = Variant(2, "quad", "quad", ratio=0.5, formulation="fric", mu=0.3, shift=True)
+    f3 = Variant(3, "hex", "hex", ratio=0.5, formulation="fric", mu=0.3, shift=True)
+    out = []
+    for shape in ("flat", "curved"):
+        out += [r(f2, shape=shape, mu=mu) for mu in (0.1, 0.3, 0.8)]
+        out += [r(f2, shape=shape, ratio=1.0), r(f2, shape=shape, overhang="slave")]
+        out += [r(f3, shape=shape, mu=mu) for mu in ((0.1, 0.3, 0.8) if shape == "curved" else (0.3,))]
+        out += [r(f3, shape=shape, ratio=1.0), r(f3, shape=shape, overhang="slave-x")]
+    out += [r(f2, upper="tri", lower="tri", shape="curved", ratio=1.0),
+            r(f3, upper="tet", shape="curved"),
+            Variant(2, "tri", "tri", shape="curved", ratio=1.0, mesher="gmsh", formulation="fric", mu=0.3, shift=True),
+            Variant(3, "tet", "tet", shape="curved", ratio=1.0, mesher="gmsh", formulation="fric", mu=0.3, shift=True)]
+    return out
 
 
 def by_name() -> dict[str, Variant]:
@@ -428,7 +466,7 @@ def write_case(v: Variant, out_dir: str = DEFAULT_OUT) -> str:
             raise RuntimeError(f"{name}: sub-model-part {part_name} is empty")
     model_import = write_case_mesh(os.path.join(folder, f"{name}.msh"), coords, element_blocks, parts,
                                    condition_blocks)
-    files = {f"{name}_materials.json": materials(dim, law),
+    files = {f"{name}_materials.json": materials(dim, law, v.mu),
              "ProjectParameters.json": project_parameters(v, len(top), bodies["upper"]["area"], model_import)}
     for file, content in files.items():
         with open(os.path.join(folder, file), "w") as f:
@@ -438,11 +476,13 @@ def write_case(v: Variant, out_dir: str = DEFAULT_OUT) -> str:
 
 
 # -- parameters -------------------------------------------------------------------------------
-def materials(dim: int, law: str) -> dict:
+def materials(dim: int, law: str, mu: float = 0.0) -> dict:
     suffix = "PlaneStrain2DLaw" if dim == 2 else "3DLaw"
     properties = []
     for pid, key in ((1, "upper"), (2, "lower")):
         variables = {"YOUNG_MODULUS": YOUNG[key], "POISSON_RATIO": POISSON, "DENSITY": 1.0}
+        if mu > 0.0:
+            variables["FRICTION_COEFFICIENT"] = mu
         if dim == 2:
             variables["THICKNESS"] = 1.0
         properties.append({"model_part_name": f"Structure.Parts_{key}", "properties_id": pid,
@@ -473,7 +513,19 @@ def project_parameters(v: Variant, top_nodes: int, top_area: float, model_import
         down = _rotation(dim) @ down
     constraints = [hertz.assign_displacement("DISPLACEMENT_bottom", [True] * 3, [0.0] * 3)]
     loads = []
-    if v.control == "disp":
+    if v.control == "disp" and v.shift:
+        # Two intervals, as Kratos 10.4's function parser knows no min / max: down to the depth
+        # by t = 1/2, then held there and moved along x.
+        depth = (APPROACH[v.shape] + GAPS[v.gap]) * down
+        half_step = 0.25 / v.steps
+        approach = hertz.assign_displacement("DISPLACEMENT_top", [True] * 3,
+                                             [0.0 if c == 0.0 else f"{2.0 * float(c)!r}*t" for c in depth])
+        approach["Parameters"]["interval"] = [0.0, 0.5 + half_step]
+        sliding = hertz.assign_displacement("DISPLACEMENT_top", [True] * 3,
+                                            [f"{2.0 * SHIFT!r}*(t-0.5)", *[float(c) for c in depth[1:]]])
+        sliding["Parameters"]["interval"] = [0.5 + half_step, "End"]
+        constraints += [approach, sliding]
+    elif v.control == "disp":
         value = [_time_expression(c) for c in (APPROACH[v.shape] + GAPS[v.gap]) * down]
         constraints.append(hertz.assign_displacement("DISPLACEMENT_top", [True] * 3, value))
     else:  # lateral components held, the vertical one loaded
@@ -492,16 +544,18 @@ def project_parameters(v: Variant, top_nodes: int, top_area: float, model_import
                "assume_master_slave": {"0": ["Contact_slave"]}}
     if v.nv:
         contact["normal_variation"] = "nodal_elemental_derivatives"
+    solver_extra = {"buffer_size": 3} if v.frictional else {}
     return {
         "problem_data": {"problem_name": v.name, "parallel_type": "OpenMP", "echo_level": 0,
                          "start_time": 0.0, "end_time": 1.0},
         "solver_settings": {
+            **solver_extra,
             "model_part_name": "Structure", "domain_size": dim, "solver_type": "Static", "echo_level": 0,
             "analysis_type": "non_linear",
             "model_import_settings": model_import,
             "material_import_settings": {"materials_filename": f"{v.name}_materials.json"},
             "contact_settings": {"mortar_type": mortar_type},
-            "time_stepping": {"time_step": 1.0 / v.steps},
+            "time_stepping": {"time_step": 1.0 / (2 * v.steps if v.shift else v.steps)},
             "block_builder": True, "line_search": False, "compute_reactions": True,
             # Tight tolerances: a solution within 1e-6 of Kratos' is only asked of converged
             # iterates that are themselves that close to the exact discrete solution.

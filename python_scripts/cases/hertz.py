@@ -460,14 +460,29 @@ def interface_faces(cells: np.ndarray, interface: np.ndarray) -> np.ndarray:
     return faces
 
 
+def mirrored_about_x(xyz: np.ndarray, cells: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The body and its mirror image about the plane x = 0, as one conforming mesh: the nodes on
+    the plane are shared, the mirrored tetrahedra re-oriented."""
+    on_plane = np.abs(xyz[:, 0]) < 1e-9 * RADIUS
+    image = np.flatnonzero(~on_plane)
+    index = np.arange(len(xyz))
+    index[image] = len(xyz) + np.arange(len(image))
+    mirrored = xyz[image] * np.array([-1.0, 1.0, 1.0])
+    return np.vstack([xyz, mirrored]), np.vstack([cells, index[cells][:, [0, 2, 1, 3]]])
+
+
 # -- writing ----------------------------------------------------------------------------------
-def build_case(family: str, label: str) -> dict:
-    """Meshes a case and returns everything needed to write it (no files)."""
+def build_case(family: str, label: str, half: bool = False) -> dict:
+    """Meshes a case and returns everything needed to write it (no files). ``half`` (3D): the
+    half model y >= 0 (the quarter mirrored about x = 0), for loads along x that break the
+    symmetry about that plane (Cattaneo-Mindlin)."""
     dim = 2 if family == "hertz2d" else 3
     scale = SIZES[family][label]
     g = GEOMETRY[dim]
     mesher = mesh_2d if dim == 2 else mesh_3d_grid if family == "hertz3dgrid" else mesh_3d
     (xc, cc), (xb, cb) = mesher(scale)
+    if half and dim == 3:
+        (xc, cc), (xb, cb) = mirrored_about_x(xc, cc), mirrored_about_x(xb, cb)
     for cells in (cc, cb):
         check_conforming(xc if cells is cc else xb, cells, dim)
     tol = 1e-9 * RADIUS
@@ -495,15 +510,16 @@ def build_case(family: str, label: str) -> dict:
         "DISPLACEMENT_top": {"nodes": np.flatnonzero(np.abs(xc[:, top_axis] - RADIUS) < tol)},
         "DISPLACEMENT_bottom": {"nodes": nc + np.flatnonzero(np.abs(xb[:, top_axis] + g["block_height"]) < tol)},
     }
-    if dim == 3:
+    if dim == 3 and not half:
         parts["DISPLACEMENT_sym_x"] = {"nodes": np.flatnonzero(np.abs(coords[:, 0]) < tol)}
+    if dim == 3:
         parts["DISPLACEMENT_sym_y"] = {"nodes": np.flatnonzero(np.abs(coords[:, 1]) < tol)}
     parts["Contact_slave"] = {"nodes": slave}
     parts["Contact_master"] = {"nodes": nc + master}
     for name in parts:
         if len(parts[name]["nodes"]) == 0:
             raise RuntimeError(f"{family}_{label}: sub-model-part {name} is empty")
-    return {"family": family, "label": label, "dim": dim, "scale": scale, "coords": coords,
+    return {"family": family, "label": label, "dim": dim, "scale": scale, "half": half and dim == 3, "coords": coords,
             "curved_cells": cc, "block_cells": cb + nc, "parts": parts,
             "slave_faces": len(slave_faces), "master_faces": len(master_faces)}
 
@@ -536,16 +552,18 @@ def assign_displacement(part: str, constrained: list, value: list) -> dict:
                            "interval": [0.0, "End"], "constrained": constrained, "value": value}}
 
 
-def project_parameters(name: str, dim: int, delta: float, linear_solver: str, model_import: dict) -> dict:
+def project_parameters(name: str, dim: int, delta: float, linear_solver: str, model_import: dict,
+                       half: bool = False) -> dict:
     axis = dim - 1
     top_value: list = [0.0, 0.0, 0.0]
     top_value[axis] = f"-{delta!r}*t"
     top_fix = [dim == 2, False, False]  # 2D: u_x = 0 on the top removes the cylinder's rigid sliding
     top_fix[axis] = True
     constraints = []
+    if dim == 3 and not half:
+        constraints.append(assign_displacement("DISPLACEMENT_sym_x", [True, False, False], [0.0, 0.0, 0.0]))
     if dim == 3:
-        constraints += [assign_displacement("DISPLACEMENT_sym_x", [True, False, False], [0.0, 0.0, 0.0]),
-                        assign_displacement("DISPLACEMENT_sym_y", [False, True, False], [0.0, 0.0, 0.0])]
+        constraints.append(assign_displacement("DISPLACEMENT_sym_y", [False, True, False], [0.0, 0.0, 0.0]))
     constraints += [assign_displacement("DISPLACEMENT_bottom", [True, True, True], [0.0, 0.0, 0.0]),
                     assign_displacement("DISPLACEMENT_top", top_fix, top_value)]
     body = "Contact_slave"
@@ -609,9 +627,10 @@ def hertz_reference(case: dict, delta: float) -> dict:
     n_slave = len(case["parts"]["Contact_slave"]["nodes"])
     return {
         "case": f"{case['family']}_{case['label']}", "dimension": dim,
-        "model": ("full model, plane strain" if dim == 2 else "quarter model (x >= 0, y >= 0)"
+        "model": ("full model, plane strain" if dim == 2 else "half model (y >= 0)" if case["half"]
+                  else "quarter model (x >= 0, y >= 0)"
                   + (", structured contact zones (Kuhn tetrahedra)" if case["family"] == "hertz3dgrid" else "")),
-        "symmetry_factor": 1 if dim == 2 else 4,
+        "symmetry_factor": 1 if dim == 2 else 2 if case["half"] else 4,
         "radius": RADIUS, "block_width": g["block_width"], "block_height": g["block_height"],
         "young_modulus": YOUNG, "poisson_ratio": POISSON, "effective_modulus": e_star,
         "applied_displacement": delta, "load_steps": LOAD_STEPS, "mesh_scale": case["scale"],
@@ -629,17 +648,19 @@ def hertz_reference(case: dict, delta: float) -> dict:
 
 
 def write_case(family: str, label: str, out_dir: str,
-               linear_solver: str = "LinearSolversApplication.sparse_lu") -> str:
-    """Generates one case into ``out_dir/<family>_<label>/`` and returns that folder."""
-    name = f"{family}_{label}"
+               linear_solver: str = "LinearSolversApplication.sparse_lu", half: bool = False) -> str:
+    """Generates one case into ``out_dir/<family>_<label>/`` (3D ``half``: the half model, in
+    ``<family>_<label>_half/``) and returns that folder."""
+    name = f"{family}_{label}" + ("_half" if half and family != "hertz2d" else "")
     folder = os.path.join(out_dir, name)
     os.makedirs(folder, exist_ok=True)
-    case = build_case(family, label)
+    case = build_case(family, label, half)
     dim = case["dim"]
     delta = applied_displacement(dim, RADIUS, GEOMETRY[dim]["block_height"])
     model_import = write_mesh(os.path.join(folder, f"{name}.msh"), case)
     for file, content in ((f"{name}_materials.json", materials(dim)),
-                          ("ProjectParameters.json", project_parameters(name, dim, delta, linear_solver, model_import)),
+                          ("ProjectParameters.json",
+                           project_parameters(name, dim, delta, linear_solver, model_import, case["half"])),
                           ("hertz.json", hertz_reference(case, delta))):
         with open(os.path.join(folder, file), "w") as f:
             json.dump(content, f, indent=2)

@@ -3,7 +3,11 @@
 "nodal_elemental_derivatives", NV conditions). Without it the refreshed nodal normals are not
 linearised and the rate drops to linear: the same check then fails, which the second test shows.
 (The components formulation with NV converges to round-off as fast in iterations, but its order
-estimates scatter between 0.8 and 2.8 before the last iteration; noted on issue 3.)"""
+estimates scatter between 0.8 and 2.8 before the last iteration; noted on issue 3.)
+
+Issue 12: the same for Coulomb friction (ALMContactFrictional, with NV), once both the active set
+and the stick / slip set have settled, on the Cattaneo-Mindlin case (the Hertz cylinder pressed,
+then shifted tangentially: stick and slip nodes side by side in every step of the shift)."""
 from __future__ import annotations
 
 import importlib.util
@@ -14,7 +18,7 @@ import pytest
 
 import mortarcontact as mc
 from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
-from mortarcontact.cases import hertz
+from mortarcontact.cases import cattaneo_mindlin, hertz
 from mortarcontact.project_parameters import read_project_parameters
 
 pytestmark = pytest.mark.skipif(importlib.util.find_spec("gmsh") is None, reason="gmsh is not installed")
@@ -24,7 +28,8 @@ class HistoryAnalysis(StructuralMechanicsAnalysis):
     """Keeps the Newton history (increment norms, active-set changes) of every step."""
 
     def __init__(self, model, params):
-        super().__init__(model, params, progress=False)
+        # A step whose tail stalls at round-off above the 1e-30 tolerances still shows its rate.
+        super().__init__(model, params, progress=False, stop_on_non_convergence=False)
         self.histories = []
 
     def FinalizeSolutionStep(self):
@@ -33,18 +38,30 @@ class HistoryAnalysis(StructuralMechanicsAnalysis):
                                for r in self.solver.LastIterationHistory()])
 
 
+#: The residual tolerances of every block criterion, frictional blocks included.
+RESIDUAL_TOLERANCES = [f"{block}_residual_{kind}_tolerance" for block in
+                       ("contact", "frictional_stick_contact", "frictional_slip_contact")
+                       for kind in ("relative", "absolute")]
+
+
 def run_hertz(folder: str, normal_variation: str, formulation: str = "ALMContactFrictionless"):
-    case = hertz.write_case("hertz2d", "2k", folder)
+    if formulation.startswith("ALMContactFrictional"):
+        case = cattaneo_mindlin.write_case(2, "2k", folder, mortar_type=formulation)
+    else:
+        case = hertz.write_case("hertz2d", "2k", folder)
     params = read_project_parameters(os.path.join(case, "ProjectParameters.json"))
     solver = params["solver_settings"]
     # Converge to round-off so that the tail of every step shows the rate.
     for key in ("residual_relative_tolerance", "residual_absolute_tolerance"):
         solver[key].SetDouble(1e-30)
     contact = solver["contact_settings"]
-    for key in ("contact_residual_relative_tolerance", "contact_residual_absolute_tolerance"):
+    for key in RESIDUAL_TOLERANCES:
         contact.AddEmptyValue(key)
         contact[key].SetDouble(1e-30)
     contact["mortar_type"].SetString(formulation)
+    if formulation.startswith("ALMContactFrictional"):  # steps twice as long: more iterations to measure
+        step = solver["time_stepping"]["time_step"]
+        step.SetDouble(2.0 * step.GetDouble())
     process = params["processes"]["contact_process_list"][0]["Parameters"]
     process.AddEmptyValue("normal_variation")
     process["normal_variation"].SetString(normal_variation)
@@ -62,11 +79,12 @@ def run_hertz(folder: str, normal_variation: str, formulation: str = "ALMContact
 
 def orders(history) -> list[float]:
     """Convergence order estimates log(e_k+1 / e_k) / log(e_k / e_k-1) from the increments after
-    the last active-set change, while they are above round-off (1e-12 of the step's first one):
+    the last active-set (or stick / slip set) change, while they are above round-off (1e-12 of the step's first one):
     about 2 for quadratic, 1 for linear convergence. The first increment of a step is the load
     increment itself, not an error of the Newton iteration, so it never enters an estimate (when
     the predicted active set is already right, the set settles in the first iteration)."""
-    last_change = max((i for i, (_, c) in enumerate(history) if c.get("active set changes", 0) > 0), default=-1)
+    last_change = max((i for i, (_, c) in enumerate(history)
+                       if c.get("active set changes", 0) + c.get("slip set changes", 0) > 0), default=-1)
     first = history[0][0]
     e = [norm for norm, _ in history[max(last_change, 1):] if norm > 1e-12 * first]
     return [math.log(c / b) / math.log(b / a) for a, b, c in zip(e, e[1:], e[2:]) if b < a]
@@ -88,3 +106,20 @@ def test_fixed_normal_tangent_converges_only_linearly(tmp_path):
     measured = [r for h in histories for r in orders(h)]
     print(f"without NV: orders {[f'{r:.2f}' for r in measured]}")
     assert measured and sum(measured) / len(measured) < 1.5
+
+
+@pytest.mark.slow
+@pytest.mark.xfail(strict=True, reason="ALMContactFrictional with NV is not quadratic on hertz2d_2k (steps of 1/6): "
+                   "approach step 2 increments 1.7e-4, 5.3e-5, 1.7e-5, 6.4e-10, 2.0e-14 (linear, then order 1.8) with "
+                   "every active node sticking and no set change; in the shift orders between 0.2 and 14, and the last "
+                   "step diverges (increments grow to 1e6 in 30 iterations). Without NV every step converges, linearly "
+                   "(factors 5e-3), as expected with unlinearised normals; frictionless NV is quadratic (above)")
+def test_frictional_newton_is_quadratic_once_stick_and_slip_settle(tmp_path):
+    histories = run_hertz(str(tmp_path), "nodal_elemental_derivatives", "ALMContactFrictional")
+    measured = [r for h in histories for r in orders(h)]
+    print(f"ALMContactFrictional NV: increments {[[f'{n:.1e}' for n, _ in h] for h in histories]}; "
+          f"orders {[f'{r:.2f}' for r in measured]}")
+    assert all(h[-1][0] < 1e-12 * h[0][0] for h in histories)  # every step reached round-off
+    assert len(measured) >= len(histories)
+    assert sum(measured) / len(measured) > 1.8
+    assert min(measured) > 1.5

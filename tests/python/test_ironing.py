@@ -1,0 +1,125 @@
+"""Issue 12: the 2D ironing problem (mortarcontact.cases.ironing): a stiff circular die pressed into
+an elastic slab and dragged along it, Coulomb friction mu = 0.3. The published reaction curves
+(Puso & Laursen 2004; Yang, Laursen & Meng 2005) were not available to compare with, so the
+checks are those any ironing run must pass: the die's reaction balances the slab's, and once the
+die slides every contact node slips with |t_t| = mu p, so that the contact forces have the ratio
+mu; the die's horizontal over vertical reaction then settles at mu plus the ploughing of its
+inclined flank."""
+from __future__ import annotations
+
+import contextlib
+import functools
+import importlib.util
+import os
+import shutil
+import tempfile
+
+import numpy as np
+import pytest
+
+import mortarcontact as mc
+from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
+from mortarcontact.cases import ironing
+from mortarcontact.project_parameters import read_project_parameters
+
+pytestmark = pytest.mark.skipif(importlib.util.find_spec("gmsh") is None, reason="gmsh is not installed")
+
+
+class IroningHistory(StructuralMechanicsAnalysis):
+    """Per step: time, iterations, die-top and slab-bottom reactions, the total normal and
+    tangential contact forces on the die and the numbers of active and slipping nodes."""
+
+    def __init__(self, model, params):
+        super().__init__(model, params, progress=False, stop_on_non_convergence=False)
+        self.rows = []
+
+    def FinalizeSolutionStep(self):
+        super().FinalizeSolutionStep()
+        part = self.model["Structure"]
+        get = mc.GetVariable
+
+        def reaction(name):
+            return sum(np.array(n.GetSolutionStepValue(get("REACTION"))) for n in part.GetSubModelPart(name).Nodes)
+
+        scale = part.GetProcessInfo().GetValue(get("SCALE_FACTOR"))
+        normal_force = tangential_force = 0.0
+        active = slipping = 0
+        coulomb = 0.0
+        for node in part.GetSubModelPart("Contact_slave").Nodes:
+            if not node.Is(mc.ACTIVE):
+                continue
+            n = np.array(node.GetSolutionStepValue(get("NORMAL")))
+            t = scale * np.array(node.GetSolutionStepValue(get("VECTOR_LAGRANGE_MULTIPLIER")))
+            p = -n.dot(t)
+            q = np.linalg.norm(t + p * n)
+            area = node.GetValue(get("NODAL_AREA"))
+            normal_force += area * p
+            tangential_force += area * q
+            active += 1
+            if node.Is(mc.SLIP):
+                slipping += 1
+                coulomb = max(coulomb, abs(q - ironing.FRICTION * p))
+        history = self.solver.LastIterationHistory()
+        self.rows.append({"time": part.GetProcessInfo().GetValue(get("TIME")), "iterations": len(history),
+                          "converged": bool(history) and history[-1].converged,
+                          "die": reaction("DISPLACEMENT_top"), "slab": reaction("DISPLACEMENT_bottom"),
+                          "normal": normal_force, "tangential": tangential_force, "active": active,
+                          "slipping": slipping, "coulomb_error": coulomb})
+
+
+@functools.cache
+def _ironing() -> tuple[list[dict], str | None]:
+    """The steps of the ironing run (slip_augmentation_coefficient 1: with Kratos' default 0 the
+    slip direction is the tangential multiplier's own and Newton diverges in the first steps of the
+    drag, as on the inclined plane), and what stopped it (None if it finished)."""
+    folder = ironing.write_case(tempfile.mkdtemp(prefix="ironing_"), slip_augmentation=1.0)
+    try:
+        with contextlib.chdir(folder):
+            analysis = IroningHistory(mc.Model(), read_project_parameters("ProjectParameters.json"))
+            try:
+                analysis.Run()
+            except mc.SolutionError as error:
+                return analysis.rows, str(error)
+        return analysis.rows, None
+    finally:
+        shutil.rmtree(os.path.dirname(folder), ignore_errors=True)
+
+
+@pytest.mark.slow
+def test_ironing_forces():
+    """Over the converged steps: equilibrium, Coulomb at every slipping node, the contact force
+    ratio mu while all slip, and a steady die reaction ratio slightly above mu."""
+    rows, stopped = _ironing()
+    print("t, iterations, die reaction Fx, Fy, Fx/Fy, contact tangential/normal, slipping/active:")
+    for r in rows:
+        print(f"{r['time']:.4f} {r['iterations']:2d} {r['die'][0]:9.3f} {r['die'][1]:9.3f} "
+              f"{r['die'][0] / r['die'][1]:+.4f} {r['tangential'] / max(r['normal'], 1e-30):.4f} "
+              f"{r['slipping']}/{r['active']}")
+    print(f"stopped by: {stopped}")
+    converged = [r for r in rows if r["converged"]]
+    drag = converged[ironing.PRESS_STEPS:]
+    sliding = [r for r in drag if r["slipping"] == r["active"] > 0]
+    ratio = np.array([abs(r["die"][0] / r["die"][1]) for r in sliding])
+    for r in converged:  # the die's reaction balances the slab's
+        assert np.linalg.norm(r["die"][:2] + r["slab"][:2]) < 1e-6 * np.linalg.norm(r["die"][:2])
+    assert len(sliding) >= 20
+    for r in sliding:
+        assert r["coulomb_error"] < 1e-8 * abs(r["die"][1])
+        assert r["tangential"] / r["normal"] == pytest.approx(ironing.FRICTION, rel=1e-8)
+    # mu plus the ploughing of the die's flank, steady while it slides
+    assert np.all(ratio > ironing.FRICTION) and np.all(ratio < 1.05 * ironing.FRICTION)
+    assert np.ptp(ratio) < 0.01 * ironing.FRICTION
+
+
+@pytest.mark.slow
+@pytest.mark.xfail(strict=True, reason="steps at t = 0.288 and 0.576 do not converge in 30 iterations: "
+                   "Newton converges on the frozen set, the active-set check at the converged state flips a node "
+                   "at the die's edge, Newton converges again and the check flips it back; later in the drag "
+                   "(t = 0.58 to 0.82, with the summation order of the threads) a step diverges to a singular "
+                   "system")
+def test_ironing_converges_in_every_step():
+    rows, stopped = _ironing()
+    assert stopped is None
+    assert len(rows) == ironing.PRESS_STEPS + ironing.DRAG_STEPS
+    assert all(r["converged"] for r in rows)
+    assert max(r["iterations"] for r in rows) <= 8
