@@ -97,9 +97,10 @@ json FromMatrix(const Matrix& m) {
 }
 
 /// Turns nlohmann's parse error into "origin: line L, column C: <reason>" plus the line itself.
-[[noreturn]] void ThrowParseError(const json::parse_error& error, const std::string& text, const std::string& origin) {
-  // error.byte is the 1-based offset of the last character read (0 if unknown).
-  const std::size_t offset = std::min<std::size_t>(error.byte > 0 ? error.byte - 1 : 0, text.size());
+/// `offset`: 0-based offset of the character the parser stopped at.
+[[noreturn]] void ThrowParseError(std::size_t offset, const std::string& reason, const std::string& text,
+                                  const std::string& origin) {
+  offset = std::min(offset, text.size());
   const std::size_t line_start = offset == 0 ? 0 : text.rfind('\n', offset - 1) + 1;  // npos + 1 == 0
   const std::size_t line = 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + line_start, '\n'));
   const std::size_t column = offset - line_start + 1;
@@ -107,11 +108,6 @@ json FromMatrix(const Matrix& m) {
   if (line_end == std::string::npos) line_end = text.size();
   std::string line_text = text.substr(line_start, line_end - line_start);
   if (!line_text.empty() && line_text.back() == '\r') line_text.pop_back();
-
-  // Keep nlohmann's explanation, without its exception id and its own position.
-  std::string reason = error.what();
-  const std::size_t colon = reason.find(": ", reason.find("parse error"));
-  if (colon != std::string::npos) reason = reason.substr(colon + 2);
 
   const std::string where = origin.empty() ? std::string("JSON text") : origin;
   throw InputError(Concat(where, ": line ", line, ", column ", column, ": invalid JSON: ", reason, "\n  ", line_text,
@@ -133,7 +129,23 @@ Parameters::Parameters(const std::string& json_text, std::string origin)
     // Comments are accepted: Kratos' own reader accepts them.
     document_->root = json::parse(text, nullptr, true, true);
   } catch (const json::parse_error& error) {
-    ThrowParseError(error, std::string(text), document_->origin);
+    // error.byte is the 1-based offset of the last character read (0 if unknown). Keep nlohmann's
+    // explanation, without its exception id and its own position.
+    std::string reason = error.what();
+    const std::size_t colon = reason.find(": ", reason.find("parse error"));
+    if (colon != std::string::npos) reason = reason.substr(colon + 2);
+    ThrowParseError(error.byte > 0 ? error.byte - 1 : 0, reason, std::string(text), document_->origin);
+  } catch (const json::out_of_range& error) {
+    // A number beyond the range of a double ("1e400"): nlohmann gives no position, so point at
+    // the first place the number is written.
+    std::string reason = error.what();
+    const std::size_t quote = reason.find('\'');
+    const std::string number =
+        quote == std::string::npos ? std::string() : reason.substr(quote + 1, reason.rfind('\'') - quote - 1);
+    const std::size_t at = number.empty() ? std::string_view::npos : text.find(number);
+    ThrowParseError(at == std::string_view::npos ? 0 : at,
+                    Concat("the number ", number, " is outside the range of a double"), std::string(text),
+                    document_->origin);
   }
 }
 

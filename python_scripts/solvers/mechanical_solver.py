@@ -48,6 +48,7 @@ class MechanicalSolver:
         self.pending_fixities = None
         self.checkpoint = None  # the restart checkpoint to resume from (input_type "rest")
         self.mesh_record = None  # the mesh file and its import settings, for checkpoints
+        self.mesh_path = None  # the mesh file read, named in errors about its entities
         self.convergence_history = ConvergenceHistory.from_settings(settings["convergence_history"])
         self.AddVariables()
 
@@ -140,6 +141,7 @@ class MechanicalSolver:
         else:
             path = self._import_mesh(imports)
             self.mesh_record = mesh_record(imports, path) if path is not None else None
+        self.mesh_path = path
         self._import_materials()
 
     def _open_checkpoint(self, imports) -> Checkpoint:
@@ -378,7 +380,15 @@ class MechanicalSolver:
         self.strategy.FinalizeSolutionStep()
 
     def Check(self) -> None:
-        self.strategy.Check()
+        try:
+            self.strategy.Check()
+        except _core.InputError as error:
+            # The elements and conditions name themselves ("element 7 (...) is inverted ..."); the
+            # file they were read from is only known here.
+            message = str(error)
+            if self.mesh_path and message.startswith(("element ", "condition ")):
+                raise _core.InputError(f"{self.mesh_path}: {message}") from None
+            raise
 
     def Finalize(self) -> None:
         if self.convergence_history:

@@ -169,7 +169,8 @@ def _(case):
     case.mdpa = case.mdpa[:begin + 3]
 
 
-@bad("mdpa_missing_end_elements", "square", 2, "square.mdpa:{line}", "got 'Begin'")
+@bad("mdpa_missing_end_elements", "square", 2, "square.mdpa:{line}",
+     "expected 'End Elements' to close the block opened at line", "got 'Begin")
 def _(case):
     end = case.line("End Elements")
     case.delete(end)
@@ -287,12 +288,12 @@ def _(case):
     case.insert(case.line("End Conditions"), "2 0 10 11")
 
 
-@bad("mdpa_inverted_element", "square", 2, "element 1", "inverted")
+@bad("mdpa_inverted_element", "square", 2, "square.mdpa: element 1", "inverted")
 def _(case):
     case.set_line(case.element_line(1), "1 0 1 2 5 4")  # clockwise (structured_quads orders (i, j) as 1, 4, 5, 2)
 
 
-@bad("mdpa_zero_area_element", "square", 2, "element 1", "det J = 0")
+@bad("mdpa_zero_area_element", "square", 2, "square.mdpa: element 1", "det J = 0")
 def _(case):
     for node in (4, 5):  # nodes 4 (0.5, 0) and 5 (0.5, 0.5) moved onto the line of 1 (0, 0) and 2 (0, 0.5)
         line = case.node_line(node)

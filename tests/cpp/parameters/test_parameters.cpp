@@ -172,6 +172,16 @@ TEST(Parameters, ParseErrorGivesLineAndColumn) {
   EXPECT_NE(missing_colon.find("x.json: line 2, column 5:"), std::string::npos) << missing_colon;
 }
 
+// Found by fuzzing (issue 16): nlohmann reports a number past the range of a double as
+// out_of_range, not as a parse error; it escaped as an uncaught exception.
+TEST(Parameters, NumberOutOfRangeIsAnInputErrorWithLineAndColumn) {
+  const std::string message =
+      test::ErrorMessageOf([] { Parameters("{\n  \"solver_settings\": {\"tolerance\": 1e400}\n}", "case.json"); });
+  EXPECT_NE(message.find("case.json: line 2, column 36: invalid JSON: the number 1e400 is outside the range of a double"),
+            std::string::npos)
+      << message;
+}
+
 TEST(Parameters, FromFileWithBomAndCrlf) {
   const auto path = std::filesystem::temp_directory_path() / "mc_test_parameters_crlf.json";
   {
