@@ -251,6 +251,7 @@ double Parameters::GetDouble() const {
 int Parameters::GetInt() const {
   constexpr double lowest = std::numeric_limits<int>::lowest();
   constexpr double highest = std::numeric_limits<int>::max();
+  bool integral = true;
   if (node_->is_number_unsigned()) {
     const auto v = node_->get<std::uint64_t>();
     if (v <= static_cast<std::uint64_t>(highest)) return static_cast<int>(v);
@@ -260,9 +261,13 @@ int Parameters::GetInt() const {
   } else if (node_->is_number_float()) {
     // 10.0 is accepted as 10: some writers emit every number as a float.
     const double v = node_->get<double>();
-    if (std::floor(v) == v && v >= lowest && v <= highest) return static_cast<int>(v);
+    integral = std::floor(v) == v;
+    if (integral && v >= lowest && v <= highest) return static_cast<int>(v);
+  } else {
+    integral = false;
   }
-  ThrowType("an integer");
+  // An integer too large for an int would otherwise read "expected an integer, found integer".
+  ThrowType(integral ? "an integer from -2147483648 to 2147483647" : "an integer");
 }
 
 bool Parameters::GetBool() const {

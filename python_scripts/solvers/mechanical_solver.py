@@ -49,6 +49,7 @@ class MechanicalSolver:
         self.checkpoint = None  # the restart checkpoint to resume from (input_type "rest")
         self.mesh_record = None  # the mesh file and its import settings, for checkpoints
         self.mesh_path = None  # the mesh file read, named in errors about its entities
+        self.sub_step_callbacks = (None, None)
         self.convergence_history = ConvergenceHistory.from_settings(settings["convergence_history"])
         self.AddVariables()
 
@@ -259,6 +260,10 @@ class MechanicalSolver:
         return resolve_model_part(self.model, f"{self.main_model_part.Name}.{name}") if name else self.main_model_part
 
     # -- strategy -----------------------------------------------------------------------------
+    def set_sub_step_callbacks(self, initialize, finalize) -> None:
+        """The processes' per-step hooks, re-run in the sub-steps of a split step."""
+        self.sub_step_callbacks = (initialize, finalize)
+
     def Initialize(self) -> None:
         self.strategy = self._create_strategy()
         self.strategy.Initialize()
@@ -287,9 +292,15 @@ class MechanicalSolver:
                       **common)
         if s["solving_strategy_settings"]["type"].GetString() == "line_search":
             newton.pop("use_old_stiffness_in_first_iteration")
-            return _core.LineSearchStrategy(part, scheme, criteria, builder, settings=self._line_search_settings(),
-                                            **newton)
-        return _core.NewtonRaphsonStrategy(part, scheme, criteria, builder, **newton)
+            strategy = _core.LineSearchStrategy(part, scheme, criteria, builder,
+                                                settings=self._line_search_settings(), **newton)
+        else:
+            strategy = _core.NewtonRaphsonStrategy(part, scheme, criteria, builder, **newton)
+        # mortarcontact's cut-back (Kratos' structural strategies have none): the step restarts
+        # as split_factor^s sub-steps, with the processes' hooks run around each.
+        strategy.SetStepSplitting(s["step_splitting"])
+        strategy.SetSubStepCallbacks(*self.sub_step_callbacks)
+        return strategy
 
     def _create_scheme(self, part):
         s = self.settings

@@ -47,8 +47,6 @@ void ReadEverything(const Parameters& value, bool probe) {
     if (value.IsVector()) (void)value.GetVector();
     if (value.IsMatrix()) (void)value.GetMatrix();
     if (value.IsStringArray()) (void)value.GetStringArray();
-  } else if (value.IsInt()) {
-    (void)value.GetInt();
   } else if (value.IsDouble()) {
     (void)value.GetDouble();
   } else if (value.IsBool()) {

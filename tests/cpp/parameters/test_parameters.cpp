@@ -160,7 +160,7 @@ TEST(Parameters, EveryGetterRejectsTheWrongType) {
   EXPECT_EQ(test::ErrorMessageOf([&] { s["names"]["x"]; }),
             "ProjectParameters.json: solver_settings.names: expected an object, found array [\"A\",\"B\"]");
   EXPECT_EQ(test::ErrorMessageOf([] { Parameters("{\"big\": 3000000000}")["big"].GetInt(); }),
-            "big: expected an integer, found integer 3000000000");
+            "big: expected an integer from -2147483648 to 2147483647, found integer 3000000000");
 }
 
 TEST(Parameters, ParseErrorGivesLineAndColumn) {
