@@ -17,7 +17,10 @@ import h5py
 import meshio
 import pytest
 
+import mortarcontact as mc
 from case_builder import fix_process, materials, project_parameters, structured_quads, write_case, write_mdpa
+from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
+from mortarcontact.project_parameters import read_project_parameters
 
 
 def dynamic_case(folder, steps: int, outputs: bool) -> str:
@@ -57,32 +60,32 @@ def start(path: str, cwd) -> subprocess.Popen:
                             stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
 
 
-def rss_kib(pid: int) -> int:
-    with open(f"/proc/{pid}/status") as f:
+def rss_kib() -> int:
+    with open("/proc/self/status") as f:
         return next(int(line.split()[1]) for line in f if line.startswith("VmRSS:"))
 
 
-def test_memory_stays_constant_over_thousands_of_dynamic_steps(tmp_path):
-    steps = 4000
-    process = start(dynamic_case(str(tmp_path), steps, outputs=False), tmp_path)
-    samples = []  # (seconds since start, RSS in KiB)
-    started = time.monotonic()
-    while process.poll() is None:
-        try:
-            samples.append((time.monotonic() - started, rss_kib(process.pid)))
-        except (FileNotFoundError, ProcessLookupError, StopIteration):
-            break
-        time.sleep(0.05)
-    assert process.wait() == 0, process.stderr.read()
-    # The first quarter holds the start-up (imports, first factorization); after it the resident
-    # size must not grow: every step allocates and frees the same.
-    duration = samples[-1][0]
-    settled = [rss for t, rss in samples if t > 0.25 * duration]
-    assert len(settled) > 20, samples
-    growth = max(settled) - settled[0]
-    print(f"[ figures ] {steps} steps in {duration:.1f} s; RSS {settled[0] / 1024:.1f} MiB after the first "
-          f"quarter, {settled[-1] / 1024:.1f} MiB at the end, largest growth {growth} KiB")
-    assert growth < 2048, (growth, settled[0], settled[-1])
+def test_memory_stays_constant_over_thousands_of_dynamic_steps(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    path = dynamic_case(str(tmp_path), 8000, outputs=False)
+    analysis = StructuralMechanicsAnalysis(mc.Model(), read_project_parameters(path), progress=False,
+                                           case_dir=str(tmp_path))
+    analysis.Initialize()
+    samples = []  # (steps done, RSS in KiB)
+    for chunk in range(1, 9):
+        analysis.end_time = chunk * 1000 * 1e-3
+        analysis.RunSolutionLoop()
+        # The summary keeps one record per step (its data, grown by design): cleared here so that
+        # what is measured is the solver, the processes and the model.
+        analysis.step_log.clear()
+        samples.append((analysis.step, rss_kib()))
+    assert analysis.step == 8000
+    analysis.Finalize()
+    # The first thousand steps hold the first allocations of every buffer; after them the resident
+    # size must not move: every step allocates and frees the same.
+    growth = samples[-1][1] - samples[0][1]
+    print(f"[ figures ] RSS after 1000, 2000, ... 8000 dynamic steps (KiB): {[rss for _, rss in samples]}")
+    assert growth < 64, samples
 
 
 def check_readable(path: str) -> None:
@@ -122,9 +125,9 @@ def test_a_run_killed_at_a_random_moment_leaves_every_output_readable(tmp_path, 
     time.sleep(random.Random(seed).uniform(0.0, 1.0))
     process.send_signal(signal.SIGKILL)
     process.wait()
-    published = [os.path.join(folder, name) for folder, _, names in os.walk(tmp_path) for name in names
-                 if not name.startswith(".") and not name.startswith("shake") and ".partial" not in folder]
-    outputs = [p for p in published if not p.endswith(("_materials.json", "_parameters.json"))]
+    # Published files only: the hidden temporary files of an interrupted write are left behind.
+    outputs = [os.path.join(folder, name) for folder, _, names in os.walk(tmp_path) for name in names
+               if not name.startswith((".", "shake")) and ".partial" not in folder]
     assert any(p.endswith(".vtu") for p in outputs), outputs
     for output in outputs:
         check_readable(output)
