@@ -18,9 +18,10 @@ import meshio
 import pytest
 
 import mortarcontact as mc
-from case_builder import fix_process, materials, project_parameters, structured_quads, write_case, write_mdpa
 from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
 from mortarcontact.project_parameters import read_project_parameters
+
+from case_builder import fix_process, materials, project_parameters, structured_quads, write_case, write_mdpa
 
 
 def dynamic_case(folder, steps: int, outputs: bool) -> str:

@@ -14,6 +14,7 @@ import pytest
 from test_cli import run_cli
 
 import mortarcontact as mc
+
 from case_builder import fix_process, materials, project_parameters, structured_quads, write_case, write_mdpa
 
 ELEMENT = "TotalLagrangianElement2D4N"
