@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -109,6 +110,9 @@ class ContactSearchProcess {
   void WarnAboutKeysWithoutEffect() const;
   /// The registered prototype of the pair name for these geometries, and its interned name.
   const PairedCondition& Prototype(const Geometry& slave, const Geometry& master, const std::string** interned);
+  /// The body (connected set of elements of the root model part) a face of the interface lies on;
+  /// the bodies are found once, at the first call.
+  std::size_t BodyOf(const Condition& condition);
 
   ModelPart& root_;
   ModelPart& interface_;
@@ -118,6 +122,7 @@ class ContactSearchProcess {
   std::string type_search_;
   std::string check_gap_;
   bool roles_assigned_ = false;
+  std::unordered_map<const Node*, std::size_t> body_of_node_;
   double total_seconds_ = 0.0;
   std::size_t searches_ = 0;
 };

@@ -119,9 +119,8 @@ bool NewtonRaphsonStrategy::SplitStep() {
   in_sub_step_ = false;
   info.SetValue(STEP, start_step_);
   info.SetValue(DELTA_TIME, delta_time);
-  throw SolutionError(Concat(Name(), ": step ", start_step_, " (time ", end_time,
-                             ") did not converge, not even split ", splitting_.max_number_splits,
-                             " times (smallest sub-step ",
+  throw SolutionError(Concat(Name(), ": step ", start_step_, " (time ", end_time, ") did not converge, not even split ",
+                             splitting_.max_number_splits, " times (smallest sub-step ",
                              delta_time / std::pow(splitting_.split_factor, splitting_.max_number_splits),
                              "); the last attempt: ", last_failure));
 }

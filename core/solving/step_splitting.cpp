@@ -18,8 +18,8 @@ StepSplitting StepSplitting::Read(Parameters settings) {
   s.max_number_splits = settings["max_number_splits"].GetInt();
   s.split_factor = settings["split_factor"].GetDouble();
   if (s.max_number_splits < 0)
-    throw InputError(Concat(settings["max_number_splits"].Where(), ": ", s.max_number_splits,
-                            " must be 0 (no splitting) or more"));
+    throw InputError(
+        Concat(settings["max_number_splits"].Where(), ": ", s.max_number_splits, " must be 0 (no splitting) or more"));
   if (!(s.split_factor > 1.0))
     throw InputError(Concat(settings["split_factor"].Where(), ": ", s.split_factor, " must be greater than 1"));
   return s;

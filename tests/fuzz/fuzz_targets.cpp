@@ -56,12 +56,13 @@ void ReadEverything(const Parameters& value, bool probe) {
   }
   if (!probe) return;
   // Wrong-type getters must answer with an InputError naming the path.
-  for (auto getter : {+[](const Parameters& p) { (void)p.GetDouble(); }, +[](const Parameters& p) { (void)p.GetInt(); },
-                      +[](const Parameters& p) { (void)p.GetBool(); }, +[](const Parameters& p) { (void)p.GetString(); },
-                      +[](const Parameters& p) { (void)p.GetVector(); }, +[](const Parameters& p) { (void)p.GetMatrix(); },
-                      +[](const Parameters& p) { (void)p.GetStringArray(); },
-                      +[](const Parameters& p) { (void)p["solver_settings"]; },
-                      +[](const Parameters& p) { (void)p[std::size_t{3}]; }}) {
+  for (auto getter :
+       {+[](const Parameters& p) { (void)p.GetDouble(); }, +[](const Parameters& p) { (void)p.GetInt(); },
+        +[](const Parameters& p) { (void)p.GetBool(); }, +[](const Parameters& p) { (void)p.GetString(); },
+        +[](const Parameters& p) { (void)p.GetVector(); }, +[](const Parameters& p) { (void)p.GetMatrix(); },
+        +[](const Parameters& p) { (void)p.GetStringArray(); },
+        +[](const Parameters& p) { (void)p["solver_settings"]; },
+        +[](const Parameters& p) { (void)p[std::size_t{3}]; }}) {
     try {
       getter(value);
     } catch (const InputError&) {
@@ -109,9 +110,9 @@ void ReadMdpa(std::string_view text) {
   (void)registered;
   Model model;
   ModelPart& part = model.CreateModelPart("Structure");
-  for (const VariableData* var : {static_cast<const VariableData*>(&DISPLACEMENT),
-                                  static_cast<const VariableData*>(&REACTION), static_cast<const VariableData*>(&VELOCITY),
-                                  static_cast<const VariableData*>(&TEMPERATURE)})
+  for (const VariableData* var :
+       {static_cast<const VariableData*>(&DISPLACEMENT), static_cast<const VariableData*>(&REACTION),
+        static_cast<const VariableData*>(&VELOCITY), static_cast<const VariableData*>(&TEMPERATURE)})
     part.AddNodalSolutionStepVariable(*var);
   for (const bool tolerant : {false, true}) {
     MdpaReader reader("fuzz.mdpa", MdpaReaderOptions{tolerant});
@@ -153,8 +154,7 @@ void ReadParameters(std::string_view text) {
 void ParseExpression(std::string_view text) {
   try {
     const FunctionExpression expression{std::string(text)};
-    for (const double t : {0.0, 1.0, -2.5})
-      (void)expression.Evaluate(0.5 * t, -t, 2.0, t, 1.0, 0.0, -1.0);
+    for (const double t : {0.0, 1.0, -2.5}) (void)expression.Evaluate(0.5 * t, -t, 2.0, t, 1.0, 0.0, -1.0);
     (void)expression.DependsOnSpace();
     (void)expression.DependsOnTime();
   } catch (const InputError&) {

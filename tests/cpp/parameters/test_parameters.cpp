@@ -177,8 +177,9 @@ TEST(Parameters, ParseErrorGivesLineAndColumn) {
 TEST(Parameters, NumberOutOfRangeIsAnInputErrorWithLineAndColumn) {
   const std::string message =
       test::ErrorMessageOf([] { Parameters("{\n  \"solver_settings\": {\"tolerance\": 1e400}\n}", "case.json"); });
-  EXPECT_NE(message.find("case.json: line 2, column 36: invalid JSON: the number 1e400 is outside the range of a double"),
-            std::string::npos)
+  EXPECT_NE(
+      message.find("case.json: line 2, column 36: invalid JSON: the number 1e400 is outside the range of a double"),
+      std::string::npos)
       << message;
 }
 
