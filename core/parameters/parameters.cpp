@@ -15,10 +15,30 @@ namespace {
 
 using json = nlohmann::json;
 
+/// Appends the compact JSON text of `value` (as json::dump) to `out`, stopping soon after `out`
+/// passes `max_chars`: a message quoting a large document does not serialize all of it.
+void DumpPrefix(const json& value, std::string& out, std::size_t max_chars) {
+  if (value.is_array() || value.is_object()) {
+    out += value.is_array() ? '[' : '{';
+    bool first = true;
+    for (auto it = value.begin(); it != value.end(); ++it) {
+      if (out.size() > max_chars) return;
+      if (!first) out += ',';
+      first = false;
+      if (value.is_object()) out += json(it.key()).dump() + ':';
+      DumpPrefix(*it, out, max_chars);
+    }
+    out += value.is_array() ? ']' : '}';
+  } else {
+    out += value.dump();
+  }
+}
+
 /// "string \"ten\"", "integer 3", "object {...}": what the user wrote, short enough for one line.
 std::string Describe(const json& value) {
   constexpr std::size_t max_chars = 60;
-  std::string text = value.dump();
+  std::string text;
+  DumpPrefix(value, text, max_chars);
   if (text.size() > max_chars) text = text.substr(0, max_chars) + "...";
   switch (value.type()) {
     case json::value_t::null: return "null";

@@ -79,21 +79,12 @@ const char* const kDefaults = R"({
 })";
 
 void Validate(const Parameters& settings, const Parameters& defaults) {
-  for (const bool recursive : {false, true}) {
+  using Method = void (Parameters::*)(const Parameters&);
+  for (const Method method : {&Parameters::ValidateAndAssignDefaults, &Parameters::RecursivelyValidateAndAssignDefaults,
+                              &Parameters::AddMissingParameters, &Parameters::RecursivelyAddMissingParameters}) {
     Parameters copy = settings.Clone();
     try {
-      if (recursive)
-        copy.RecursivelyValidateAndAssignDefaults(defaults);
-      else
-        copy.ValidateAndAssignDefaults(defaults);
-    } catch (const InputError&) {
-    }
-    Parameters added = settings.Clone();
-    try {
-      if (recursive)
-        added.RecursivelyAddMissingParameters(defaults);
-      else
-        added.AddMissingParameters(defaults);
+      (copy.*method)(defaults);
     } catch (const InputError&) {
     }
   }

@@ -172,6 +172,19 @@ TEST(Parameters, ParseErrorGivesLineAndColumn) {
   EXPECT_NE(missing_colon.find("x.json: line 2, column 5:"), std::string::npos) << missing_colon;
 }
 
+// Found by fuzzing (issue 16): wrong-type errors on large documents serialized all of them to quote
+// 60 characters (quadratic over a document's sub-views); the quote is the same, built from a prefix.
+TEST(Parameters, WrongTypeOnALargeDocumentQuotesItsBeginning) {
+  std::string text = "{\"a\": [";
+  for (int i = 0; i < 200000; ++i) text += std::to_string(i) + ",";
+  text += "0], \"b\": {\"c\": \"x\"}}";
+  const Parameters root(text);
+  const std::string dumped = root.Json().dump();
+  const std::string message = test::ErrorMessageOf([&] { root.GetInt(); });
+  EXPECT_EQ(message, "settings: expected an integer, found object " + dumped.substr(0, 60) + "...");
+  EXPECT_EQ(test::ErrorMessageOf([&] { root["b"].GetInt(); }), "b: expected an integer, found object {\"c\":\"x\"}");
+}
+
 // Found by fuzzing (issue 16): nlohmann reports a number past the range of a double as
 // out_of_range, not as a parse error; it escaped as an uncaught exception.
 TEST(Parameters, NumberOutOfRangeIsAnInputErrorWithLineAndColumn) {
