@@ -123,10 +123,11 @@ SANITIZE_PYDIR := $(SANITIZE_DIR)/install/lib/python
 SANITIZE_ENV := ASAN_OPTIONS=detect_leaks=0:abort_on_error=1:detect_odr_violation=0 \
                 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
                 LD_PRELOAD="$$(g++ -print-file-name=libasan.so) $$(g++ -print-file-name=libubsan.so)" \
-                PYTHONPATH=$(CURDIR)/$(SANITIZE_PYDIR) MORTARCONTACT_SANITIZED=1
+                PYTHONPATH=$(CURDIR)/$(SANITIZE_PYDIR)
 sanitize-build: deps
 	cmake -S . -B $(SANITIZE_DIR) -G Ninja -DCMAKE_BUILD_TYPE=None \
-	  -DCMAKE_CXX_FLAGS="$(SANITIZE_FLAGS) -g1 -O0" -DCMAKE_INSTALL_PREFIX=$(CURDIR)/$(SANITIZE_DIR)/install \
+	  -DCMAKE_CXX_FLAGS="$(SANITIZE_FLAGS) -g1 -O0" -DMC_SANITIZED_BUILD=ON \
+	  -DCMAKE_INSTALL_PREFIX=$(CURDIR)/$(SANITIZE_DIR)/install \
 	  -DPython_EXECUTABLE=$$($(PYTHON) -c 'import sys; print(sys.executable)') \
 	  -Dpybind11_DIR=$$($(PYTHON) -m pybind11 --cmakedir) >/dev/null
 	cmake --build $(SANITIZE_DIR) -j $(JOBS)
