@@ -79,6 +79,8 @@ const char* const kDefaults = R"({
 })";
 
 void Validate(const Parameters& settings, const Parameters& defaults) {
+  // Defaults come from code, always an object: another kind is a programming error (mc::Error).
+  if (!defaults.IsSubParameter()) return;
   using Method = void (Parameters::*)(const Parameters&);
   for (const Method method : {&Parameters::ValidateAndAssignDefaults, &Parameters::RecursivelyValidateAndAssignDefaults,
                               &Parameters::AddMissingParameters, &Parameters::RecursivelyAddMissingParameters}) {
