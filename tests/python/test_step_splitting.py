@@ -59,7 +59,7 @@ def test_a_step_that_does_not_converge_is_halved_and_the_run_goes_on(tmp_path, m
     push = "-0.35*t"
     # Without splitting, one step of the whole load does not converge in 6 iterations.
     os.makedirs(tmp_path / "plain")
-    result = run_cli("run", block_case(str(tmp_path / "plain"), push=push))
+    result = run_cli("run", block_case(str(tmp_path / "plain"), push=push), cwd=tmp_path / "plain")
     assert result.returncode == 4, result.stdout + result.stderr
     # With halving, the step is redone as sub-steps and the analysis finishes.
     os.makedirs(tmp_path / "split")
