@@ -23,7 +23,8 @@ CLANG_FORMAT ?= clang-format
 CXX_FILES := git ls-files -z -- '*.h' '*.hpp' '*.cpp' '*.cc' ':(exclude)custom_conditions/generated/*' \
              ':(exclude)tests/cases/*' ':(exclude)build/*' ':(exclude,glob)**/.venv/**'
 
-.PHONY: all deps deps-petsc install demo docs test lint format test-cpp test-python bench bench-large bench-robustness clean
+.PHONY: all deps deps-petsc install demo docs test lint format test-cpp test-python bench bench-large bench-robustness clean \
+        fuzz-deps fuzz-build fuzz sanitize-build test-sanitize
 
 all: install
 
@@ -100,6 +101,65 @@ bench-large: install
 # by both codes in its own subprocess; writes benchmarks/robustness/results.md. FILTER=regex runs part.
 bench-robustness: install
 	$(PYTHON) benchmarks/robustness/run_sweep.py $(if $(FILTER),--filter '$(FILTER)')
+
+# Coverage-guided fuzzing (issue 16) of the mdpa reader, the JSON settings and the function
+# expressions with libFuzzer, AddressSanitizer and UndefinedBehaviorSanitizer, in build/fuzz
+# (clang; never mixed with build/cmake). FUZZ_TIME seconds per target; the growing corpora stay in
+# build/fuzz/corpus, seeded from tests/cases; crashes land in build/fuzz/findings/<target>/.
+FUZZ_DEBS := clang libclang-rt-14-dev libomp-14-dev
+FUZZ_DIR := build/fuzz
+FUZZ_TIME ?= 60
+FUZZ_TARGETS := mdpa parameters expression
+SANITIZE_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer
+fuzz-deps: deps
+	@missing=""; for p in $(FUZZ_DEBS); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
+	if [ -n "$$missing" ]; then \
+	  echo "Installing Debian packages:$$missing"; \
+	  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $$missing; \
+	fi
+
+fuzz-build: fuzz-deps
+	CC=clang CXX=clang++ cmake -S . -B $(FUZZ_DIR) -G Ninja -DCMAKE_BUILD_TYPE=None \
+	  -DCMAKE_CXX_FLAGS="$(SANITIZE_FLAGS) -g -O1 -fsanitize=fuzzer-no-link" \
+	  -DMC_BUILD_FUZZ=ON -DMC_BUILD_TESTS=OFF -DMC_BUILD_PYTHON=OFF >/dev/null
+	cmake --build $(FUZZ_DIR) -j $(JOBS) --target $(addprefix fuzz_,$(FUZZ_TARGETS))
+	$(PYTHON) tests/fuzz/make_seeds.py $(FUZZ_DIR)/seeds
+
+fuzz: fuzz-build
+	@for t in $(FUZZ_TARGETS); do \
+	  mkdir -p $(FUZZ_DIR)/corpus/$$t $(FUZZ_DIR)/findings/$$t; \
+	  echo "fuzz_$$t: $(FUZZ_TIME) s"; \
+	  $(FUZZ_DIR)/tests/fuzz/fuzz_$$t -max_total_time=$(FUZZ_TIME) -timeout=10 -rss_limit_mb=2048 \
+	    -dict=tests/fuzz/$$t.dict -artifact_prefix=$(FUZZ_DIR)/findings/$$t/ -print_final_stats=1 \
+	    $(FUZZ_DIR)/corpus/$$t $(FUZZ_DIR)/seeds/$$t 2>$(FUZZ_DIR)/fuzz_$$t.log \
+	    || { tail -n 40 $(FUZZ_DIR)/fuzz_$$t.log; exit 1; }; \
+	  grep -E '^(stat::number_of_executed_units|#[0-9]+ +DONE)' $(FUZZ_DIR)/fuzz_$$t.log; \
+	done
+
+# The C++ tests and the Python tests on a build with AddressSanitizer + UndefinedBehaviorSanitizer
+# (issue 16), in build/sanitize (GCC; installed into build/sanitize/install, which the Python tests
+# import first). -O0: the generated contact conditions take hours to compile with optimisation and
+# the sanitizers on a shared 2-core machine. Python itself is not instrumented: libasan is preloaded, and its leaks (interned
+# objects kept to the end) are not reported; the C++ tests check leaks too.
+SANITIZE_DIR := build/sanitize
+SANITIZE_PYDIR := $(SANITIZE_DIR)/install/lib/python
+SANITIZE_ENV := ASAN_OPTIONS=detect_leaks=0:abort_on_error=1:detect_odr_violation=0 \
+                UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+                LD_PRELOAD="$$(g++ -print-file-name=libasan.so) $$(g++ -print-file-name=libubsan.so)" \
+                PYTHONPATH=$(CURDIR)/$(SANITIZE_PYDIR)
+sanitize-build: deps
+	cmake -S . -B $(SANITIZE_DIR) -G Ninja -DCMAKE_BUILD_TYPE=None \
+	  -DCMAKE_CXX_FLAGS="$(SANITIZE_FLAGS) -g1 -O0" -DMC_SANITIZED_BUILD=ON \
+	  -DCMAKE_INSTALL_PREFIX=$(CURDIR)/$(SANITIZE_DIR)/install \
+	  -DPython_EXECUTABLE=$$($(PYTHON) -c 'import sys; print(sys.executable)') \
+	  -Dpybind11_DIR=$$($(PYTHON) -m pybind11 --cmakedir) >/dev/null
+	cmake --build $(SANITIZE_DIR) -j $(JOBS)
+	cmake --install $(SANITIZE_DIR) >/dev/null
+
+test-sanitize: sanitize-build
+	ASAN_OPTIONS=abort_on_error=1:detect_odr_violation=0 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+	  ctest --test-dir $(SANITIZE_DIR) --output-on-failure -j $(JOBS)
+	$(SANITIZE_ENV) $(PYTHON) -m pytest -q -p no:cacheprovider tests/python
 
 clean:
 	rm -rf build

@@ -12,6 +12,7 @@
 #include <optional>
 #include <set>
 #include <unordered_map>
+#include <utility>
 
 #include "core/geometries/reference_element.h"
 #include "core/model/parallel_utilities.h"
@@ -108,12 +109,13 @@ struct FaceData {
   Array3 normal;
   double length;
   double radius;  // of the ball around the centre holding the nodes
+  std::size_t body;
 };
 
-FaceData MakeFaceData(Condition* condition) {
+FaceData MakeFaceData(Condition* condition, std::size_t body) {
   const Geometry& geometry = condition->GetGeometry();
-  FaceData data{condition, geometry.Center(), condition->GetValue(NORMAL), InterfaceCharacteristicLength(geometry),
-                0.0};
+  FaceData data{condition, geometry.Center(), condition->GetValue(NORMAL), InterfaceCharacteristicLength(geometry), 0.0,
+                body};
   for (const Node* node : geometry.Nodes())
     data.radius = std::max(data.radius, (node->Coordinates() - data.center).norm());
   return data;
@@ -310,6 +312,35 @@ void ContactSearchProcess::AssignAutomaticRoles(const std::vector<Condition*>& c
     }
 }
 
+std::size_t ContactSearchProcess::BodyOf(const Condition& condition) {
+  if (body_of_node_.empty()) {
+    // Union-find over the nodes of each element: the bodies are the connected sets of elements.
+    std::unordered_map<const Node*, const Node*> parent;
+    auto find = [&](const Node* node) {
+      const Node* root = node;
+      while (parent.at(root) != root) root = parent.at(root);
+      while (parent.at(node) != root) node = std::exchange(parent.at(node), root);
+      return root;
+    };
+    for (const Element* element : root_.Elements())
+      for (const Node* node : element->GetGeometry().Nodes()) parent.emplace(node, node);
+    for (const Element* element : root_.Elements()) {
+      const Geometry& geometry = element->GetGeometry();
+      for (std::size_t k = 1; k < geometry.PointsNumber(); ++k) {
+        const Node* a = find(&geometry[0]);
+        const Node* b = find(&geometry[k]);
+        if (a != b) parent.at(b) = a;
+      }
+    }
+    std::unordered_map<const Node*, std::size_t> numbers;
+    for (const auto& [node, _] : parent)
+      body_of_node_.emplace(node, numbers.emplace(find(node), numbers.size()).first->second);
+  }
+  // A face whose nodes belong to no element (a contact surface without a body) is a body of its own.
+  const auto it = body_of_node_.find(&condition.GetGeometry()[0]);
+  return it != body_of_node_.end() ? it->second : body_of_node_.size() + condition.Id();
+}
+
 ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
   const auto start = std::chrono::steady_clock::now();
   ContactSearchStatistics stats;
@@ -328,8 +359,10 @@ ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
   stats.slave_conditions = slaves.size();
   stats.master_conditions = masters.size();
 
+  std::vector<std::size_t> bodies(all.size());
+  for (std::size_t i = 0; i < all.size(); ++i) bodies[i] = BodyOf(*all[i]);
   std::vector<FaceData> faces(all.size());
-  ParallelForEachIndex(all.size(), [&](std::size_t i) { faces[i] = MakeFaceData(all[i]); });
+  ParallelForEachIndex(all.size(), [&](std::size_t i) { faces[i] = MakeFaceData(all[i], bodies[i]); });
 
   std::vector<Array3> centers;
   centers.reserve(masters.size());
@@ -385,12 +418,16 @@ ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
       // masters it will touch later in the step; the thin lateral padding still rejects far faces.
       if (with_obb) slave_obb = BuildOrientedBox(slave_geometry, slave.normal, box_factor * slave.length, radius);
       // Tests shared by the search and the coverage walk below: the master faces the slave (opposite
-      // normals, no common node, not behind it by more than a face: the far side of the slave's own
-      // body, whose normals are opposite too, as on a whole-skin interface), and its projection on
-      // the slave's plane overlaps the slave.
+      // normals, no common node, not behind it: the far side of the slave's own body has opposite
+      // normals too, as on a whole-skin interface), and its projection on the slave's plane overlaps
+      // the slave. Another body's face may lie behind the slave by up to a face's size (an initial
+      // penetration); a face of the slave's own body only by a tenth of one (self contact that has
+      // just crossed), since its far side can be nearer than a face's size (one element across).
       auto opposite = [&](const FaceData& master) {
+        const double behind = master.body == slave.body ? 0.1 * std::min(slave.length, master.length)
+                                                        : std::max(slave.length, master.length);
         return slave.normal.dot(master.normal) < -threshold &&
-               (master.center - slave.center).dot(slave.normal) >= -std::max(slave.length, master.length) &&
+               (master.center - slave.center).dot(slave.normal) >= -behind &&
                !ShareNode(slave_geometry, master.condition->GetGeometry());
       };
       auto beneath = [&](const FaceData& master) {

@@ -127,6 +127,9 @@ class ContactSearchProcess {
   void WarnAboutKeysWithoutEffect() const;
   /// The registered prototype of the pair name for these geometries, and its interned name.
   const PairedCondition& Prototype(const Geometry& slave, const Geometry& master, const std::string** interned);
+  /// The body (connected set of elements of the root model part) a face of the interface lies on;
+  /// the bodies are found once, at the first call.
+  std::size_t BodyOf(const Condition& condition);
 
   ModelPart& root_;
   ModelPart& interface_;
@@ -138,6 +141,7 @@ class ContactSearchProcess {
   bool roles_assigned_ = false;
   /// NORMAL_GAP of each slave node at the previous search (static_check_movement).
   std::unordered_map<const Node*, double> previous_gap_;
+  std::unordered_map<const Node*, std::size_t> body_of_node_;
   double total_seconds_ = 0.0;
   std::size_t searches_ = 0;
 };

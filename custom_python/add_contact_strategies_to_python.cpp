@@ -213,24 +213,13 @@ void AddContactStrategiesToPython(py::module_& m) {
                   "Its keys of contact_settings with their defaults.")
       .def("SetMortarUpdater", &ContactNewton::SetMortarUpdater, py::arg("updater"),
            "The MortarUpdater of the contact predictor (weighted gap at the last converged coordinates).")
-      .def(
-          "SetSubStepCallbacks",
-          [](ContactNewton& s, py::object initialize_solution_step, py::object finalize_solution_step) {
-            s.SetSubStepCallbacks({PythonCallback<>(std::move(initialize_solution_step)),
-                                   PythonCallback<>(std::move(finalize_solution_step))});
-          },
-          py::arg("initialize_solution_step"), py::arg("finalize_solution_step") = py::none(),
-          "Callables run around the sub-steps of the adaptive splitting (processes, output).")
       .def("SetMaxIterationNumber", &ContactNewton::SetMaxIterationNumber, py::arg("max_iteration"),
            "Newton iterations allowed per step (per pass in simplified semi-smooth Newton).")
       .def("GetMaxIterationNumber", &ContactNewton::GetMaxIterationNumber, "Newton iterations allowed per step.")
       .def("ActiveSetFlipCounts", &ContactNewton::ActiveSetFlipCounts,
            "{slave node id: times it changed state} during the last step.")
-      .def("FailureReport", &ContactNewton::FailureReport, "Why the last step failed ('' if it converged).")
       .def("InnerLoopIterations", &ContactNewton::InnerLoopIterations,
-           "Active-set passes of the last step (1 in full semi-smooth Newton).")
-      .def("SplitLevelUsed", &ContactNewton::SplitLevelUsed,
-           "Split level that made the last step converge (0: no split needed).");
+           "Active-set passes of the last step (1 in full semi-smooth Newton).");
 
   using LineSearchSplitStep = LineSearchContactStrategy::SplitStep;
   py::class_<LineSearchSplitStep>(m, "LineSearchSplitStep", "The two step lengths of one line-search iteration.")

@@ -227,7 +227,25 @@ void AddSolvingToPython(py::module_& m) {
            py::arg("max_iteration") = 10, py::arg("compute_reactions") = true,
            py::arg("reform_dofs_at_each_step") = false, py::arg("move_mesh") = true,
            py::arg("use_old_stiffness_in_first_iteration") = false, py::arg("echo_level") = 0, py::keep_alive<1, 2>(),
-           "Kratos' solver_settings of the same names (move_mesh: move_mesh_flag).");
+           "Kratos' solver_settings of the same names (move_mesh: move_mesh_flag).")
+      .def(
+          "SetStepSplitting",
+          [](NewtonRaphsonStrategy& s, Parameters settings) { s.SetStepSplitting(StepSplitting::Read(settings)); },
+          py::arg("settings"),
+          "solver_settings.step_splitting: {max_number_splits (0: off), split_factor (2)}; a step that does not "
+          "converge restarts as sub-steps of DELTA_TIME / split_factor^s, s = 1 .. max_number_splits.")
+      .def(
+          "SetSubStepCallbacks",
+          [](NewtonRaphsonStrategy& s, py::object initialize_solution_step, py::object finalize_solution_step) {
+            s.SetSubStepCallbacks({PythonCallback<>(std::move(initialize_solution_step)),
+                                   PythonCallback<>(std::move(finalize_solution_step))});
+          },
+          py::arg("initialize_solution_step"), py::arg("finalize_solution_step") = py::none(),
+          "Callables run around the sub-steps of a split step (processes, output).")
+      .def("FailureReport", &NewtonRaphsonStrategy::FailureReport,
+           "Why the last step failed ('' if it converged): step, time, and the nodes or elements at fault.")
+      .def("SplitLevelUsed", &NewtonRaphsonStrategy::SplitLevelUsed,
+           "Split level that made the last step converge (0: no split needed).");
 
   py::class_<LineSearchSettings>(m, "LineSearchSettings", "Settings of the line search (Kratos' line_search keys).")
       .def(py::init<>(), "Kratos' defaults.")

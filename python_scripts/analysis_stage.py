@@ -56,7 +56,14 @@ class StructuralMechanicsAnalysis:
     # -- driver -----------------------------------------------------------------------------
     def Run(self) -> None:
         self.Initialize()
-        self.RunSolutionLoop()
+        try:
+            self.RunSolutionLoop()
+        except _core.SolutionError:
+            # The results of the converged steps are kept: processes that write only at the end
+            # write now.
+            for process in self._all_processes():
+                process.ExecuteAfterFailure()
+            raise
         self.Finalize()
 
     def Initialize(self) -> None:
@@ -68,8 +75,7 @@ class StructuralMechanicsAnalysis:
         for process in self._all_processes():
             with naming_the_item(getattr(process, "item_where", "")):
                 process.ExecuteInitialize()
-        if hasattr(self.solver, "set_sub_step_callbacks"):
-            self.solver.set_sub_step_callbacks(self._initialize_processes_step, self._finalize_processes_step)
+        self.solver.set_sub_step_callbacks(self._initialize_sub_step, self._finalize_sub_step)
         self.solver.Initialize()
         self.Check()
         for process in self._all_processes():
@@ -131,6 +137,17 @@ class StructuralMechanicsAnalysis:
         for process in self._all_processes():
             process.ExecuteFinalizeSolutionStep()
 
+    # The sub-steps of a split step need the boundary conditions, loads and contact search of
+    # their time, but are no steps of the output: the output processes (whose step counters name
+    # the files) see only the step they make up.
+    def _initialize_sub_step(self) -> None:
+        for process in self.processes:
+            process.ExecuteInitializeSolutionStep()
+
+    def _finalize_sub_step(self) -> None:
+        for process in self.processes:
+            process.ExecuteFinalizeSolutionStep()
+
     def OutputSolutionStep(self) -> None:
         writing = [p for p in self.output_processes if p.IsOutputStep()]
         if not writing:
@@ -177,6 +194,10 @@ class StructuralMechanicsAnalysis:
         norms = f"; last iteration: {last}" if last else ""
         message = (f"step {self.step} (time {self.time:.6g}) did not converge in "
                    f"{self.solver.LastIterationCount()} iterations{norms}")
+        # The strategy's own account names the nodes or elements at fault.
+        report = getattr(self.solver.strategy, "FailureReport", None)
+        if report is not None and report():
+            message += f"\n  {report()}"
         if self.stop_on_non_convergence:
             raise ConvergenceFailure(message + ". The results of the last converged step were written.")
         warn(message)

@@ -3,7 +3,8 @@
 The analysis stage calls the hooks in this order (spec 1.7): ``ExecuteInitialize``, ``Check``,
 ``ExecuteBeforeSolutionLoop``; per step ``ExecuteInitializeSolutionStep``, then after the solve
 ``ExecuteFinalizeSolutionStep``; around output ``ExecuteBeforeOutputStep`` / ``PrintOutput`` /
-``ExecuteAfterOutputStep``; at the end ``ExecuteFinalize``. Each process owns its defaults in
+``ExecuteAfterOutputStep``; at the end ``ExecuteFinalize``, or ``ExecuteAfterFailure`` when a
+solution error stops the run. Each process owns its defaults in
 ``GetDefaultParameters()`` and validates its settings against them.
 """
 from __future__ import annotations
@@ -33,6 +34,10 @@ class Process:
     def ExecuteBeforeOutputStep(self) -> None: ...
     def ExecuteAfterOutputStep(self) -> None: ...
     def ExecuteFinalize(self) -> None: ...
+
+    def ExecuteAfterFailure(self) -> None:
+        """The run stops on a solution error (mortarcontact's hook, not Kratos'): a process that
+        writes its results only at the end writes what the converged steps produced."""
 
     def OutputFiles(self) -> list[str]:
         """The result files this process has written so far (for the end-of-run summary)."""

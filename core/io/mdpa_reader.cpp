@@ -176,13 +176,21 @@ class Reader {
     if (!extra.empty()) Fail(line.number, "expected the end of the line", extra);
   }
 
-  /// The next line of the block opened by `begin`; false at its `End <keyword>` line.
-  bool NextInBlock(Line& line, const Line& begin, std::string_view keyword) {
+  /// The next line of the block opened by `begin`; false at its `End <keyword>` line. A `Begin`
+  /// line is returned only in blocks that nest others (`nests`); elsewhere it means the block
+  /// was left open.
+  bool NextInBlock(Line& line, const Line& begin, std::string_view keyword, bool nests = false) {
     if (!cursor_.Next(line))
       Fail(begin.number, Concat("expected 'End ", keyword, "' to close this block before the end of the file"),
            begin.text);
     std::string_view rest = line.text;
-    if (NextToken(rest) != "End") return true;
+    const std::string_view first = NextToken(rest);
+    if (first == "Begin" && !nests)
+      Fail(line.number,
+           Concat("expected 'End ", keyword, "' to close the block opened at line ", begin.number, " ('", begin.text,
+                  "') before the next block"),
+           line.text);
+    if (first != "End") return true;
     const std::string_view closed = NextToken(rest);
     if (closed != keyword || !TrimView(rest).empty())
       Fail(line.number, Concat("expected 'End ", keyword, "' (block opened at line ", begin.number, ")"), line.text);
@@ -259,7 +267,7 @@ class Reader {
     ExpectEnd(begin, rest);
     Properties& properties = target_.GetOrCreateProperties(id);
     Line line;
-    while (NextInBlock(line, begin, "Properties")) {
+    while (NextInBlock(line, begin, "Properties", true)) {
       std::string_view tail = line.text;
       if (NextToken(tail) == "Begin") {
         if (NextToken(tail) != "Table")
@@ -437,6 +445,13 @@ class Reader {
         nodes.push_back(node);
       }
       if (pid != properties_id) {
+        // Kratos 10.4 stops here ("Properties #5 is not found"); we go on with empty properties
+        // (materials.json usually assigns the element's properties afterwards) but say so once
+        // per id, since a typo in the id otherwise surfaces later as "no constitutive law".
+        if (!root_.HasProperties(pid) && undefined_properties_.insert(pid).second)
+          Logger::Warning(Concat(origin_, ":", line.number, ": ", kind, " ", id, " refers to properties ", pid,
+                                 ", which no 'Begin Properties ", pid,
+                                 "' block defines; empty properties are created (Kratos 10.4 rejects this file)"));
         properties = &target_.GetOrCreateProperties(pid);
         properties_id = pid;
       }
@@ -550,7 +565,7 @@ class Reader {
     ExpectEnd(begin, rest);
     ModelPart& sub = parent.CreateSubModelPart(std::string(name));
     Line line;
-    while (NextInBlock(line, begin, "SubModelPart")) {
+    while (NextInBlock(line, begin, "SubModelPart", true)) {
       std::string_view tail = line.text;
       const std::string_view word = NextToken(tail);
       const std::string_view keyword = NextToken(tail);
@@ -624,6 +639,7 @@ class Reader {
   IdIndex<Node> nodes_;
   IdIndex<Element> elements_;
   IdIndex<Condition> conditions_;
+  std::set<IndexType> undefined_properties_;
 };
 
 }  // namespace

@@ -15,10 +15,30 @@ namespace {
 
 using json = nlohmann::json;
 
+/// Appends the compact JSON text of `value` (as json::dump) to `out`, stopping soon after `out`
+/// passes `max_chars`: a message quoting a large document does not serialize all of it.
+void DumpPrefix(const json& value, std::string& out, std::size_t max_chars) {
+  if (value.is_array() || value.is_object()) {
+    out += value.is_array() ? '[' : '{';
+    bool first = true;
+    for (auto it = value.begin(); it != value.end(); ++it) {
+      if (out.size() > max_chars) return;
+      if (!first) out += ',';
+      first = false;
+      if (value.is_object()) out += json(it.key()).dump() + ':';
+      DumpPrefix(*it, out, max_chars);
+    }
+    out += value.is_array() ? ']' : '}';
+  } else {
+    out += value.dump();
+  }
+}
+
 /// "string \"ten\"", "integer 3", "object {...}": what the user wrote, short enough for one line.
 std::string Describe(const json& value) {
   constexpr std::size_t max_chars = 60;
-  std::string text = value.dump();
+  std::string text;
+  DumpPrefix(value, text, max_chars);
   if (text.size() > max_chars) text = text.substr(0, max_chars) + "...";
   switch (value.type()) {
     case json::value_t::null: return "null";
@@ -97,9 +117,10 @@ json FromMatrix(const Matrix& m) {
 }
 
 /// Turns nlohmann's parse error into "origin: line L, column C: <reason>" plus the line itself.
-[[noreturn]] void ThrowParseError(const json::parse_error& error, const std::string& text, const std::string& origin) {
-  // error.byte is the 1-based offset of the last character read (0 if unknown).
-  const std::size_t offset = std::min<std::size_t>(error.byte > 0 ? error.byte - 1 : 0, text.size());
+/// `offset`: 0-based offset of the character the parser stopped at.
+[[noreturn]] void ThrowParseError(std::size_t offset, const std::string& reason, const std::string& text,
+                                  const std::string& origin) {
+  offset = std::min(offset, text.size());
   const std::size_t line_start = offset == 0 ? 0 : text.rfind('\n', offset - 1) + 1;  // npos + 1 == 0
   const std::size_t line = 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + line_start, '\n'));
   const std::size_t column = offset - line_start + 1;
@@ -107,11 +128,6 @@ json FromMatrix(const Matrix& m) {
   if (line_end == std::string::npos) line_end = text.size();
   std::string line_text = text.substr(line_start, line_end - line_start);
   if (!line_text.empty() && line_text.back() == '\r') line_text.pop_back();
-
-  // Keep nlohmann's explanation, without its exception id and its own position.
-  std::string reason = error.what();
-  const std::size_t colon = reason.find(": ", reason.find("parse error"));
-  if (colon != std::string::npos) reason = reason.substr(colon + 2);
 
   const std::string where = origin.empty() ? std::string("JSON text") : origin;
   throw InputError(Concat(where, ": line ", line, ", column ", column, ": invalid JSON: ", reason, "\n  ", line_text,
@@ -133,7 +149,23 @@ Parameters::Parameters(const std::string& json_text, std::string origin)
     // Comments are accepted: Kratos' own reader accepts them.
     document_->root = json::parse(text, nullptr, true, true);
   } catch (const json::parse_error& error) {
-    ThrowParseError(error, std::string(text), document_->origin);
+    // error.byte is the 1-based offset of the last character read (0 if unknown). Keep nlohmann's
+    // explanation, without its exception id and its own position.
+    std::string reason = error.what();
+    const std::size_t colon = reason.find(": ", reason.find("parse error"));
+    if (colon != std::string::npos) reason = reason.substr(colon + 2);
+    ThrowParseError(error.byte > 0 ? error.byte - 1 : 0, reason, std::string(text), document_->origin);
+  } catch (const json::out_of_range& error) {
+    // A number beyond the range of a double ("1e400"): nlohmann gives no position, so point at
+    // the first place the number is written.
+    std::string reason = error.what();
+    const std::size_t quote = reason.find('\'');
+    const std::string number =
+        quote == std::string::npos ? std::string() : reason.substr(quote + 1, reason.rfind('\'') - quote - 1);
+    const std::size_t at = number.empty() ? std::string_view::npos : text.find(number);
+    ThrowParseError(at == std::string_view::npos ? 0 : at,
+                    Concat("the number ", number, " is outside the range of a double"), std::string(text),
+                    document_->origin);
   }
 }
 
@@ -239,6 +271,7 @@ double Parameters::GetDouble() const {
 int Parameters::GetInt() const {
   constexpr double lowest = std::numeric_limits<int>::lowest();
   constexpr double highest = std::numeric_limits<int>::max();
+  bool integral = true;
   if (node_->is_number_unsigned()) {
     const auto v = node_->get<std::uint64_t>();
     if (v <= static_cast<std::uint64_t>(highest)) return static_cast<int>(v);
@@ -248,9 +281,13 @@ int Parameters::GetInt() const {
   } else if (node_->is_number_float()) {
     // 10.0 is accepted as 10: some writers emit every number as a float.
     const double v = node_->get<double>();
-    if (std::floor(v) == v && v >= lowest && v <= highest) return static_cast<int>(v);
+    integral = std::floor(v) == v;
+    if (integral && v >= lowest && v <= highest) return static_cast<int>(v);
+  } else {
+    integral = false;
   }
-  ThrowType("an integer");
+  // An integer too large for an int would otherwise read "expected an integer, found integer".
+  ThrowType(integral ? "an integer from -2147483648 to 2147483647" : "an integer");
 }
 
 bool Parameters::GetBool() const {

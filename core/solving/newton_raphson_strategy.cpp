@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "core/solving/newton_raphson_strategy.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "core/model/model_part.h"
 #include "core/utilities/logger.h"
 #include "core/variables/kernel_variables.h"
@@ -28,18 +31,162 @@ void NewtonRaphsonStrategy::Initialize() {
 
 void NewtonRaphsonStrategy::InitializeSolutionStep() {
   const bool reform = !dofs_ready_ || reform_dofs_;
+  // The iterations of the failed attempt and of the sub-steps all belong to the step's history.
+  std::vector<IterationRecord> earlier = in_sub_step_ ? std::move(history_) : std::vector<IterationRecord>{};
   ImplicitSolvingStrategy::InitializeSolutionStep();
   if (reform) has_stiffness_ = false;
-  history_.clear();
+  history_ = std::move(earlier);
+  failure_.clear();
+  if (!in_sub_step_) {
+    split_level_ = 0;
+    if (splitting_.Enabled()) SaveStepStart();
+  }
   criteria_->InitializeSolutionStep(model_part_, builder_->GetDofSet(), builder_->SystemMatrix(), builder_->Increment(),
                                     builder_->Residual());
 }
 
 bool NewtonRaphsonStrategy::SolveSolutionStep() {
+  bool converged = TrySolveStepAttempt();
+  if (!converged && splitting_.Enabled() && !in_sub_step_) converged = SplitStep();
+  failure_ = converged ? std::string() : DescribeFailure();
+  if (!converged) ReportNonConvergence();
+  return converged;
+}
+
+bool NewtonRaphsonStrategy::SolveStepAttempt() {
   for (int it = 1; it <= max_iteration_; ++it)
     if (NewtonIteration(it)) return true;
-  ReportNonConvergence();
   return false;
+}
+
+bool NewtonRaphsonStrategy::TrySolveStepAttempt() {
+  solver_error_.clear();
+  if (!splitting_.Enabled()) return SolveStepAttempt();
+  // A diverging iterate can make the system singular or invert an element: with splitting on,
+  // that is one more reason to split, not the end of the analysis.
+  try {
+    return SolveStepAttempt();
+  } catch (const SolutionError& e) {
+    solver_error_ = e.what();
+    return false;
+  }
+}
+
+bool NewtonRaphsonStrategy::SplitStep() {
+  ModelPart& root = model_part_.GetRootModelPart();
+  ProcessInfo& info = root.GetProcessInfo();
+  const double end_time = start_time_;
+  const double delta_time = start_delta_time_;
+  const double begin_time = end_time - delta_time;
+  std::string last_failure = DescribeFailure();
+  if (!callbacks_.initialize_solution_step && echo_level_ >= 1)
+    Logger::Warning(Concat(Name(),
+                           ": no process callbacks were given; boundary conditions and loads are not "
+                           "updated in the sub-steps of a split step"));
+  in_sub_step_ = true;
+  for (int level = 1; level <= splitting_.max_number_splits; ++level) {
+    const double sub_dt = delta_time / std::pow(splitting_.split_factor, level);
+    if (echo_level_ >= 1)
+      Logger::Info(Concat(Name(), ": step ", start_step_, " did not converge (", last_failure,
+                          "); splitting it into sub-steps of ", sub_dt));
+    RestoreStepStart();
+    bool ok = true;
+    double time = begin_time;
+    const double tiny = 1e-9 * sub_dt;
+    while (ok && time < end_time - tiny) {
+      time = std::min(time + sub_dt, end_time);
+      if (end_time - time < tiny) time = end_time;
+      const bool last = time == end_time;
+      root.CloneTimeStep(time);
+      if (callbacks_.initialize_solution_step) callbacks_.initialize_solution_step();
+      InitializeSolutionStep();
+      Predict();
+      ok = TrySolveStepAttempt();
+      if (ok && !last) {
+        FinalizeSolutionStep();
+        if (callbacks_.finalize_solution_step) callbacks_.finalize_solution_step();
+      }
+      if (!ok) last_failure = DescribeFailure();
+    }
+    if (ok) {
+      in_sub_step_ = false;
+      split_level_ = level;
+      info.SetValue(STEP, start_step_);
+      info.SetValue(DELTA_TIME, delta_time);
+      return true;
+    }
+  }
+  in_sub_step_ = false;
+  info.SetValue(STEP, start_step_);
+  info.SetValue(DELTA_TIME, delta_time);
+  throw SolutionError(Concat(Name(), ": step ", start_step_, " (time ", end_time, ") did not converge, not even split ",
+                             splitting_.max_number_splits, " times (smallest sub-step ",
+                             delta_time / std::pow(splitting_.split_factor, splitting_.max_number_splits),
+                             "); the last attempt: ", last_failure));
+}
+
+void NewtonRaphsonStrategy::SaveStepStart() {
+  ModelPart& root = model_part_.GetRootModelPart();
+  const ProcessInfo& info = root.GetProcessInfo();
+  start_time_ = info.GetValue(TIME);
+  start_delta_time_ = info.GetValue(DELTA_TIME);
+  start_step_ = info.GetValue(STEP);
+  start_.clear();
+  start_.reserve(root.NumberOfNodes());
+  for (Node* p_node : root.Nodes()) {
+    Node& node = *p_node;
+    const std::size_t size = node.SolutionStepVariables().Stride() * static_cast<std::size_t>(node.BufferSize());
+    start_.push_back({&node, std::vector<double>(node.StepData(0), node.StepData(0) + size)});
+  }
+}
+
+void NewtonRaphsonStrategy::RestoreStepStart() {
+  // The step started after the analysis cloned the time step (step 0 = copy of the converged
+  // state, step k = converged state k-1 steps ago); going back one step shifts the history
+  // forward, so that the sub-steps' CloneTimeStep rebuilds the same buffer.
+  for (NodeStart& start : start_) {
+    Node& node = *start.node;
+    const std::size_t stride = node.SolutionStepVariables().Stride();
+    const int buffer = node.BufferSize();
+    for (int k = 0; k < buffer; ++k) {
+      const int source = std::min(k + 1, buffer - 1);
+      std::copy_n(start.history.begin() + static_cast<std::ptrdiff_t>(source * stride), stride, node.StepData(k));
+    }
+  }
+  ProcessInfo& info = model_part_.GetRootModelPart().GetProcessInfo();
+  info.SetValue(TIME, start_time_ - start_delta_time_);
+  info.SetValue(STEP, start_step_ - 1);
+  if (move_mesh_) MoveMesh();
+}
+
+std::string NewtonRaphsonStrategy::DescribeFailure() const {
+  const ProcessInfo& info = model_part_.GetProcessInfo();
+  const std::string step = Concat(Name(), ": step ", info.GetValue(STEP), " (time ", info.GetValue(TIME), ")");
+  if (!solver_error_.empty()) return Concat(step, ": ", solver_error_);
+  std::string norms;
+  if (!history_.empty())
+    norms = Concat("; last |r| = ", history_.back().residual_norm, ", |du| = ", history_.back().increment_norm);
+  return Concat(step, ": not converged in ", max_iteration_, " iterations", norms, LargestResidualNodes(5));
+}
+
+std::string NewtonRaphsonStrategy::LargestResidualNodes(std::size_t count) const {
+  const Vector& residual = builder_->Residual();
+  std::vector<std::pair<double, const Dof*>> entries;
+  for (const Dof* dof : builder_->GetDofSet())
+    if (!dof->fixed && dof->equation_id >= 0 && dof->equation_id < residual.size())
+      entries.emplace_back(std::abs(residual[dof->equation_id]), dof);
+  // One entry per node: its largest DoF.
+  std::stable_sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::string text;
+  std::vector<IndexType> shown;
+  for (const auto& [value, dof] : entries) {
+    if (shown.size() == count || !(value > 0.0)) break;
+    if (std::find(shown.begin(), shown.end(), dof->node->Id()) != shown.end()) continue;
+    shown.push_back(dof->node->Id());
+    text += Concat(shown.size() == 1 ? "; largest residuals at node " : ", node ", dof->node->Id(), " (",
+                   dof->variable->Name(), " ", residual[dof->equation_id], ")");
+  }
+  return text;
 }
 
 bool NewtonRaphsonStrategy::NewtonIteration(int iteration) {
@@ -100,12 +247,7 @@ void NewtonRaphsonStrategy::Check() const {
 }
 
 void NewtonRaphsonStrategy::ReportNonConvergence() const {
-  if (echo_level_ < 1 || history_.empty()) return;
-  const ProcessInfo& info = model_part_.GetProcessInfo();
-  const IterationRecord& last = history_.back();
-  Logger::Warning(Concat(Name(), ": step ", info.GetValue(STEP), " (time ", info.GetValue(TIME),
-                         ") did not converge in ", max_iteration_, " iterations; last |r| = ", last.residual_norm,
-                         ", |du| = ", last.increment_norm));
+  if (echo_level_ >= 1) Logger::Warning(failure_);
 }
 
 }  // namespace mc

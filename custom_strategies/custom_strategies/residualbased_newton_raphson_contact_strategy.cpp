@@ -55,19 +55,13 @@ ResidualBasedNewtonRaphsonContactStrategy::ResidualBasedNewtonRaphsonContactStra
     bool compute_reactions, bool reform_dofs_at_each_step, bool move_mesh_flag)
     : NewtonRaphsonStrategy(model_part, std::move(scheme), std::move(criteria), std::move(builder_and_solver),
                             max_iteration, compute_reactions, reform_dofs_at_each_step, move_mesh_flag),
-      settings_(settings) {}
+      settings_(settings) {
+  if (settings_.adaptative_strategy) SetStepSplitting({settings_.max_number_splits, settings_.split_factor});
+}
 
 void ResidualBasedNewtonRaphsonContactStrategy::InitializeSolutionStep() {
-  // The iterations of the failed attempt and of the sub-steps all belong to the step's history.
-  std::vector<IterationRecord> earlier = in_sub_step_ ? std::move(history_) : std::vector<IterationRecord>{};
   NewtonRaphsonStrategy::InitializeSolutionStep();
-  history_.insert(history_.begin(), std::make_move_iterator(earlier.begin()), std::make_move_iterator(earlier.end()));
   flips_.clear();
-  failure_.clear();
-  if (!in_sub_step_) {
-    split_level_ = 0;
-    if (settings_.adaptative_strategy) SaveStepStart();
-  }
 }
 
 void ResidualBasedNewtonRaphsonContactStrategy::Predict() {
@@ -132,12 +126,12 @@ bool ResidualBasedNewtonRaphsonContactStrategy::NewtonIteration(int iteration) {
   const bool converged = NewtonRaphsonStrategy::NewtonIteration(iteration);
   last_changes_ = CountFlips(before);
   if (FindContactModelPart(model_part_)) history_.back().active_nodes = CountActive(ContactStates());
-  if (settings_.adaptative_strategy) inverted_element_ = FindInvertedElement();
+  if (splitting_.Enabled()) inverted_element_ = FindInvertedElement();
   return converged && inverted_element_ == 0;
 }
 
 bool ResidualBasedNewtonRaphsonContactStrategy::RunNewtonLoop() {
-  inverted_element_ = settings_.adaptative_strategy ? FindInvertedElement() : 0;
+  inverted_element_ = splitting_.Enabled() ? FindInvertedElement() : 0;
   if (inverted_element_ != 0) return false;
   for (int it = 1; it <= max_iteration_; ++it) {
     if (NewtonIteration(it)) return true;
@@ -147,7 +141,7 @@ bool ResidualBasedNewtonRaphsonContactStrategy::RunNewtonLoop() {
 }
 
 bool ResidualBasedNewtonRaphsonContactStrategy::RunFullNewtonLoop() {
-  inverted_element_ = settings_.adaptative_strategy ? FindInvertedElement() : 0;
+  inverted_element_ = splitting_.Enabled() ? FindInvertedElement() : 0;
   if (inverted_element_ != 0) return false;
   // Semi-smooth Newton can cycle: the set of one iteration makes the next iterate land in another
   // set, which brings it back (a stiff penalty closing a gap: all contact nodes switch on, the
@@ -200,7 +194,7 @@ bool ResidualBasedNewtonRaphsonContactStrategy::RecheckActiveSet() {
   return converged;
 }
 
-bool ResidualBasedNewtonRaphsonContactStrategy::SolveWithActiveSet() {
+bool ResidualBasedNewtonRaphsonContactStrategy::SolveStepAttempt() {
   ProcessInfo& info = model_part_.GetProcessInfo();
   if (model_part_.Is(INTERACTION)) {
     passes_ = 1;
@@ -218,113 +212,21 @@ bool ResidualBasedNewtonRaphsonContactStrategy::SolveWithActiveSet() {
   return false;
 }
 
-bool ResidualBasedNewtonRaphsonContactStrategy::TrySolveWithActiveSet() {
-  solver_error_.clear();
-  if (!settings_.adaptative_strategy) return SolveWithActiveSet();
-  // A diverging iterate can make the system singular: with splitting on, that is one more
-  // reason to split, not the end of the analysis.
-  try {
-    return SolveWithActiveSet();
-  } catch (const SolutionError& e) {
-    solver_error_ = e.what();
-    return false;
-  }
-}
-
-bool ResidualBasedNewtonRaphsonContactStrategy::SolveSolutionStep() {
-  bool converged = TrySolveWithActiveSet();
-  if (!converged && settings_.adaptative_strategy && !in_sub_step_) converged = AdaptiveStep();
-  failure_ = converged ? std::string() : DescribeFailure();
-  if (!converged) Logger::Warning(failure_);
-  return converged;
-}
-
-bool ResidualBasedNewtonRaphsonContactStrategy::AdaptiveStep() {
-  ModelPart& root = model_part_.GetRootModelPart();
-  ProcessInfo& info = root.GetProcessInfo();
-  const double end_time = start_time_;
-  const double delta_time = start_delta_time_;
-  const double begin_time = end_time - delta_time;
-  std::string last_failure = DescribeFailure();
-  if (!callbacks_.initialize_solution_step && echo_level_ >= 1)
-    Logger::Warning(Concat(Name(),
-                           ": no process callbacks were given; boundary conditions and loads are not "
-                           "updated in the sub-steps of the adaptive splitting"));
-  in_sub_step_ = true;
-  for (int level = 1; level <= settings_.max_number_splits; ++level) {
-    const double sub_dt = delta_time / std::pow(settings_.split_factor, level);
-    if (echo_level_ >= 1)
-      Logger::Info(Concat(Name(), ": step ", start_step_, " did not converge (", last_failure,
-                          "); splitting it into sub-steps of ", sub_dt));
-    RestoreStepStart();
-    bool ok = true;
-    double time = begin_time;
-    const double tiny = 1e-9 * sub_dt;
-    while (ok && time < end_time - tiny) {
-      time = std::min(time + sub_dt, end_time);
-      if (end_time - time < tiny) time = end_time;
-      const bool last = time == end_time;
-      root.CloneTimeStep(time);
-      if (callbacks_.initialize_solution_step) callbacks_.initialize_solution_step();
-      InitializeSolutionStep();
-      Predict();
-      ok = TrySolveWithActiveSet();
-      if (ok && !last) {
-        FinalizeSolutionStep();
-        if (callbacks_.finalize_solution_step) callbacks_.finalize_solution_step();
-      }
-      if (!ok) last_failure = DescribeFailure();
-    }
-    if (ok) {
-      in_sub_step_ = false;
-      split_level_ = level;
-      info.SetValue(STEP, start_step_);
-      info.SetValue(DELTA_TIME, delta_time);
-      return true;
-    }
-  }
-  in_sub_step_ = false;
-  info.SetValue(STEP, start_step_);
-  info.SetValue(DELTA_TIME, delta_time);
-  throw SolutionError(Concat(last_failure, "; the adaptive strategy split the step ", settings_.max_number_splits,
-                             " times (smallest sub-step ",
-                             delta_time / std::pow(settings_.split_factor, settings_.max_number_splits),
-                             ") without convergence"));
-}
+void ResidualBasedNewtonRaphsonContactStrategy::ReportNonConvergence() const { Logger::Warning(FailureReport()); }
 
 void ResidualBasedNewtonRaphsonContactStrategy::SaveStepStart() {
-  ModelPart& root = model_part_.GetRootModelPart();
-  const ProcessInfo& info = root.GetProcessInfo();
-  start_time_ = info.GetValue(TIME);
-  start_delta_time_ = info.GetValue(DELTA_TIME);
-  start_step_ = info.GetValue(STEP);
-  start_.clear();
-  start_.reserve(root.NumberOfNodes());
-  for (Node* p_node : root.Nodes()) {
-    Node& node = *p_node;
-    const std::size_t size = node.SolutionStepVariables().Stride() * static_cast<std::size_t>(node.BufferSize());
-    start_.push_back({&node, std::vector<double>(node.StepData(0), node.StepData(0) + size), node.Is(ACTIVE)});
-  }
+  NewtonRaphsonStrategy::SaveStepStart();
+  start_flags_.clear();
+  for (Node* node : model_part_.GetRootModelPart().Nodes())
+    start_flags_.push_back({node, node->Is(ACTIVE), node->Is(SLIP)});
 }
 
 void ResidualBasedNewtonRaphsonContactStrategy::RestoreStepStart() {
-  // The step started after the analysis cloned the time step (step 0 = copy of the converged
-  // state, step k = converged state k-1 steps ago); going back one step shifts the history
-  // forward, so that the sub-steps' CloneTimeStep rebuilds the same buffer.
-  for (NodeStart& start : start_) {
-    Node& node = *start.node;
-    const std::size_t stride = node.SolutionStepVariables().Stride();
-    const int buffer = node.BufferSize();
-    for (int k = 0; k < buffer; ++k) {
-      const int source = std::min(k + 1, buffer - 1);
-      std::copy_n(start.history.begin() + static_cast<std::ptrdiff_t>(source * stride), stride, node.StepData(k));
-    }
-    node.Set(ACTIVE, start.active);
+  for (const auto& [node, active, slip] : start_flags_) {
+    node->Set(ACTIVE, active);
+    node->Set(SLIP, slip);
   }
-  ProcessInfo& info = model_part_.GetRootModelPart().GetProcessInfo();
-  info.SetValue(TIME, start_time_ - start_delta_time_);
-  info.SetValue(STEP, start_step_ - 1);
-  if (move_mesh_) MoveMesh();
+  NewtonRaphsonStrategy::RestoreStepStart();
 }
 
 IndexType ResidualBasedNewtonRaphsonContactStrategy::FindInvertedElement() const {

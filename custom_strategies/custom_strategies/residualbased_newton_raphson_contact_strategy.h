@@ -40,25 +40,14 @@ struct ContactStrategySettings {
 ///    integrate it at the coordinates of the last converged step, and moves the mesh to
 ///    X0 + DISPLACEMENT.
 ///  - With `adaptative_strategy`: a step that does not converge (or inverts an element: the
-///    Jacobian determinant of every solid element is checked after each update) is restarted
-///    from its initial state and marched in DELTA_TIME / split_factor^s sub-steps, s = 1 ..
-///    max_number_splits. Each sub-step clones the time step, runs the processes' initialize
-///    callback, InitializeSolutionStep, Predict and the Newton loop; all but the last also run
-///    FinalizeSolutionStep and the processes' finalize callback (the analysis finalizes the last
-///    one). STEP and DELTA_TIME are restored afterwards. If the last split level fails too, a
-///    SolutionError is thrown.
+///    Jacobian determinant of every solid element is checked after each update) is split as
+///    NewtonRaphsonStrategy's StepSplitting does (split_factor, max_number_splits); the active
+///    and stick / slip sets are restored with the state at the start of the step.
 ///  - A step that does not converge logs (and keeps in FailureReport) why: inverted element,
 ///    the slave nodes whose state keeps switching (per-node flip counts over the step), or the
 ///    last criterion values.
 class ResidualBasedNewtonRaphsonContactStrategy : public NewtonRaphsonStrategy {
  public:
-  /// Callbacks run around the sub-steps of the adaptive splitting (from Python: the
-  /// processes' ExecuteInitializeSolutionStep / ExecuteFinalizeSolutionStep and the output).
-  struct SubStepCallbacks {
-    std::function<void()> initialize_solution_step;
-    std::function<void()> finalize_solution_step;
-  };
-
   /// Its keys of Kratos' contact_settings: adaptative_strategy (false), split_factor (10),
   /// max_number_splits (3), inner_loop_iterations (5).
   static Parameters GetDefaultParameters();
@@ -77,24 +66,28 @@ class ResidualBasedNewtonRaphsonContactStrategy : public NewtonRaphsonStrategy {
   std::string Name() const override { return "newton_raphson_contact_strategy"; }
   void InitializeSolutionStep() override;
   void Predict() override;
-  bool SolveSolutionStep() override;
 
   const ContactStrategySettings& Settings() const noexcept { return settings_; }
   void SetMortarUpdater(std::shared_ptr<MortarUpdater> updater) noexcept { updater_ = std::move(updater); }
-  void SetSubStepCallbacks(SubStepCallbacks callbacks) { callbacks_ = std::move(callbacks); }
 
   /// How many times each slave node changed state during the current (last) step.
   const std::map<IndexType, int>& ActiveSetFlipCounts() const noexcept { return flips_; }
-  /// Why the last step failed ("" if it converged).
-  const std::string& FailureReport() const noexcept { return failure_; }
   /// Active-set passes of the last step (1 in full semi-smooth Newton).
   int InnerLoopIterations() const noexcept { return passes_; }
-  /// Split level that made the last step converge (0: no split needed).
-  int SplitLevelUsed() const noexcept { return split_level_; }
 
  protected:
   /// Base iteration, plus the active-set flip bookkeeping and the inverted-element guard.
   bool NewtonIteration(int iteration) override;
+  /// Full or simplified semi-smooth Newton, per the INTERACTION flag.
+  bool SolveStepAttempt() override;
+  /// Why the step failed: inverted element, the slave nodes whose state keeps switching (per-node
+  /// flip counts over the step), or the last criterion values and the largest residuals.
+  std::string DescribeFailure() const override;
+  /// The base state plus the ACTIVE flag of every node.
+  void SaveStepStart() override;
+  void RestoreStepStart() override;
+  /// Always logged: a contact step that fails is worth a line even when silent.
+  void ReportNonConvergence() const override;
 
  private:
   /// Newton loop of one pass; false when it did not converge or an element got inverted.
@@ -103,12 +96,6 @@ class ResidualBasedNewtonRaphsonContactStrategy : public NewtonRaphsonStrategy {
   bool RunFullNewtonLoop();
   /// Active-set check at the current (converged) state; true when no node changed.
   bool RecheckActiveSet();
-  /// Full or simplified semi-smooth Newton, per the INTERACTION flag.
-  bool SolveWithActiveSet();
-  /// SolveWithActiveSet; with the adaptive strategy a SolutionError (singular system of a
-  /// diverging iterate) counts as non-convergence.
-  bool TrySolveWithActiveSet();
-  bool AdaptiveStep();
   /// Contact state of every slave node of the contact part, in container order: bit 1 if
   /// ACTIVE, bit 2 if SLIP (the stick / slip set belongs to the state of a frictional node).
   std::vector<char> ContactStates() const;
@@ -116,34 +103,22 @@ class ResidualBasedNewtonRaphsonContactStrategy : public NewtonRaphsonStrategy {
   void SetContactStates(const std::vector<char>& states);
   /// Adds one flip to every slave node whose ACTIVE flag differs from `before`; returns how many.
   std::size_t CountFlips(const std::vector<char>& before);
-  void SaveStepStart();
-  void RestoreStepStart();
   /// Id of an element with a negative Jacobian determinant at an integration point, or 0.
   IndexType FindInvertedElement() const;
-  std::string DescribeFailure() const;
 
   ContactStrategySettings settings_;
   std::shared_ptr<MortarUpdater> updater_;
-  SubStepCallbacks callbacks_;
   std::map<IndexType, int> flips_;
   std::size_t last_changes_ = 0;
   IndexType inverted_element_ = 0;
-  std::string failure_;
-  std::string solver_error_;
   int passes_ = 0;
-  int split_level_ = 0;
-  bool in_sub_step_ = false;
-
-  // State at the start of the step, for the adaptive splitting.
-  struct NodeStart {
+  /// ACTIVE and SLIP flags of every node of the root model part at the start of the step.
+  struct StartFlags {
     Node* node;
-    std::vector<double> history;
     bool active;
+    bool slip;
   };
-  std::vector<NodeStart> start_;
-  double start_time_ = 0.0;
-  double start_delta_time_ = 0.0;
-  int start_step_ = 0;
+  std::vector<StartFlags> start_flags_;
 };
 
 }  // namespace mc

@@ -287,6 +287,11 @@ class VtkOutputProcess(OutputProcess):
             writer.close()
         self.unset.finish()
 
+    def ExecuteAfterFailure(self) -> None:
+        # The XDMF/HDF5 pair of the converged steps moves into place; VTU and PVD already are.
+        for writer in self.writers:
+            writer.close()
+
     def OutputFiles(self) -> list[str]:
         return [path for writer in self.writers for path in writer.written()]
 

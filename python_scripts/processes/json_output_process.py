@@ -121,3 +121,6 @@ class JsonOutputProcess(JsonResultsProcess):
     def ExecuteFinalize(self) -> None:
         self.write()
         super().ExecuteFinalize()
+
+    def ExecuteAfterFailure(self) -> None:
+        self.write()

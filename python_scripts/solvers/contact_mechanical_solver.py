@@ -71,7 +71,6 @@ class ContactMechanicalSolver(MechanicalSolver):
         # The DoF set follows the contact pairs, which change from step to step.
         settings["clear_storage"].SetBool(True)
         settings["reform_dofs_at_each_step"].SetBool(True)
-        self.sub_step_callbacks = (None, None)
         super().__init__(model, settings, **kwargs)
         without_effect = dict(KEYS_WITHOUT_EFFECT)
         if self.formulation.multiplier_blocks != 3:
@@ -98,16 +97,15 @@ class ContactMechanicalSolver(MechanicalSolver):
         for dof, reaction in self.formulation.dofs:
             _core.VariableUtils.AddDof(self.main_model_part, _core.GetVariable(dof), _core.GetVariable(reaction))
 
-    def set_sub_step_callbacks(self, initialize, finalize) -> None:
-        """The processes' per-step hooks, re-run in the sub-steps of the adaptive splitting."""
-        self.sub_step_callbacks = (initialize, finalize)
-
     def _create_strategy(self):
         s = self.settings
         part = self.GetComputingModelPart()
         if self.explicit:
             raise _core.NotImplementedFeatureError(
                 f"{s.Where()}: explicit contact solvers are not implemented yet")
+        if s["step_splitting"].size() > 0:
+            raise _core.InputError(f"{s.Where()}.step_splitting: the contact solvers split steps with Kratos' "
+                                   "contact_settings keys adaptative_strategy, split_factor and max_number_splits")
         updater = _core.ContactMortarUpdater()
         self.mortar_updater = updater  # its timings are read by the benchmarks
         criteria = create_contact_convergence_criteria(s, self._formulation_of_run(), self.echo_level, updater)

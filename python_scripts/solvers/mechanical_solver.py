@@ -48,6 +48,8 @@ class MechanicalSolver:
         self.pending_fixities = None
         self.checkpoint = None  # the restart checkpoint to resume from (input_type "rest")
         self.mesh_record = None  # the mesh file and its import settings, for checkpoints
+        self.mesh_path = None  # the mesh file read, named in errors about its entities
+        self.sub_step_callbacks = (None, None)
         self.convergence_history = ConvergenceHistory.from_settings(settings["convergence_history"])
         self.AddVariables()
 
@@ -147,6 +149,7 @@ class MechanicalSolver:
         else:
             path = self._import_mesh(imports)
             self.mesh_record = mesh_record(imports, path) if path is not None else None
+        self.mesh_path = path
         self._import_materials()
 
     def _open_checkpoint(self, imports) -> Checkpoint:
@@ -264,6 +267,10 @@ class MechanicalSolver:
         return resolve_model_part(self.model, f"{self.main_model_part.Name}.{name}") if name else self.main_model_part
 
     # -- strategy -----------------------------------------------------------------------------
+    def set_sub_step_callbacks(self, initialize, finalize) -> None:
+        """The processes' per-step hooks, re-run in the sub-steps of a split step."""
+        self.sub_step_callbacks = (initialize, finalize)
+
     def Initialize(self) -> None:
         self.strategy = self._create_strategy()
         self.strategy.Initialize()
@@ -292,9 +299,15 @@ class MechanicalSolver:
                       **common)
         if s["solving_strategy_settings"]["type"].GetString() == "line_search":
             newton.pop("use_old_stiffness_in_first_iteration")
-            return _core.LineSearchStrategy(part, scheme, criteria, builder, settings=self._line_search_settings(),
-                                            **newton)
-        return _core.NewtonRaphsonStrategy(part, scheme, criteria, builder, **newton)
+            strategy = _core.LineSearchStrategy(part, scheme, criteria, builder,
+                                                settings=self._line_search_settings(), **newton)
+        else:
+            strategy = _core.NewtonRaphsonStrategy(part, scheme, criteria, builder, **newton)
+        # mortarcontact's cut-back (Kratos' structural strategies have none): the step restarts
+        # as split_factor^s sub-steps, with the processes' hooks run around each.
+        strategy.SetStepSplitting(s["step_splitting"])
+        strategy.SetSubStepCallbacks(*self.sub_step_callbacks)
+        return strategy
 
     def _create_scheme(self, part):
         s = self.settings
@@ -387,7 +400,15 @@ class MechanicalSolver:
         self.strategy.FinalizeSolutionStep()
 
     def Check(self) -> None:
-        self.strategy.Check()
+        try:
+            self.strategy.Check()
+        except _core.InputError as error:
+            # The elements and conditions name themselves ("element 7 (...) is inverted ..."); the
+            # file they were read from is only known here.
+            message = str(error)
+            if self.mesh_path and message.startswith(("element ", "condition ")):
+                raise _core.InputError(f"{self.mesh_path}: {message}") from None
+            raise
 
     def Finalize(self) -> None:
         if self.convergence_history:

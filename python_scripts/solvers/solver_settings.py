@@ -76,7 +76,8 @@ STRUCTURAL_DEFAULTS = """{
     "fraction_delta_time": 0.333333333333333333333333333333333333,
     "contact_settings": {},
     "mpc_contact_settings": {},
-    "convergence_history": {}
+    "convergence_history": {},
+    "step_splitting": {}
 }"""
 
 MPC_CONTACT_SETTINGS_DEFAULTS = """{

@@ -169,7 +169,8 @@ def _(case):
     case.mdpa = case.mdpa[:begin + 3]
 
 
-@bad("mdpa_missing_end_elements", "square", 2, "square.mdpa:{line}", "got 'Begin'")
+@bad("mdpa_missing_end_elements", "square", 2, "square.mdpa:{line}",
+     "expected 'End Elements' to close the block opened at line", "got 'Begin")
 def _(case):
     end = case.line("End Elements")
     case.delete(end)
@@ -287,12 +288,12 @@ def _(case):
     case.insert(case.line("End Conditions"), "2 0 10 11")
 
 
-@bad("mdpa_inverted_element", "square", 2, "element 1", "inverted")
+@bad("mdpa_inverted_element", "square", 2, "square.mdpa: element 1", "inverted")
 def _(case):
     case.set_line(case.element_line(1), "1 0 1 2 5 4")  # clockwise (structured_quads orders (i, j) as 1, 4, 5, 2)
 
 
-@bad("mdpa_zero_area_element", "square", 2, "element 1", "det J = 0")
+@bad("mdpa_zero_area_element", "square", 2, "square.mdpa: element 1", "det J = 0")
 def _(case):
     for node in (4, 5):  # nodes 4 (0.5, 0) and 5 (0.5, 0.5) moved onto the line of 1 (0, 0) and 2 (0, 0.5)
         line = case.node_line(node)
@@ -737,15 +738,20 @@ def test_parts_far_apart_warn_and_run(tmp_path):
     assert "search_factor" in result.stdout + result.stderr
 
 
-def test_whole_skin_interface_is_not_taken_for_an_overlap(tmp_path):
+@pytest.mark.parametrize("slaves", [["lower"], []], ids=["named_slave", "automatic_roles"])
+def test_whole_skin_interface_is_not_taken_for_an_overlap(tmp_path, slaves):
     """An empty contact_model_part takes the whole skin: a slave node is then behind the far
     faces of the master block, but in front of the nearest one, which is no overlap. Nor are the
     far faces paired with the slave faces that look away from them (the bottom face was, and its
-    nodes' multipliers had no stiffness: a singular system). The run converges and the contact
+    nodes' multipliers had no stiffness: a singular system). With automatic roles (an empty
+    assume_master_slave) every face is slave and master: the bottom face of a block one element
+    thick was paired with its own top face, one face size behind it (singular system again); a
+    face of the slave's own body behind it is no partner. The run converges and the contact
     carries the push. (The answer is not the named interface's: the corner nodes' normals now
     average the side faces too. Kratos 10.4 stops in the search initialisation on this case.)"""
     def whole_skin(case):
         case.contact["contact_model_part"] = {"0": []}
+        case.contact["assume_master_slave"] = {"0": slaves}
         output = case.params["processes"]["json_output_process"][0]["Parameters"]
         output.update(output_variables=["DISPLACEMENT_Y"], time_frequency=0.0)
     result = run_cli("run", _mutated_contact_case(tmp_path, 1.001, whole_skin), cwd=tmp_path)

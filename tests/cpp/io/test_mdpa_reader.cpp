@@ -11,6 +11,7 @@
 
 #include "core/io/mdpa_reader.h"
 #include "core/model/model.h"
+#include "core/utilities/logger.h"
 #include "core/variables/kernel_variables.h"
 #include "io_test_utilities.h"
 
@@ -357,6 +358,29 @@ std::string Mesh(const std::string& tail) {
   return "Begin Nodes\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\nEnd Nodes\n" + tail;
 }
 
+// Kratos 10.4 rejects an element whose properties id no block defines; we warn once per id, naming
+// the file, the line and the entity, and go on (materials.json usually assigns the properties).
+TEST(MdpaReader, UndefinedPropertiesIdIsWarnedOncePerId) {
+  RegisterExampleEntities();
+  std::vector<std::string> warnings;
+  Logger::SetSink([&](Logger::Level level, const std::string& message) {
+    if (level == Logger::Level::Warning) warnings.push_back(message);
+  });
+  Model model;
+  ModelPart& root = model.CreateModelPart("Structure");
+  MdpaReader("props.mdpa")
+      .ReadModelPartFromText("Begin Properties 1\nEnd Properties\n" +
+                                 Mesh("Begin Elements SmallDisplacementElement2D4N\n1 1 1 2 3 4\n2 5 1 2 3 4\n"
+                                      "3 5 1 2 3 4\n4 1 1 2 3 4\nEnd Elements\n"),
+                             root);
+  Logger::ResetSink();
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0],
+            "props.mdpa:11: element 2 refers to properties 5, which no 'Begin Properties 5' block defines; empty "
+            "properties are created (Kratos 10.4 rejects this file)");
+  EXPECT_EQ(root.GetElement(3).pGetProperties()->Id(), 5u);
+}
+
 TEST(MdpaReader, MalformedInputNamesFileLineAndText) {
   RegisterExampleEntities();
   const std::vector<BadCase> cases = {
@@ -366,6 +390,10 @@ TEST(MdpaReader, MalformedInputNamesFileLineAndText) {
       {"text outside blocks", "Nodes\n", {"bad.mdpa:1:", "expected 'Begin <block>'", "'Nodes'"}},
       {"missing End", "\nBegin Nodes\n1 0 0 0\n", {"bad.mdpa:2:", "End Nodes", "'Begin Nodes'"}},
       {"wrong End", "Begin Nodes\n1 0 0 0\nEnd Elements\n", {"bad.mdpa:3:", "'End Elements'", "End Nodes"}},
+      {"End missing before the next block",
+       Mesh("Begin Elements SmallDisplacementElement2D4N\n1 0 1 2 3 4\nBegin SubModelPart P\nEnd SubModelPart\n"),
+       {"bad.mdpa:9:", "expected 'End Elements' to close the block opened at line 7",
+        "('Begin Elements SmallDisplacementElement2D4N')", "got 'Begin SubModelPart P'"}},
       {"missing node",
        Mesh("Begin Elements SmallDisplacementElement2D4N\n12 0 1 2 3 99\nEnd Elements\n"),
        {"bad.mdpa:8:", "element 12 refers to node 99, which does not exist", "'12 0 1 2 3 99'"}},

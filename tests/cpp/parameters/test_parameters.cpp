@@ -160,7 +160,7 @@ TEST(Parameters, EveryGetterRejectsTheWrongType) {
   EXPECT_EQ(test::ErrorMessageOf([&] { s["names"]["x"]; }),
             "ProjectParameters.json: solver_settings.names: expected an object, found array [\"A\",\"B\"]");
   EXPECT_EQ(test::ErrorMessageOf([] { Parameters("{\"big\": 3000000000}")["big"].GetInt(); }),
-            "big: expected an integer, found integer 3000000000");
+            "big: expected an integer from -2147483648 to 2147483647, found integer 3000000000");
 }
 
 TEST(Parameters, ParseErrorGivesLineAndColumn) {
@@ -170,6 +170,30 @@ TEST(Parameters, ParseErrorGivesLineAndColumn) {
   EXPECT_NE(message.find("\"b\": [1, 2,,]"), std::string::npos) << message;
   const std::string missing_colon = test::ErrorMessageOf([] { Parameters("{\r\n\"a\" 1\r\n}", "x.json"); });
   EXPECT_NE(missing_colon.find("x.json: line 2, column 5:"), std::string::npos) << missing_colon;
+}
+
+// Found by fuzzing (issue 16): wrong-type errors on large documents serialized all of them to quote
+// 60 characters (quadratic over a document's sub-views); the quote is the same, built from a prefix.
+TEST(Parameters, WrongTypeOnALargeDocumentQuotesItsBeginning) {
+  std::string text = "{\"a\": [";
+  for (int i = 0; i < 200000; ++i) text += std::to_string(i) + ",";
+  text += "0], \"b\": {\"c\": \"x\"}}";
+  const Parameters root(text);
+  const std::string dumped = root.Json().dump();
+  const std::string message = test::ErrorMessageOf([&] { root.GetInt(); });
+  EXPECT_EQ(message, "settings: expected an integer, found object " + dumped.substr(0, 60) + "...");
+  EXPECT_EQ(test::ErrorMessageOf([&] { root["b"].GetInt(); }), "b: expected an integer, found object {\"c\":\"x\"}");
+}
+
+// Found by fuzzing (issue 16): nlohmann reports a number past the range of a double as
+// out_of_range, not as a parse error; it escaped as an uncaught exception.
+TEST(Parameters, NumberOutOfRangeIsAnInputErrorWithLineAndColumn) {
+  const std::string message =
+      test::ErrorMessageOf([] { Parameters("{\n  \"solver_settings\": {\"tolerance\": 1e400}\n}", "case.json"); });
+  EXPECT_NE(
+      message.find("case.json: line 2, column 36: invalid JSON: the number 1e400 is outside the range of a double"),
+      std::string::npos)
+      << message;
 }
 
 TEST(Parameters, FromFileWithBomAndCrlf) {
