@@ -21,7 +21,16 @@ void AddLinearSolversToPython(py::module_& m) {
             return x;
           },
           py::arg("A"), py::arg("b"), "Solves A x = b for a scipy.sparse matrix A (converted to CSC).")
-      .def("IterationsNumber", &LinearSolver::IterationsNumber, "Iterations of the last solve (1 for direct solvers).");
+      .def("IterationsNumber", &LinearSolver::IterationsNumber, "Iterations of the last solve (1 for direct solvers).")
+      .def(
+          "Counters",
+          [](const LinearSolver& solver) {
+            const LinearSolver::WorkCounters c = solver.Counters();
+            return py::dict(py::arg("factorizations") = c.factorizations, py::arg("krylov_solves") = c.krylov_solves,
+                            py::arg("krylov_iterations") = c.krylov_iterations, py::arg("fallbacks") = c.fallbacks);
+          },
+          "Work done so far: numeric factorizations, Krylov solves with kept factors, their iterations, fallbacks to "
+          "a fresh factorization.");
   m.def(
       "CreateLinearSolver",
       [](const Parameters& settings) { return std::shared_ptr<LinearSolver>(CreateLinearSolver(settings)); },

@@ -93,6 +93,15 @@ void AddSolvingToPython(py::module_& m) {
       .def("SystemSize", &BuilderAndSolver::SystemSize, "Number of unknowns of the linear system solved.")
       .def("GetTimings", &BuilderAndSolver::GetTimings, py::return_value_policy::copy, "Its BuilderTimings so far.")
       .def(
+          "GetLinearSolverCounters",
+          [](const BuilderAndSolver& b) {
+            LinearSolver::WorkCounters c;
+            if (b.GetLinearSolver() != nullptr) c = b.GetLinearSolver()->Counters();
+            return py::dict(py::arg("factorizations") = c.factorizations, py::arg("krylov_solves") = c.krylov_solves,
+                            py::arg("krylov_iterations") = c.krylov_iterations, py::arg("fallbacks") = c.fallbacks);
+          },
+          "Work of its linear solver so far (LinearSolver.Counters).")
+      .def(
           "SystemMatrixNonZeros", [](const BuilderAndSolver& b) { return b.SystemMatrix().nonZeros(); },
           "Non-zeros of the last system matrix.")
       .def(

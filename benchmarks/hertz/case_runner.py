@@ -204,6 +204,7 @@ def run_mortarcontact(parameters_path: str, dim: int, record: dict, linear_solve
     for _step, t, iterations, converged, seconds in analysis.step_log:
         record["steps"].append({"time": t, "iterations": iterations, "converged": converged, "seconds": seconds})
     record["phases"] = _mortarcontact_phases(analysis, record["analysis_seconds"])
+    record["linear_solver_counters"] = analysis.solver.strategy.GetBuilderAndSolver().GetLinearSolverCounters()
     searches = [s for p in analysis.processes for s in getattr(p, "searches", [])]
     record["contact_pairs"] = sum(s.ComputingPart().NumberOfConditions() for s in searches)
     record["searches"] = sum(s.NumberOfSearches() for s in searches)

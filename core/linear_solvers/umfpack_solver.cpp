@@ -96,10 +96,12 @@ void UmfpackSolver::Factorize(const SparseMatrix& M) {
   }
 }
 
-void UmfpackSolver::Substitute(const SparseMatrix& M, Vector& x, const Vector& b) {
-  x.resize(M.cols());
-  const auto solve_status = umfpack_dl_solve(UMFPACK_A, outer_.data(), inner_.data(), M.valuePtr(), x.data(), b.data(),
-                                             numeric_, control_, nullptr);
+// Without iterative refinement (UMFPACK_IRSTEP 0) umfpack_dl_solve does not read the matrix, so a
+// substitution needs only the factors: they serve as a preconditioner after A has changed.
+void UmfpackSolver::Substitute(Vector& x, const Vector& b) {
+  x.resize(b.size());
+  const auto solve_status =
+      umfpack_dl_solve(UMFPACK_A, nullptr, nullptr, nullptr, x.data(), b.data(), numeric_, control_, nullptr);
   if (solve_status != UMFPACK_OK)
     throw SolutionError(Concat("UMFPACK solve failed: ", UmfpackStatusText(solve_status)));
 }

@@ -30,7 +30,7 @@ class UmfpackSolver : public DirectSolver {
 
   void Analyze(const SparseMatrix& A) override;
   void Factorize(const SparseMatrix& A) override;
-  void Substitute(const SparseMatrix& A, Vector& x, const Vector& b) override;
+  void Substitute(Vector& x, const Vector& b) override;
   void Release() override;
   long SmallestPivotColumn() const;
   void FreeNumeric();

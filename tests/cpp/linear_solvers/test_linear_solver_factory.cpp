@@ -7,8 +7,10 @@
 #include <utility>
 #include <vector>
 
+#include "core/linear_solvers/factorization_reuse_solver.h"
 #include "core/linear_solvers/fallback_solver.h"
 #include "core/linear_solvers/iterative_solver.h"
+#include "core/linear_solvers/klu_solver.h"
 #include "core/linear_solvers/linear_solver.h"
 #include "core/linear_solvers/scaling_solver.h"
 #include "core/linear_solvers/size_selecting_solver.h"
@@ -101,6 +103,18 @@ TEST(LinearSolverFactory, MapsNamesToOurSolvers) {
   EXPECT_EQ(Create("{}")->Name(), "umfpack");
   EXPECT_TRUE(Create("{}")->IsDirect());
   EXPECT_NE(dynamic_cast<FallbackSolver*>(Create(R"({"solver_type": "cholmod"})").get()), nullptr);
+}
+
+TEST(LinearSolverFactory, SparseLuKeepsItsFactorizationUnlessToldNot) {
+  for (const char* name : {"", "sparse_lu", "skyline_lu_factorization", "umfpack", "klu"}) {
+    const auto solver = Create(std::string(R"({"solver_type": ")") + name + "\"}");
+    const auto* reuse = dynamic_cast<const FactorizationReuseSolver*>(solver.get());
+    ASSERT_NE(reuse, nullptr) << name;
+    EXPECT_EQ(reuse->Name(), std::string(name) == "klu" ? "klu" : "umfpack");
+  }
+  EXPECT_NE(dynamic_cast<UmfpackSolver*>(Create(R"({"solver_type": "sparse_lu", "reuse_factorization": false})").get()),
+            nullptr);
+  EXPECT_NE(dynamic_cast<KluSolver*>(Create(R"({"solver_type": "klu", "reuse_factorization": false})").get()), nullptr);
 }
 
 TEST(LinearSolverFactory, ReadsIterativeSettingsAndPreconditionerNames) {
