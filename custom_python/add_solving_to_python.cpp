@@ -101,6 +101,8 @@ void AddSolvingToPython(py::module_& m) {
                             py::arg("krylov_iterations") = c.krylov_iterations, py::arg("fallbacks") = c.fallbacks);
           },
           "Work of its linear solver so far (LinearSolver.Counters).")
+      .def("ResetLinearSolver", &BuilderAndSolver::ResetLinearSolver,
+           "Frees the linear solver's factorizations and analyses: the next solve starts as in a new run.")
       .def(
           "SystemMatrixNonZeros", [](const BuilderAndSolver& b) { return b.SystemMatrix().nonZeros(); },
           "Non-zeros of the last system matrix.")
