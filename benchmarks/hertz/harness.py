@@ -122,6 +122,8 @@ def summarize(records: list[dict], hertz: dict) -> dict:
     return {
         "status": "ok", "runs": len(ok),
         "analysis_seconds": statistics.median(r["analysis_seconds"] for r in ok),
+        "analysis_cpu_seconds": statistics.median(r.get("analysis_cpu_seconds", math.nan) for r in ok),
+        "linear_solver_counters": last.get("linear_solver_counters"),
         "setup_seconds": statistics.median(r["setup_seconds"] for r in ok),
         "wall_seconds": statistics.median(r["wall_seconds"] for r in ok),
         "peak_rss_mb": statistics.median(r["peak_rss_mb"] for r in ok),
