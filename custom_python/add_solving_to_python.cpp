@@ -107,6 +107,9 @@ void AddSolvingToPython(py::module_& m) {
           "SystemMatrixNonZeros", [](const BuilderAndSolver& b) { return b.SystemMatrix().nonZeros(); },
           "Non-zeros of the last system matrix.")
       .def(
+          "GetSystemMatrix", [](const BuilderAndSolver& b) { return SparseMatrix(b.SystemMatrix()); },
+          "A copy of the last system matrix (scipy.sparse CSC), e.g. to benchmark linear solvers on it.")
+      .def(
           "AddConstraint",
           [](BuilderAndSolver& b, std::shared_ptr<MasterSlaveConstraint> c) { b.AddConstraint(std::move(c)); },
           py::arg("constraint"),

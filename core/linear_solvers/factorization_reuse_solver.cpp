@@ -52,7 +52,6 @@ void FactorizationReuseSolver::Clear() {
   basis_.clear();
   basis_.shrink_to_fit();
   factorized_ = SparseMatrix();
-  change_ = SparseMatrix();
 }
 
 LinearSolver::WorkCounters FactorizationReuseSolver::Counters() const {
@@ -74,10 +73,30 @@ void RowNorms(const SparseMatrix& M, Vector& norms) {
 
 }  // namespace
 
+// Row norms of A - F by merging the two columns (row indices sorted in both), without forming
+// the difference: a pattern that changed is fine.
 long FactorizationReuseSolver::ChangedRows(const SparseMatrix& A) {
-  change_ = A - factorized_;
-  RowNorms(change_, changed_row_norms_);
-  return (changed_row_norms_.array() > options_.changed_row_fraction * factorized_row_norms_.array()).count();
+  changed_row_norms_.setZero(A.rows());
+  for (Eigen::Index j = 0; j < A.outerSize(); ++j) {
+    SparseMatrix::InnerIterator a(A, j), f(factorized_, j);
+    while (a || f) {
+      double difference;
+      Eigen::Index row;
+      if (a && (!f || a.row() < f.row())) {
+        row = a.row(), difference = a.value();
+        ++a;
+      } else if (!a || f.row() < a.row()) {
+        row = f.row(), difference = -f.value();
+        ++f;
+      } else {
+        row = a.row(), difference = a.value() - f.value();
+        ++a, ++f;
+      }
+      changed_row_norms_[row] += difference * difference;
+    }
+  }
+  const double fraction2 = options_.changed_row_fraction * options_.changed_row_fraction;
+  return (changed_row_norms_.array() > fraction2 * factorized_row_norms_.array().square()).count();
 }
 
 void FactorizationReuseSolver::SolveDirect(const SparseMatrix& A, Vector& x, const Vector& b) {

@@ -97,8 +97,7 @@ class FactorizationReuseSolver : public LinearSolver {
 
   SparseMatrix factorized_;  ///< the matrix of the kept factors
   Vector factorized_row_norms_;
-  SparseMatrix change_;
-  Vector changed_row_norms_;
+  Vector changed_row_norms_;  ///< squared norms of the rows of A - F
 
   // GMRES work space, kept between solves (no allocation once the basis has grown).
   std::vector<Vector> basis_;

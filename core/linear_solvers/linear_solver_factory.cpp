@@ -289,8 +289,14 @@ std::unique_ptr<LinearSolver> CreateLinearSolver(const Parameters& user_settings
                             DidYouMean(given, ValidSolverNames())));
   }
 
+  const Backend backend = found->second;
+  if (backend != Backend::kUmfpack && backend != Backend::kKlu && backend != Backend::kAmgcl &&
+      backend != Backend::kScaling)
+    NoEffectWarnings::IfGiven(user_settings, defaults, "reuse_factorization",
+                              "only the sparse LU solvers (umfpack, klu and the names that map to them) keep a "
+                              "factorization between solves");
   std::unique_ptr<LinearSolver> solver;
-  switch (found->second) {
+  switch (backend) {
     case Backend::kUmfpack: solver = CreateSparseLu(settings, std::make_unique<UmfpackSolver>()); break;
     case Backend::kKlu: solver = CreateSparseLu(settings, std::make_unique<KluSolver>()); break;
     case Backend::kCholmod:

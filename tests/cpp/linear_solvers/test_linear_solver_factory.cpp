@@ -15,7 +15,9 @@
 #include "core/linear_solvers/scaling_solver.h"
 #include "core/linear_solvers/size_selecting_solver.h"
 #include "core/linear_solvers/umfpack_solver.h"
+#include "core/parameters/no_effect_warnings.h"
 #include "core/parameters/parameters.h"
+#include "core/utilities/logger.h"
 #include "test_matrices.h"
 #include "tests/cpp/common/error_message.h"
 
@@ -115,6 +117,18 @@ TEST(LinearSolverFactory, SparseLuKeepsItsFactorizationUnlessToldNot) {
   EXPECT_NE(dynamic_cast<UmfpackSolver*>(Create(R"({"solver_type": "sparse_lu", "reuse_factorization": false})").get()),
             nullptr);
   EXPECT_NE(dynamic_cast<KluSolver*>(Create(R"({"solver_type": "klu", "reuse_factorization": false})").get()), nullptr);
+  // Other solvers keep no factorization: the key warns that it has no effect there.
+  std::vector<std::string> warnings;
+  Logger::SetSink([&warnings](Logger::Level level, const std::string& message) {
+    if (level == Logger::Level::Warning) warnings.push_back(message);
+  });
+  NoEffectWarnings::Reset();
+  Create(R"({"solver_type": "cg", "reuse_factorization": false})");
+  Create(R"({"solver_type": "umfpack", "reuse_factorization": false})");
+  Logger::ResetSink();
+  NoEffectWarnings::Reset();
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("'reuse_factorization' = false"), std::string::npos) << warnings[0];
 }
 
 TEST(LinearSolverFactory, ReadsIterativeSettingsAndPreconditionerNames) {
