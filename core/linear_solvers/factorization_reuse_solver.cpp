@@ -17,8 +17,10 @@ constexpr double kMaxTrueResidual = 1e-6;
 FactorizationReuseSolver::FactorizationReuseSolver(std::unique_ptr<DirectSolver> direct, const Options& options)
     : direct_(std::move(direct)), options_(options) {
   if (!direct_) throw Error("FactorizationReuseSolver: no direct solver given");
-  if (!(options_.tolerance > 0.0) || options_.max_iterations < 1 || !(options_.changed_row_fraction > 0.0))
-    throw Error(Concat("FactorizationReuseSolver: invalid options (tolerance ", options_.tolerance, ", max_iterations ",
+  if (!(options_.tolerance > 0.0) || !(options_.budget_fraction > 0.0) || options_.min_iterations < 1 ||
+      options_.max_iterations < options_.min_iterations || !(options_.changed_row_fraction > 0.0))
+    throw Error(Concat("FactorizationReuseSolver: invalid options (tolerance ", options_.tolerance,
+                       ", budget_fraction ", options_.budget_fraction, ", iterations ", options_.min_iterations, " to ",
                        options_.max_iterations, ", changed_row_fraction ", options_.changed_row_fraction, ")"));
 }
 
@@ -29,17 +31,21 @@ void FactorizationReuseSolver::Initialize(const SparseMatrix& A) {
 
 void FactorizationReuseSolver::Solve(const SparseMatrix& A, Vector& x, const Vector& b) {
   last_reused_ = false;
-  if (refactorize_ || !direct_->HasFactors() || direct_->FactorsSize() != A.rows() ||
-      ChangedRows(A) >= options_.max_iterations) {
+  if (refactorize_ || !direct_->HasFactors() || direct_->FactorsSize() != A.rows()) {
     SolveDirect(A, x, b);
     return;
   }
-  const bool converged = SolveWithKrylov(A, x, b, options_.max_iterations);
+  const int budget = Budget();
+  if (ChangedRows(A) >= budget) {
+    SolveDirect(A, x, b);
+    return;
+  }
+  const bool converged = SolveWithKrylov(A, x, b, budget);
   krylov_iterations_ += last_iterations_;
   if (converged) {
     ++krylov_solves_;
     last_reused_ = true;
-    refactorize_ = 2 * last_iterations_ > options_.max_iterations;
+    refactorize_ = 2 * last_iterations_ > budget;
     return;
   }
   ++fallbacks_;
@@ -59,6 +65,12 @@ LinearSolver::WorkCounters FactorizationReuseSolver::Counters() const {
           .krylov_solves = krylov_solves_,
           .krylov_iterations = krylov_iterations_,
           .fallbacks = fallbacks_};
+}
+
+int FactorizationReuseSolver::Budget() const {
+  const double iterations = options_.budget_fraction * direct_->FactorizationCostInSubstitutions();
+  return std::clamp(std::isfinite(iterations) ? static_cast<int>(iterations) : 0, options_.min_iterations,
+                    options_.max_iterations);
 }
 
 namespace {

@@ -26,7 +26,7 @@ namespace mc {
 ///  - else GMRES, left-preconditioned by the factors, from x = 0. It stops when the
 ///    preconditioned residual |F^-1 (b - A x)|, which estimates the error of x since F ~ A, is
 ///    below `tolerance` times |F^-1 b| (~ |x|): the answer is the direct one to that relative
-///    accuracy. A solve that needed more than half of max_iterations asks for a fresh
+///    accuracy. A solve that needed more than half of its budget asks for a fresh
 ///    factorization at the next solve;
 ///  - a Krylov solve that stalls (its convergence rate cannot meet the tolerance within the
 ///    budget), breaks down or runs out of budget falls back to a fresh factorization of A, and
@@ -37,14 +37,16 @@ class FactorizationReuseSolver : public LinearSolver {
   struct Options {
     /// Relative size of the preconditioned residual that ends the Krylov solve.
     double tolerance = 1.0e-12;
-    /// Krylov iterations allowed per solve. One substitution costs 1/50 of a factorization on the
-    /// 2D and 3D contact benchmarks (UMFPACK, 7k-15k equations, measured): a solve that would need
-    /// more than half a factorization's worth is not worth trying.
-    int max_iterations = 25;
+    /// The iteration budget of a Krylov solve: this share of the cost of a factorization in
+    /// substitutions (DirectSolver::FactorizationCostInSubstitutions: about 15 for the 2D
+    /// contact systems, 40 for the 3D ones), within [min_iterations, max_iterations].
+    double budget_fraction = 0.75;
+    int min_iterations = 4;
+    int max_iterations = 40;
     /// A row of A whose change since the factorized matrix exceeds this fraction of its norm
     /// counts as changed. GMRES needs about one iteration per changed row (a rank-one change
     /// each; measured on the Hertz systems: 2 to 67 changed rows, 2 to 55 iterations), so when
-    /// they are at least max_iterations the solve refactorizes without trying.
+    /// they are at least the budget the solve refactorizes without trying.
     double changed_row_fraction = 0.1;
   };
 
@@ -65,6 +67,8 @@ class FactorizationReuseSolver : public LinearSolver {
 
   WorkCounters Counters() const override;
   const DirectSolver& Direct() const noexcept { return *direct_; }
+  /// Iteration budget of a Krylov solve with the kept factors.
+  int Budget() const;
   const Options& GetOptions() const noexcept { return options_; }
   /// Numeric factorizations so far.
   int FactorizationsNumber() const noexcept { return direct_->NumericFactorizationsNumber(); }

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <vector>
 
 #include "core/linear_solvers/factorization_reuse_solver.h"
 #include "core/linear_solvers/klu_solver.h"
@@ -22,8 +23,14 @@ using testing::RelativeError;
 using testing::RelativeResidual;
 
 constexpr int kGrid = 60;  // 3600 unknowns
+constexpr int kBudget = 25;
 
-FactorizationReuseSolver MakeSolver() { return FactorizationReuseSolver(std::make_unique<UmfpackSolver>()); }
+// With a fixed iteration budget (the default one follows the cost of the factorization).
+FactorizationReuseSolver MakeSolver() {
+  FactorizationReuseSolver::Options options;
+  options.min_iterations = options.max_iterations = kBudget;
+  return FactorizationReuseSolver(std::make_unique<UmfpackSolver>(), options);
+}
 
 // The solution of A x = A exact, after Initialize (as the builder calls it).
 Vector SolveFor(LinearSolver& solver, const SparseMatrix& A, const Vector& exact) {
@@ -92,7 +99,7 @@ TEST(FactorizationReuseSolver, ManyChangedRowsRefactorizeWithoutTrying) {
   const SparseMatrix A = ConvectionDiffusion2D(kGrid);
   const Vector exact = ManufacturedSolution(A.rows());
   SolveFor(solver, A, exact);
-  const int many = solver.GetOptions().max_iterations;
+  const int many = kBudget;
   const Vector x = SolveFor(solver, ScaleRows(A, 10, 50, many, 2.0), exact);
   EXPECT_LT(RelativeError(x, exact), 1e-10);
   EXPECT_FALSE(solver.LastSolveReusedFactors());
@@ -116,7 +123,7 @@ TEST(FactorizationReuseSolver, AStalledKrylovSolveFallsBackToAFreshFactorization
   EXPECT_EQ(solver.FallbacksNumber(), 1);
   EXPECT_EQ(solver.FactorizationsNumber(), 2);
   EXPECT_GT(solver.KrylovIterationsNumber(), 0);
-  EXPECT_LE(solver.KrylovIterationsNumber(), solver.GetOptions().max_iterations);
+  EXPECT_LE(solver.KrylovIterationsNumber(), kBudget);
   EXPECT_FALSE(solver.LastSolveReusedFactors());
 }
 
@@ -125,10 +132,10 @@ TEST(FactorizationReuseSolver, AnExpensiveKrylovSolveAsksForAFactorizationNext) 
   const SparseMatrix A = ConvectionDiffusion2D(kGrid);
   const Vector exact = ManufacturedSolution(A.rows());
   SolveFor(solver, A, exact);
-  const int some = solver.GetOptions().max_iterations - 4;  // rank > half of the budget
+  const int some = kBudget - 4;  // rank > half of the budget
   EXPECT_LT(RelativeError(SolveFor(solver, ScaleRows(A, 10, 50, some, 3.0), exact), exact), 1e-10);
   ASSERT_TRUE(solver.LastSolveReusedFactors());
-  ASSERT_GT(2 * solver.IterationsNumber(), solver.GetOptions().max_iterations);
+  ASSERT_GT(2 * solver.IterationsNumber(), kBudget);
   SolveFor(solver, ScaleRows(A, 10, 50, some, 3.0), exact);
   EXPECT_FALSE(solver.LastSolveReusedFactors());
   EXPECT_EQ(solver.FactorizationsNumber(), 2);
@@ -136,6 +143,7 @@ TEST(FactorizationReuseSolver, AnExpensiveKrylovSolveAsksForAFactorizationNext) 
 
 TEST(FactorizationReuseSolver, AnotherSizeOrClearStartsAfresh) {
   FactorizationReuseSolver solver(std::make_unique<KluSolver>());
+  EXPECT_EQ(solver.Budget(), 15);  // 0.75 of the default cost of 20 substitutions
   const SparseMatrix A = ConvectionDiffusion2D(kGrid);
   SolveFor(solver, A, ManufacturedSolution(A.rows()));
   const SparseMatrix C = ConvectionDiffusion2D(kGrid / 2);
@@ -164,6 +172,45 @@ TEST(FactorizationReuseSolver, ASingularMatrixIsReportedAfterReuseToo) {
   } catch (const SingularMatrixError& error) {
     EXPECT_EQ(error.Equation(), kZero);
   }
+}
+
+// 7-point Laplacian on an n^3 grid: denser factors than the 2D one of about the same size.
+SparseMatrix Poisson3D(int n) {
+  std::vector<Eigen::Triplet<double, int>> entries;
+  const auto id = [n](int i, int j, int k) { return (k * n + j) * n + i; };
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        entries.emplace_back(id(i, j, k), id(i, j, k), 6.0);
+        if (i > 0) entries.emplace_back(id(i, j, k), id(i - 1, j, k), -1.0);
+        if (i + 1 < n) entries.emplace_back(id(i, j, k), id(i + 1, j, k), -1.0);
+        if (j > 0) entries.emplace_back(id(i, j, k), id(i, j - 1, k), -1.0);
+        if (j + 1 < n) entries.emplace_back(id(i, j, k), id(i, j + 1, k), -1.0);
+        if (k > 0) entries.emplace_back(id(i, j, k), id(i, j, k - 1), -1.0);
+        if (k + 1 < n) entries.emplace_back(id(i, j, k), id(i, j, k + 1), -1.0);
+      }
+  SparseMatrix A(n * n * n, n * n * n);
+  A.setFromTriplets(entries.begin(), entries.end());
+  return A;
+}
+
+TEST(FactorizationReuseSolver, TheBudgetFollowsTheCostOfTheFactorization) {
+  // 3D factors are denser than 2D ones of the same order: a factorization is worth more
+  // substitutions, so GMRES may iterate longer before refactorizing pays.
+  FactorizationReuseSolver planar(std::make_unique<UmfpackSolver>());
+  const SparseMatrix A2 = Poisson2D(64);  // 4096 unknowns
+  SolveFor(planar, A2, ManufacturedSolution(A2.rows()));
+  FactorizationReuseSolver solid(std::make_unique<UmfpackSolver>());
+  const SparseMatrix A3 = Poisson3D(16);  // 4096 unknowns
+  SolveFor(solid, A3, ManufacturedSolution(A3.rows()));
+  const double cost2 = planar.Direct().FactorizationCostInSubstitutions();
+  const double cost3 = solid.Direct().FactorizationCostInSubstitutions();
+  EXPECT_GT(cost2, 2.0);
+  EXPECT_LT(cost3, 100.0);
+  EXPECT_GT(cost3, 1.5 * cost2) << cost2 << " " << cost3;
+  EXPECT_GT(solid.Budget(), planar.Budget());
+  EXPECT_GE(planar.Budget(), planar.GetOptions().min_iterations);
+  EXPECT_LE(solid.Budget(), solid.GetOptions().max_iterations);
 }
 
 TEST(FactorizationReuseSolver, CountersReportTheWork) {
