@@ -209,9 +209,7 @@ def main(argv=None) -> int:
                f"system and the residual):\n\n{pairs}\n" if (pairs := pair_table(rows)) else "")
             + ("\n" + "\n".join(notes) + "\n" if notes else "")
             + (f"\n![time against DoFs]({os.path.basename(args.plot)})\n" if has_plot else ""))
-    with open(args.output, "w") as f:
-        f.write(text)
-    print(f"wrote {args.output}")
+    harness.write_report(args.output, text)
     return 0
 
 

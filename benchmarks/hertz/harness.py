@@ -146,3 +146,10 @@ def machine_line(threads: int) -> str:
     load = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
     return (f"{os.cpu_count()} cores, OMP_NUM_THREADS={threads} for both codes, load average "
             f"{load:.1f} at the end of the run, {time.strftime('%Y-%m-%d %H:%M')}")
+
+
+def write_report(path: str, text: str) -> None:
+    """Writes a results file and says where."""
+    with open(path, "w") as f:
+        f.write(text)
+    print(f"wrote {path}")

@@ -140,9 +140,7 @@ def main() -> int:
             "of each case (contact active), factorized by each solver; CPU seconds on one core "
             f"(OMP_NUM_THREADS=1), medians of {args.repeat} factorizations with the analysis reused.\n\n"
             f"Machine: {harness.machine_line(1)}.\n\n" + table(results) + "\n")
-    with open(args.output, "w") as f:
-        f.write(text)
-    print(f"wrote {args.output}")
+    harness.write_report(args.output, text)
     return 0
 
 

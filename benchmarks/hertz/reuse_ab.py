@@ -80,9 +80,7 @@ def main() -> int:
             "`reuse_factorization` true (the default) and false, runs alternating, medians of "
             f"{args.repeat} runs (analysis wall time, its CPU time, and the linear solve phase).\n\n"
             f"Machine: {harness.machine_line(args.threads)}.\n\n" + "\n".join(lines) + "\n")
-    with open(args.output, "w") as f:
-        f.write(text)
-    print(f"wrote {args.output}")
+    harness.write_report(args.output, text)
     return 0
 
 
