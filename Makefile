@@ -82,6 +82,8 @@ test-python:
 bench: install
 	$(PYTHON) benchmarks/run_benchmarks.py
 	$(PYTHON) benchmarks/hertz/compare.py --cases hertz2d_2k,hertz2d_8k,hertz2d_30k,hertz3d_15k,hertz3dgrid_15k
+	$(PYTHON) benchmarks/hertz/reuse_ab.py
+	$(PYTHON) benchmarks/hertz/linear_solvers.py
 	$(PYTHON) benchmarks/hertz/contact_scaling.py
 	$(PYTHON) benchmarks/structural_parity/run.py
 	$(PYTHON) benchmarks/kratos_cases/frictional_iterations.py
@@ -93,6 +95,8 @@ FIELDSPLIT := {"solver_type": "petsc", "tolerance": 1e-8, "max_iteration": 500, 
 bench-large: install
 	$(PYTHON) benchmarks/hertz/compare.py --cases hertz2d_100k,hertz2d_250k,hertz3d_50k --repeat 1 \
 	  --output benchmarks/hertz/results_large.md --plot benchmarks/hertz/time_vs_dofs_large.png
+	$(PYTHON) benchmarks/hertz/linear_solvers.py --cases hertz2d_100k,hertz3d_50k --repeat 1 \
+	  --output benchmarks/hertz/results_linear_solvers_large.md
 	$(PYTHON) benchmarks/hertz/compare.py --cases hertz3d_15k,hertz3d_50k,hertz3d_150k,hertz3d_600k --repeat 1 \
 	  --codes mortarcontact --linear-solver '$(FIELDSPLIT)' \
 	  --output benchmarks/hertz/results_3d_multigrid.md --plot benchmarks/hertz/time_vs_dofs_3d_multigrid.png

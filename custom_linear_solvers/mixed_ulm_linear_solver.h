@@ -79,6 +79,7 @@ class MixedULMLinearSolver : public LinearSolver {
   void Solve(const SparseMatrix& A, Vector& x, const Vector& b) override;
   void Clear() override;
   int IterationsNumber() const override { return inner_->IterationsNumber(); }
+  WorkCounters Counters() const override { return (*inner_).Counters(); }
 
   bool AdditionalPhysicalDataIsNeeded() const override { return true; }
   /// Classifies every row from its DoF (ACTIVE, SLAVE, MASTER flags of the node, fixity).

@@ -18,6 +18,7 @@ class SharedLinearSolver : public LinearSolver {
   void Solve(const SparseMatrix& A, Vector& x, const Vector& b) override { solver_->Solve(A, x, b); }
   void Clear() override { solver_->Clear(); }
   int IterationsNumber() const override { return solver_->IterationsNumber(); }
+  WorkCounters Counters() const override { return solver_->Counters(); }
 
  private:
   std::shared_ptr<LinearSolver> solver_;

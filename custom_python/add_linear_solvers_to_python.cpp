@@ -14,14 +14,25 @@ void AddLinearSolversToPython(py::module_& m) {
       .def("IsDirect", &LinearSolver::IsDirect, "Whether it factorizes (rather than iterates).")
       .def(
           "Solve",
-          [](LinearSolver& solver, const SparseMatrix& A, const Vector& b) {
+          [](LinearSolver& solver, const SparseMatrix& A, const Vector& b, bool initialize) {
             Vector x = Vector::Zero(b.size());
-            solver.Initialize(A);
+            if (initialize) solver.Initialize(A);
             solver.Solve(A, x, b);
             return x;
           },
-          py::arg("A"), py::arg("b"), "Solves A x = b for a scipy.sparse matrix A (converted to CSC).")
-      .def("IterationsNumber", &LinearSolver::IterationsNumber, "Iterations of the last solve (1 for direct solvers).");
+          py::arg("A"), py::arg("b"), py::arg("initialize") = true,
+          "Solves A x = b for a scipy.sparse matrix A (converted to CSC); initialize=False keeps the symbolic "
+          "analysis of the previous call (A with the same pattern).")
+      .def("IterationsNumber", &LinearSolver::IterationsNumber, "Iterations of the last solve (1 for direct solvers).")
+      .def(
+          "Counters",
+          [](const LinearSolver& solver) {
+            const LinearSolver::WorkCounters c = solver.Counters();
+            return py::dict(py::arg("factorizations") = c.factorizations, py::arg("krylov_solves") = c.krylov_solves,
+                            py::arg("krylov_iterations") = c.krylov_iterations, py::arg("fallbacks") = c.fallbacks);
+          },
+          "Work done so far: numeric factorizations, Krylov solves with kept factors, their iterations, fallbacks to "
+          "a fresh factorization.");
   m.def(
       "CreateLinearSolver",
       [](const Parameters& settings) { return std::shared_ptr<LinearSolver>(CreateLinearSolver(settings)); },

@@ -102,8 +102,22 @@ void AddSolvingToPython(py::module_& m) {
       .def("SystemSize", &BuilderAndSolver::SystemSize, "Number of unknowns of the linear system solved.")
       .def("GetTimings", &BuilderAndSolver::GetTimings, py::return_value_policy::copy, "Its BuilderTimings so far.")
       .def(
+          "GetLinearSolverCounters",
+          [](const BuilderAndSolver& b) {
+            LinearSolver::WorkCounters c;
+            if (b.GetLinearSolver() != nullptr) c = b.GetLinearSolver()->Counters();
+            return py::dict(py::arg("factorizations") = c.factorizations, py::arg("krylov_solves") = c.krylov_solves,
+                            py::arg("krylov_iterations") = c.krylov_iterations, py::arg("fallbacks") = c.fallbacks);
+          },
+          "Work of its linear solver so far (LinearSolver.Counters).")
+      .def("ResetLinearSolver", &BuilderAndSolver::ResetLinearSolver,
+           "Frees the linear solver's factorizations and analyses: the next solve starts as in a new run.")
+      .def(
           "SystemMatrixNonZeros", [](const BuilderAndSolver& b) { return b.SystemMatrix().nonZeros(); },
           "Non-zeros of the last system matrix.")
+      .def(
+          "GetSystemMatrix", [](const BuilderAndSolver& b) { return SparseMatrix(b.SystemMatrix()); },
+          "A copy of the last system matrix (scipy.sparse CSC), e.g. to benchmark linear solvers on it.")
       .def(
           "AddConstraint",
           [](BuilderAndSolver& b, std::shared_ptr<MasterSlaveConstraint> c) { b.AddConstraint(std::move(c)); },

@@ -71,7 +71,7 @@ class StructuralMechanicsAnalysis:
         self.solver.AddDofs()
         self.processes = self._create_processes("processes")
         self.output_processes = self._create_processes("output_processes")
-        attach_run(self._all_processes(), self.solver.mesh_record)
+        attach_run(self._all_processes(), self.solver.mesh_record, self.solver)
         for process in self._all_processes():
             with naming_the_item(getattr(process, "item_where", "")):
                 process.ExecuteInitialize()

@@ -144,12 +144,13 @@ def run_kratos(parameters_text: str, dim: int, record: dict, all_nodes: bool = F
 
     model = KM.Model()
     analysis = Instrumented(model, KM.Parameters(parameters_text))
-    started = time.perf_counter()
+    started, cpu_started = time.perf_counter(), time.process_time()
     analysis.Initialize()
     record["setup_seconds"] = time.perf_counter() - started
     analysis.RunSolutionLoop()
     analysis.Finalize()
     record["analysis_seconds"] = time.perf_counter() - started
+    record["analysis_cpu_seconds"] = time.process_time() - cpu_started
     record.update(_extract(model, KM.KratosGlobals.GetVariable, dim, KM.ACTIVE, all_nodes))
 
 
@@ -209,7 +210,7 @@ def run_mortarcontact(parameters_path: str, dim: int, record: dict, linear_solve
     if linear_solver:
         record["linear_solver"] = json.loads(linear_solver)
     model = mc.Model()
-    started = time.perf_counter()
+    started, cpu_started = time.perf_counter(), time.process_time()
     analysis = StructuralMechanicsAnalysis(model, parameters, progress=False, stop_on_non_convergence=False,
                                            case_dir=os.path.dirname(parameters_path))
     analysis.Initialize()
@@ -217,9 +218,11 @@ def run_mortarcontact(parameters_path: str, dim: int, record: dict, linear_solve
     analysis.RunSolutionLoop()
     analysis.Finalize()
     record["analysis_seconds"] = time.perf_counter() - started
+    record["analysis_cpu_seconds"] = time.process_time() - cpu_started
     for _step, t, iterations, converged, seconds in analysis.step_log:
         record["steps"].append({"time": t, "iterations": iterations, "converged": converged, "seconds": seconds})
     record["phases"] = _mortarcontact_phases(analysis, record["analysis_seconds"])
+    record["linear_solver_counters"] = analysis.solver.strategy.GetBuilderAndSolver().GetLinearSolverCounters()
     searches = [s for p in analysis.processes for s in getattr(p, "searches", [])]
     record["contact_pairs"] = sum(s.ComputingPart().NumberOfConditions() for s in searches)
     record["searches"] = sum(s.NumberOfSearches() for s in searches)

@@ -125,6 +125,8 @@ def summarize(records: list[dict], hertz: dict) -> dict:
     return {
         "status": "ok", "runs": len(ok),
         "analysis_seconds": statistics.median(r["analysis_seconds"] for r in ok),
+        "analysis_cpu_seconds": statistics.median(r.get("analysis_cpu_seconds", math.nan) for r in ok),
+        "linear_solver_counters": last.get("linear_solver_counters"),
         "setup_seconds": statistics.median(r["setup_seconds"] for r in ok),
         "wall_seconds": statistics.median(r["wall_seconds"] for r in ok),
         "peak_rss_mb": statistics.median(r["peak_rss_mb"] for r in ok),
@@ -147,3 +149,10 @@ def machine_line(threads: int) -> str:
     load = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
     return (f"{os.cpu_count()} cores, OMP_NUM_THREADS={threads} for both codes, load average "
             f"{load:.1f} at the end of the run, {time.strftime('%Y-%m-%d %H:%M')}")
+
+
+def write_report(path: str, text: str) -> None:
+    """Writes a results file and says where."""
+    with open(path, "w") as f:
+        f.write(text)
+    print(f"wrote {path}")

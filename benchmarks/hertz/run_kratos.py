@@ -75,9 +75,7 @@ def main(argv=None) -> int:
             "active and the first inactive slave node. Time: analysis (read, set-up, 4 load steps), imports "
             f"excluded, median of {args.repeat} run(s).\n\nMachine: {harness.machine_line(args.threads)}.\n\n"
             + table(rows) + "\n")
-    with open(args.output, "w") as f:
-        f.write(text)
-    print(f"wrote {args.output}")
+    harness.write_report(args.output, text)
     return 0
 
 

@@ -88,7 +88,7 @@ void CholmodSolver::Factorize(const SparseMatrix& M) {
     throw SolutionError(Concat("CHOLMOD factorization failed (status ", common.status, ")"));
 }
 
-void CholmodSolver::Substitute(const SparseMatrix& M, Vector& x, const Vector& b) {
+void CholmodSolver::Substitute(Vector& x, const Vector& b) {
   cholmod_common& common = handles_->common;
   cholmod_dense rhs{};
   rhs.nrow = static_cast<std::size_t>(b.size());

@@ -25,7 +25,7 @@ class CholmodSolver : public DirectSolver {
  private:
   void Analyze(const SparseMatrix& A) override;
   void Factorize(const SparseMatrix& A) override;
-  void Substitute(const SparseMatrix& A, Vector& x, const Vector& b) override;
+  void Substitute(Vector& x, const Vector& b) override;
   void Release() override;
 
   struct Handles;  // CHOLMOD's common block and factor (keeps cholmod.h private)

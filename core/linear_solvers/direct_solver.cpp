@@ -17,15 +17,30 @@ void DirectSolver::Initialize(const SparseMatrix& A) {
 
 void DirectSolver::Solve(const SparseMatrix& A, Vector& x, const Vector& b) {
   assert(b.size() == A.rows());
+  FactorizeNumeric(A);
+  Substitute(x, b);
+}
+
+void DirectSolver::FactorizeNumeric(const SparseMatrix& A) {
   const SparseMatrix& M = CompressedView(A, compressed_);
   if (pattern_.Empty() || !pattern_.Matches(M)) Initialize(M);
+  has_factors_ = false;
   Factorize(M);
-  Substitute(M, x, b);
+  has_factors_ = true;
+  factors_size_ = M.rows();
+  ++numeric_count_;
+}
+
+void DirectSolver::SubstituteFactors(Vector& x, const Vector& b) {
+  if (!has_factors_) throw Error(Concat(library_, ": substitution requested without a factorization"));
+  assert(b.size() == factors_size_);
+  Substitute(x, b);
 }
 
 void DirectSolver::Clear() {
   Release();
   pattern_.Clear();
+  has_factors_ = false;
 }
 
 }  // namespace mc

@@ -16,6 +16,8 @@ class DirectSolver : public LinearSolver {
  public:
   DirectSolver(const DirectSolver&) = delete;
   DirectSolver& operator=(const DirectSolver&) = delete;
+  /// Derived destructors call Release themselves (it is virtual).
+  ~DirectSolver() override = default;
 
   bool IsDirect() const final { return true; }
   /// Frees any earlier analysis; throws SolutionError for a non-square matrix.
@@ -23,22 +25,38 @@ class DirectSolver : public LinearSolver {
   void Solve(const SparseMatrix& A, Vector& x, const Vector& b) final;
   void Clear() final;
 
+  /// Numeric factorization of `A` alone (analysing its pattern first when it is not the analysed
+  /// one); `SubstituteFactors` then solves with it, also after A has changed: the factors of an
+  /// earlier matrix precondition a Krylov solve (FactorizationReuseSolver).
+  void FactorizeNumeric(const SparseMatrix& A);
+  /// Forward and back substitution with the factors of the last factorization.
+  void SubstituteFactors(Vector& x, const Vector& b);
+  /// Whether factors are held (a factorization succeeded since the last Initialize or Clear).
+  bool HasFactors() const noexcept { return has_factors_; }
+  /// Order of the factorized matrix (-1 without factors).
+  long FactorsSize() const noexcept { return has_factors_ ? factors_size_ : -1; }
+  /// About how many substitutions cost as much as the last numeric factorization: what a Krylov
+  /// solve preconditioned by these factors may spend. The default is for solvers that report no
+  /// flop counts; UMFPACK estimates it from its own.
+  virtual double FactorizationCostInSubstitutions() const { return 20.0; }
+
   /// Symbolic analyses run so far (tests check the reuse across value changes).
   int SymbolicAnalysesNumber() const noexcept { return symbolic_count_; }
+  /// Numeric factorizations run so far.
+  int NumericFactorizationsNumber() const noexcept { return numeric_count_; }
+  WorkCounters Counters() const override { return {.factorizations = numeric_count_}; }
 
  protected:
   /// `library` names the solver in error messages ("UMFPACK").
   explicit DirectSolver(std::string library) : library_(std::move(library)) {}
-  /// Derived destructors call Release themselves (it is virtual).
-  ~DirectSolver() override = default;
 
   /// Symbolic phase: orderings and analysis of the pattern of `A` (compressed and square).
   virtual void Analyze(const SparseMatrix& A) = 0;
   /// Numeric phase for the values of `A`, analysed before. Throws SingularMatrixError naming the
   /// equation at fault, SolutionError for any other failure.
   virtual void Factorize(const SparseMatrix& A) = 0;
-  /// Forward and back substitution with the last factorization.
-  virtual void Substitute(const SparseMatrix& A, Vector& x, const Vector& b) = 0;
+  /// Forward and back substitution with the last factorization (which needs only the factors).
+  virtual void Substitute(Vector& x, const Vector& b) = 0;
   /// Frees the library's symbolic and numeric objects (no-op when there are none).
   virtual void Release() = 0;
 
@@ -47,6 +65,9 @@ class DirectSolver : public LinearSolver {
   SparsePattern pattern_;
   SparseMatrix compressed_;
   int symbolic_count_ = 0;
+  int numeric_count_ = 0;
+  bool has_factors_ = false;
+  long factors_size_ = -1;
 };
 
 }  // namespace mc

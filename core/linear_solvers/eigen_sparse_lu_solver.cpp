@@ -46,7 +46,7 @@ void EigenSparseLUSolver::Factorize(const SparseMatrix& M) {
   if (!failure.empty()) throw SingularMatrixError(Concat("Eigen SparseLU: singular matrix: ", failure), -1);
 }
 
-void EigenSparseLUSolver::Substitute(const SparseMatrix& M, Vector& x, const Vector& b) { backend_->Solve(b, x); }
+void EigenSparseLUSolver::Substitute(Vector& x, const Vector& b) { backend_->Solve(b, x); }
 
 void EigenSparseLUSolver::Release() { backend_.reset(); }
 

@@ -24,7 +24,7 @@ class EigenSparseLUSolver : public DirectSolver {
  private:
   void Analyze(const SparseMatrix& A) override;
   void Factorize(const SparseMatrix& A) override;
-  void Substitute(const SparseMatrix& A, Vector& x, const Vector& b) override;
+  void Substitute(Vector& x, const Vector& b) override;
   void Release() override;
 
   struct Backend;  // the SparseLU instantiation for the chosen ordering

@@ -24,6 +24,7 @@ class FallbackSolver : public LinearSolver {
   void Solve(const SparseMatrix& A, Vector& x, const Vector& b) override;
   void Clear() override;
   int IterationsNumber() const override { return Active().IterationsNumber(); }
+  WorkCounters Counters() const override { return Active().Counters(); }
 
   bool UsingFallback() const noexcept { return switched_; }
   /// The primary's error message that caused the switch (empty before).

@@ -47,10 +47,10 @@ void KluSolver::Factorize(const SparseMatrix& M) {
   }
 }
 
-void KluSolver::Substitute(const SparseMatrix& M, Vector& x, const Vector& b) {
+void KluSolver::Substitute(Vector& x, const Vector& b) {
   klu_common& common = handles_->common;
   x = b;
-  if (klu_solve(handles_->symbolic, handles_->numeric, static_cast<int>(M.rows()), 1, x.data(), &common) != 1) {
+  if (klu_solve(handles_->symbolic, handles_->numeric, static_cast<int>(b.size()), 1, x.data(), &common) != 1) {
     throw SolutionError(Concat("KLU solve failed (status ", common.status, ")"));
   }
 }

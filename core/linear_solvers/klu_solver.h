@@ -22,7 +22,7 @@ class KluSolver : public DirectSolver {
  private:
   void Analyze(const SparseMatrix& A) override;
   void Factorize(const SparseMatrix& A) override;
-  void Substitute(const SparseMatrix& A, Vector& x, const Vector& b) override;
+  void Substitute(Vector& x, const Vector& b) override;
   void Release() override;
   void FreeNumeric();
 

@@ -44,6 +44,17 @@ class LinearSolver {
   virtual void Clear() = 0;
   /// Iterations of the last solve (1 for direct solvers).
   virtual int IterationsNumber() const { return 1; }
+  /// Work done since construction, for benchmarks and tests: numeric factorizations, solves
+  /// answered by a Krylov method preconditioned with kept factors, their iterations (including
+  /// those of solves that fell back), and fallbacks to a fresh factorization.
+  struct WorkCounters {
+    long factorizations = 0;
+    long krylov_solves = 0;
+    long krylov_iterations = 0;
+    long fallbacks = 0;
+  };
+  /// Zero for solvers that do not count (iterative ones); wrappers report their inner solver's.
+  virtual WorkCounters Counters() const { return {}; }
   /// Whether the solver needs the DoF of each row (e.g. to split the system into physical
   /// blocks); the builder then calls ProvideAdditionalData before every Solve.
   virtual bool AdditionalPhysicalDataIsNeeded() const { return false; }

@@ -12,6 +12,7 @@
 
 #include "core/linear_solvers/cholmod_solver.h"
 #include "core/linear_solvers/eigen_sparse_lu_solver.h"
+#include "core/linear_solvers/factorization_reuse_solver.h"
 #include "core/linear_solvers/fallback_solver.h"
 #include "core/linear_solvers/iterative_solver.h"
 #include "core/linear_solvers/klu_solver.h"
@@ -151,7 +152,8 @@ Parameters DefaultSettings() {
     "provide_coordinates": null,
     "use_gpgpu": null,
     "gpgpu_backend": null,
-    "petsc_options": {}
+    "petsc_options": {},
+    "reuse_factorization": true
   })");
 }
 
@@ -232,6 +234,13 @@ std::unique_ptr<LinearSolver> CreatePetscSolver(const Parameters& settings) {
   return std::unique_ptr<LinearSolver>(create(settings));
 }
 
+/// A direct sparse LU (UMFPACK, KLU) whose factorization is kept across solves as the
+/// preconditioner of GMRES, unless `reuse_factorization` is false (mortarcontact's key).
+std::unique_ptr<LinearSolver> CreateSparseLu(const Parameters& settings, std::unique_ptr<DirectSolver> direct) {
+  if (!settings["reuse_factorization"].GetBool()) return direct;
+  return std::make_unique<FactorizationReuseSolver>(std::move(direct));
+}
+
 }  // namespace
 
 std::string NormalizeLinearSolverName(const std::string& name) {
@@ -281,10 +290,16 @@ std::unique_ptr<LinearSolver> CreateLinearSolver(const Parameters& user_settings
                             DidYouMean(given, ValidSolverNames())));
   }
 
+  const Backend backend = found->second;
+  if (backend != Backend::kUmfpack && backend != Backend::kKlu && backend != Backend::kAmgcl &&
+      backend != Backend::kScaling)
+    NoEffectWarnings::IfGiven(user_settings, defaults, "reuse_factorization",
+                              "only the sparse LU solvers (umfpack, klu and the names that map to them) keep a "
+                              "factorization between solves");
   std::unique_ptr<LinearSolver> solver;
-  switch (found->second) {
-    case Backend::kUmfpack: solver = std::make_unique<UmfpackSolver>(); break;
-    case Backend::kKlu: solver = std::make_unique<KluSolver>(); break;
+  switch (backend) {
+    case Backend::kUmfpack: solver = CreateSparseLu(settings, std::make_unique<UmfpackSolver>()); break;
+    case Backend::kKlu: solver = CreateSparseLu(settings, std::make_unique<KluSolver>()); break;
     case Backend::kCholmod:
       // CHOLMOD needs SPD; an indefinite or non-symmetric system switches to UMFPACK for good.
       solver = std::make_unique<FallbackSolver>(std::make_unique<CholmodSolver>(), std::make_unique<UmfpackSolver>());
@@ -311,13 +326,14 @@ std::unique_ptr<LinearSolver> CreateLinearSolver(const Parameters& user_settings
     case Backend::kAmgcl: {
       IterativeSolver::Options options = ReadIterativeOptions(settings, IterativeSolver::Method::kBicgstab);
       options.preconditioner = IterativeSolver::Preconditioner::kIlu;
-      solver = std::make_unique<SizeSelectingSolver>(name, kAmgclDirectSizeLimit, std::make_unique<UmfpackSolver>(),
+      solver = std::make_unique<SizeSelectingSolver>(name, kAmgclDirectSizeLimit,
+                                                     CreateSparseLu(settings, std::make_unique<UmfpackSolver>()),
                                                      std::make_unique<IterativeSolver>(options));
       break;
     }
     case Backend::kScaling:
       // Kratos' ScalingSolver wraps another solver; as a solver_type of its own it wraps UMFPACK.
-      return std::make_unique<ScalingSolver>(std::make_unique<UmfpackSolver>());
+      return std::make_unique<ScalingSolver>(CreateSparseLu(settings, std::make_unique<UmfpackSolver>()));
     case Backend::kSparseQr:
       throw NotImplementedError(
           Concat(settings.Where(), ".solver_type: '", given,

@@ -24,6 +24,7 @@ class ScalingSolver : public LinearSolver {
   void Solve(const SparseMatrix& A, Vector& x, const Vector& b) override;
   void Clear() override;
   int IterationsNumber() const override { return inner_->IterationsNumber(); }
+  WorkCounters Counters() const override { return inner_->Counters(); }
 
   const LinearSolver& Inner() const noexcept { return *inner_; }
   /// The factors S of the last Solve.

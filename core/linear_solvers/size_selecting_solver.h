@@ -25,6 +25,7 @@ class SizeSelectingSolver : public LinearSolver {
   void Solve(const SparseMatrix& A, Vector& x, const Vector& b) override;
   void Clear() override;
   int IterationsNumber() const override { return Active().IterationsNumber(); }
+  WorkCounters Counters() const override { return Active().Counters(); }
 
   /// The solver used for the last pattern.
   const LinearSolver& Active() const { return use_large_ ? *large_ : *small_; }

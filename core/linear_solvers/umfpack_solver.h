@@ -22,6 +22,8 @@ class UmfpackSolver : public DirectSolver {
   ~UmfpackSolver() override { Release(); }
 
   std::string Name() const override { return "umfpack"; }
+  /// From the flops of the factorization per entry of L and U (see the .cpp for the fit).
+  double FactorizationCostInSubstitutions() const override;
 
  private:
   /// Below this, min|U_ii| / max|U_ii| of the row-scaled factorization is round-off: a rigid-body
@@ -30,7 +32,7 @@ class UmfpackSolver : public DirectSolver {
 
   void Analyze(const SparseMatrix& A) override;
   void Factorize(const SparseMatrix& A) override;
-  void Substitute(const SparseMatrix& A, Vector& x, const Vector& b) override;
+  void Substitute(Vector& x, const Vector& b) override;
   void Release() override;
   long SmallestPivotColumn() const;
   void FreeNumeric();
@@ -39,7 +41,8 @@ class UmfpackSolver : public DirectSolver {
   void* numeric_ = nullptr;
   std::vector<long> outer_;  ///< column pointers and row indices widened for umfpack_dl_*
   std::vector<long> inner_;
-  double control_[20] = {};  ///< UMFPACK_CONTROL parameters, set by Initialize
+  double control_[20] = {};              ///< UMFPACK_CONTROL parameters, set by Initialize
+  double flops_per_factor_entry_ = 0.0;  ///< of the last numeric factorization
 };
 
 }  // namespace mc

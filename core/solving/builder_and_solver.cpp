@@ -533,6 +533,11 @@ void BuilderAndSolver::WriteReactions() {
     if (d->fixed && d->HasReaction()) d->ReactionValue() = -rhs_effective_[d->equation_id];
 }
 
+void BuilderAndSolver::ResetLinearSolver() {
+  if (linear_solver_) linear_solver_->Clear();
+  solver_pattern_version_ = -1;
+}
+
 void BuilderAndSolver::Clear() {
   dofs_.clear();
   dofs_by_equation_.clear();

@@ -105,6 +105,10 @@ class BuilderAndSolver {
   Vector& Increment() noexcept { return dx_; }
 
   LinearSolver* GetLinearSolver() const noexcept { return linear_solver_.get(); }
+  /// Frees what the linear solver keeps between solves (factorizations, analyses): the next
+  /// solve starts as in a new run. Restart checkpoints call it, so that a resumed run repeats the
+  /// uninterrupted one bit for bit although the solver reuses factorizations across steps.
+  void ResetLinearSolver();
   const Timings& GetTimings() const noexcept { return timings_; }
   void ResetTimings() noexcept { timings_ = Timings{}; }
   /// Number of times the sparsity pattern has been built (tests check the reuse).

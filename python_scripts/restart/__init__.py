@@ -9,11 +9,12 @@ from .save_restart_process import SaveRestartProcess, restart_file_name, restart
 RESTART_PROCESSES = {"save_restart_process": SaveRestartProcess}
 
 
-def attach_run(processes, mesh: dict | None) -> None:
-    """Hands every checkpoint writer among ``processes`` the process list and the mesh record."""
+def attach_run(processes, mesh: dict | None, solver=None) -> None:
+    """Hands every checkpoint writer among ``processes`` the process list, the mesh record and the
+    solver."""
     for process in processes:
         if isinstance(process, SaveRestartProcess):
-            process.attach(processes, mesh)
+            process.attach(processes, mesh, solver)
 
 
 __all__ = ["RESTART_PROCESSES", "Checkpoint", "SaveRestartProcess", "attach_run", "mesh_record",

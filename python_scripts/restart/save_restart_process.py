@@ -86,13 +86,15 @@ class SaveRestartProcess(OutputProcess):
         self.next_output = self.frequency  # no checkpoint of the initial state
         self.processes = []
         self.mesh = None
+        self.solver = None
         self.written: list[str] = []
 
-    def attach(self, processes, mesh: dict | None) -> None:
-        """The run's processes (whose states go into the checkpoint) and its mesh record
-        (``checkpoint.mesh_record``; None when the model was built in Python)."""
+    def attach(self, processes, mesh: dict | None, solver=None) -> None:
+        """The run's processes (whose states go into the checkpoint), its mesh record
+        (``checkpoint.mesh_record``; None when the model was built in Python) and its solver."""
         self.processes = processes
         self.mesh = mesh
+        self.solver = solver
 
     def _part(self):
         return resolve_model_part(self.model, self.model_part_name).GetRootModelPart()
@@ -119,6 +121,10 @@ class SaveRestartProcess(OutputProcess):
                 self.next_output += self.frequency
         path = os.path.join(self.folder, restart_file_name(self.stem, label))
         write_checkpoint(path, self._part(), self.mesh, self.processes)
+        # The linear solver keeps factorizations across steps, which a run resumed from this
+        # checkpoint does not have: both start the next step without them.
+        if self.solver is not None:
+            self.solver.ResetLinearSolver()
         if path not in self.written:
             self.written.append(path)
         if self.echo_level > 0:

@@ -399,6 +399,12 @@ class MechanicalSolver:
     def FinalizeSolutionStep(self) -> None:
         self.strategy.FinalizeSolutionStep()
 
+    def ResetLinearSolver(self) -> None:
+        """The next linear solve starts without the factorizations kept from earlier steps, as a
+        run resumed here does (restart checkpoints call it)."""
+        if self.strategy is not None:
+            self.strategy.GetBuilderAndSolver().ResetLinearSolver()
+
     def Check(self) -> None:
         try:
             self.strategy.Check()

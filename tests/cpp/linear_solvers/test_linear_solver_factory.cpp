@@ -7,13 +7,17 @@
 #include <utility>
 #include <vector>
 
+#include "core/linear_solvers/factorization_reuse_solver.h"
 #include "core/linear_solvers/fallback_solver.h"
 #include "core/linear_solvers/iterative_solver.h"
+#include "core/linear_solvers/klu_solver.h"
 #include "core/linear_solvers/linear_solver.h"
 #include "core/linear_solvers/scaling_solver.h"
 #include "core/linear_solvers/size_selecting_solver.h"
 #include "core/linear_solvers/umfpack_solver.h"
+#include "core/parameters/no_effect_warnings.h"
 #include "core/parameters/parameters.h"
+#include "core/utilities/logger.h"
 #include "test_matrices.h"
 #include "tests/cpp/common/error_message.h"
 
@@ -101,6 +105,30 @@ TEST(LinearSolverFactory, MapsNamesToOurSolvers) {
   EXPECT_EQ(Create("{}")->Name(), "umfpack");
   EXPECT_TRUE(Create("{}")->IsDirect());
   EXPECT_NE(dynamic_cast<FallbackSolver*>(Create(R"({"solver_type": "cholmod"})").get()), nullptr);
+}
+
+TEST(LinearSolverFactory, SparseLuKeepsItsFactorizationUnlessToldNot) {
+  for (const char* name : {"", "sparse_lu", "skyline_lu_factorization", "umfpack", "klu"}) {
+    const auto solver = Create(std::string(R"({"solver_type": ")") + name + "\"}");
+    const auto* reuse = dynamic_cast<const FactorizationReuseSolver*>(solver.get());
+    ASSERT_NE(reuse, nullptr) << name;
+    EXPECT_EQ(reuse->Name(), std::string(name) == "klu" ? "klu" : "umfpack");
+  }
+  EXPECT_NE(dynamic_cast<UmfpackSolver*>(Create(R"({"solver_type": "sparse_lu", "reuse_factorization": false})").get()),
+            nullptr);
+  EXPECT_NE(dynamic_cast<KluSolver*>(Create(R"({"solver_type": "klu", "reuse_factorization": false})").get()), nullptr);
+  // Other solvers keep no factorization: the key warns that it has no effect there.
+  std::vector<std::string> warnings;
+  Logger::SetSink([&warnings](Logger::Level level, const std::string& message) {
+    if (level == Logger::Level::Warning) warnings.push_back(message);
+  });
+  NoEffectWarnings::Reset();
+  Create(R"({"solver_type": "cg", "reuse_factorization": false})");
+  Create(R"({"solver_type": "umfpack", "reuse_factorization": false})");
+  Logger::ResetSink();
+  NoEffectWarnings::Reset();
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("'reuse_factorization' = false"), std::string::npos) << warnings[0];
 }
 
 TEST(LinearSolverFactory, ReadsIterativeSettingsAndPreconditionerNames) {
