@@ -73,10 +73,7 @@ class MeshTyingProcess(SearchBaseProcess):
         self.model = model
         self.settings = settings
         self.interval = _settings.interval_of(settings)
-        self.searches = []
-        self.root = None
-        self._steps_since_search = None
-        self._inside = None
+        self._init_search_state()
         self._check_factors()
         self.variable = self._tied_variable()
         self.formulation = _core.ContactFormulation.OfProcess(

@@ -59,12 +59,7 @@ class SearchBaseProcess(Process):
         self.settings = settings
         self.settings.RecursivelyValidateAndAssignDefaults(self.GetDefaultParameters())
         self.interval = _settings.interval_of(self.settings)
-        self.searches = []
-        #: (STEP, statistics of UpdateMortarConditions) of every search so far, slot after slot
-        self.search_statistics = []
-        self.root = None
-        self._steps_since_search = None
-        self._inside = None
+        self._init_search_state()
         self._check_types()
         self._check_factors()
         _core.NoEffectWarnings.IfGiven(self.settings, self.GetDefaultParameters(), "consider_tessellation",
@@ -103,6 +98,14 @@ class SearchBaseProcess(Process):
             slots.append(("0", [], slaves["0"].GetStringArray(), ids["0"].GetInt(), mu("0")))
         return slots
 
+    def _init_search_state(self) -> None:
+        self.searches = []
+        #: (STEP, statistics of UpdateMortarConditions) of every search so far, slot after slot
+        self.search_statistics = []
+        self.root = None
+        self._steps_since_search = None
+        self._inside = None
+
     # Hooks ---------------------------------------------------------------------------------------
     def ExecuteInitialize(self) -> None:
         self.root = resolve_model_part(self.model, self.settings["model_part_name"].GetString())
@@ -119,7 +122,7 @@ class SearchBaseProcess(Process):
                                       self.settings["normal_check_proportion"].GetDouble())
             check_initial_overlap(interface, slot)
             interfaces.append((slot, interface, slaves, mu))
-        if sp["adapt_search"].GetBool():
+        if sp.Has("adapt_search") and sp["adapt_search"].GetBool():  # mesh tying has no adapt_search
             self._adapt_search([interface for _, interface, _, _ in interfaces])
         info.SetValue(_core.ACTIVE_CHECK_FACTOR, sp["active_check_factor"].GetDouble())
         for slot, interface, slaves, mu in interfaces:
