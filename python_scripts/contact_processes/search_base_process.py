@@ -166,6 +166,16 @@ class SearchBaseProcess(Process):
     def check_solver_variables(self) -> None:
         """Hook: the start-up check of the mortar_type pairing (spec 2.10)."""
 
+    def _check_mortar_type(self, chosen_by: str) -> None:
+        """The solver registers its formulation before the mesh is read (spec 2.10): this process's,
+        chosen by `chosen_by` (its key and value, for the message), must be the same."""
+        solver = self.root.GetProcessInfo().GetValue(_core.MORTAR_TYPE)
+        if solver != self.formulation.mortar_type:
+            found = f"\"{solver}\"" if solver else "none (a solver without contact_settings)"
+            raise _core.InputError(
+                f"{self.python_module} with {chosen_by} needs "
+                f"solver_settings.contact_settings.mortar_type \"{self.formulation.mortar_type}\"; found {found}")
+
     def ExecuteInitializeSolutionStep(self) -> None:
         info = self.root.GetProcessInfo()
         time = info.GetValue(_core.TIME)
