@@ -28,9 +28,9 @@ namespace AdaptivePenaltyUtilities {
 ///  - a node that ends penetrated is never softened by the crossing formulas, which are meant for
 ///    a node pushed out (the crossing from 1e-3 max_gap open to 28.9 max_gap deep cut eps by
 ///    2.5e5); an open node's penalty, which pushes nothing, is not raised;
-///  - the jump and growth tests compare sizes, as the paper (Kratos compares signed gaps, so any
-///    change beyond 5 max_gap doubled eps: 8 iterations of doubling from 90 max_gap, and step 14
-///    did not converge).
+///  - the jump and growth tests compare sizes (Kratos compares signed gaps, so any change beyond
+///    5 max_gap doubled eps: 8 iterations of doubling from 90 max_gap, and step 14 did not
+///    converge).
 double AdaptedPenalty(double penalty, double gap, double previous_gap, double max_gap);
 
 /// Applies AdaptedPenalty to the nodal INITIAL_PENALTY of every SLAVE node of `contact_part` with a
