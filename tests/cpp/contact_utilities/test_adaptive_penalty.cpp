@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Issue 12 (adapt_penalty): the adapted penalty of one node, one test per branch with the value
-// worked out by hand, and the nodal loop (first iteration of the run, nodal values, nodal area and
-// NODAL_H, master nodes untouched).
+// worked out by hand (and Kratos' value where ours differs), and the nodal loop (the predicted
+// first iterate, answers only from active nodes, nodal area and NODAL_H, master nodes untouched).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -16,23 +16,48 @@ namespace {
 
 using AdaptivePenaltyUtilities::AdaptedPenalty;
 
-TEST(AdaptivePenalty, SignChangeFromFarScalesToStopWithinMaxGap) {
-  // g_p = 0.02 open, g = -0.01 penetrated, max_gap 1e-3:
-  // |100 * 0.02 / -0.01 * (0.01 + 0.001) / (-0.01 - 0.02)| = 200 * 0.011 / 0.03 = 73.333...
-  EXPECT_NEAR(AdaptedPenalty(100.0, -0.01, 0.02, 1e-3), 200.0 * 0.011 / 0.03, 1e-12);
-  // The same from penetration to open.
+TEST(AdaptivePenalty, BounceFromFarScalesToStopWithinMaxGap) {
+  // g_p = -0.02 penetrated, g = 0.01 open, max_gap 1e-3:
+  // |100 * -0.02 / 0.01 * (0.01 + 0.001) / (0.01 + 0.02)| = 200 * 0.011 / 0.03 = 73.333...
   EXPECT_NEAR(AdaptedPenalty(100.0, 0.01, -0.02, 1e-3), 200.0 * 0.011 / 0.03, 1e-12);
 }
 
-TEST(AdaptivePenalty, SignChangeFromNearDividesByTen) {
-  // |g_p| = 5e-4 <= max_gap: |100 * 5e-4 / (10 * -1e-3)| = 5.
-  EXPECT_NEAR(AdaptedPenalty(100.0, -1e-3, 5e-4, 1e-3), 5.0, 1e-12);
+TEST(AdaptivePenalty, BounceFromNearDividesByTen) {
+  // |g_p| = 5e-4 <= max_gap, g = 5e-3 open: |100 * 5e-4 / (10 * 5e-3)| = 1.
+  EXPECT_NEAR(AdaptedPenalty(100.0, 5e-3, -5e-4, 1e-3), 1.0, 1e-12);
 }
 
 TEST(AdaptivePenalty, WithinMaxGapKeepsThePenalty) {
   EXPECT_EQ(AdaptedPenalty(100.0, -8e-4, -6e-4, 1e-3), 100.0);
   EXPECT_EQ(AdaptedPenalty(100.0, 1e-3, 2e-3, 1e-3), 100.0);  // |g| = max_gap is within
   EXPECT_EQ(AdaptedPenalty(100.0, 0.0, 0.0, 1e-3), 100.0);
+}
+
+TEST(AdaptivePenalty, SignChangeOfRoundOffGapsKeepsThePenalty) {
+  // Kratos: |100 * -2.6e-6 / (10 * 2.2e-10)| = 1.2e5 (and the way back 8.5e-6).
+  EXPECT_EQ(AdaptedPenalty(100.0, 2.2e-10, -2.6e-6, 1e-3), 100.0);
+  EXPECT_EQ(AdaptedPenalty(100.0, -2.6e-6, 2.2e-10, 1e-3), 100.0);
+}
+
+TEST(AdaptivePenalty, OpenNodeKeepsThePenalty) {
+  // Open beyond max_gap and not penetrated before: its penalty pushes nothing (Kratos: x 4).
+  EXPECT_EQ(AdaptedPenalty(100.0, 2e-3, 0.0, 1e-3), 100.0);
+  EXPECT_EQ(AdaptedPenalty(100.0, 8e-3, 5e-4, 1e-3), 100.0);
+}
+
+TEST(AdaptivePenalty, PenetrationAfterOpeningGrows) {
+  // g_p = 5e-4 open, g = -3e-3: not the crossing formula (Kratos: |100 * 5e-4 / (10 * -3e-3)| =
+  // 1.67) but the growth of a penetration: jump 3.5e-3 < 5e-3, |g| < 10 max_gap:
+  // 100 (sqrt(3 - 1) + 1)^2 = 100 (3 + 2 sqrt(2)).
+  EXPECT_NEAR(AdaptedPenalty(100.0, -3e-3, 5e-4, 1e-3), 100.0 * (3.0 + 2.0 * std::sqrt(2.0)), 1e-9);
+  // From far: g_p = 0.02 open, g = -0.01 jumps by 0.03 > 0.02: doubles (Kratos: 73.3).
+  EXPECT_EQ(AdaptedPenalty(100.0, -0.01, 0.02, 1e-3), 200.0);
+}
+
+TEST(AdaptivePenalty, JumpComparesSizes) {
+  // g = -0.02, g_p = -0.012: the change 8e-3 is below |g_p| (Kratos, with signed gaps, takes
+  // max(-2e-3, -0.012, 5e-3) and doubles); |g| > 1.01 |g_p|: 2 * 100 * 0.012 / 0.02 = 120.
+  EXPECT_NEAR(AdaptedPenalty(100.0, -0.02, -0.012, 1e-3), 120.0, 1e-9);
 }
 
 TEST(AdaptivePenalty, JumpDoublesThePenalty) {
@@ -85,29 +110,49 @@ struct Interface {
   }
 };
 
-TEST(AdaptivePenalty, FirstIterationStartsFromTheProcessInfoPenalty) {
+TEST(AdaptivePenalty, FirstIterationStartsFromTheProcessInfoPenaltyAndAdaptsNothing) {
+  // The first iterate is the scheme's prediction: no solve answered the penalty yet.
   Interface s;
   s.root.GetProcessInfo().SetValue(STEP, 1);
   s.root.GetProcessInfo().SetValue(NL_ITERATION_NUMBER, 1);
-  s.Gaps(1, -0.06, -0.006);  // a jump with max_gap = 1e-3 x NODAL_H 2 = 2e-3: doubles
-  s.Gaps(2, -1e-3, -1e-3);   // within max_gap: keeps
+  s.N(1).Set(ACTIVE);
+  s.Gaps(1, -0.06, -0.006);  // max_gap = 1e-3 x NODAL_H 2 = 2e-3: would double
   s.Gaps(3, -0.06, -0.006);  // master: untouched
   AdaptivePenaltyUtilities::AdaptNodalPenalties(*s.contact);
-  EXPECT_EQ(s.N(1).GetValue(INITIAL_PENALTY), 200.0);
+  EXPECT_EQ(s.N(1).GetValue(INITIAL_PENALTY), 100.0);
   EXPECT_EQ(s.N(2).GetValue(INITIAL_PENALTY), 100.0);
   EXPECT_EQ(s.N(3).GetValue(INITIAL_PENALTY), 7.0);
 }
 
-TEST(AdaptivePenalty, LaterIterationsStartFromTheNodalPenalty) {
+TEST(AdaptivePenalty, SecondIterationComparesWithTheLastConvergedGap) {
   Interface s;
-  s.root.GetProcessInfo().SetValue(STEP, 1);
-  s.root.GetProcessInfo().SetValue(NL_ITERATION_NUMBER, 2);
-  s.Gaps(1, -0.06, -0.006);
-  // max_gap = 2e-3: g = -0.01, g_p = -0.009 -> 7 (sqrt(5 - 1) + 1)^2 = 63.
-  s.Gaps(2, -0.01, -0.009);
+  ProcessInfo& info = s.root.GetProcessInfo();
+  info.SetValue(STEP, 3);
+  info.SetValue(NL_ITERATION_NUMBER, 1);
+  s.N(1).Set(ACTIVE);  // node 2 is inactive in the first solve
+  // Step start: buffer 1 holds the last step's converged gap, buffer 0 the predicted one.
+  s.Gaps(1, 0.05, -0.009);
+  s.Gaps(2, 0.05, -0.009);
   AdaptivePenaltyUtilities::AdaptNodalPenalties(*s.contact);
-  EXPECT_EQ(s.N(1).GetValue(INITIAL_PENALTY), 14.0);
-  EXPECT_NEAR(s.N(2).GetValue(INITIAL_PENALTY), 63.0, 1e-12);
+  EXPECT_EQ(s.N(1).GetValue(INITIAL_PENALTY), 7.0);
+  // Iteration 2: PostCriteria copied the predicted gap into buffer 1. Node 1 is compared with
+  // -0.009: 7 (sqrt(5 - 1) + 1)^2 = 63 (Kratos: a sign change from 0.05, 7 * 0.05 / 0.01 *
+  // 0.012 / 0.06 = 7). Node 2's penetration answers no penalty; it is active from now on.
+  s.N(2).Set(ACTIVE);
+  info.SetValue(NL_ITERATION_NUMBER, 2);
+  s.Gaps(1, -0.01, 0.05);
+  s.Gaps(2, -0.01, 0.05);
+  AdaptivePenaltyUtilities::AdaptNodalPenalties(*s.contact);
+  EXPECT_NEAR(s.N(1).GetValue(INITIAL_PENALTY), 63.0, 1e-12);
+  EXPECT_EQ(s.N(2).GetValue(INITIAL_PENALTY), 7.0);
+  // Iteration 3: node 1, 63 (sqrt(5.5 - 1) + 1)^2; node 2 answers now, compared with its last
+  // answer, -0.009: the change 0.021 > max(3e-3, 9e-3, 0.01) doubles.
+  info.SetValue(NL_ITERATION_NUMBER, 3);
+  s.Gaps(1, -0.011, -0.01);
+  s.Gaps(2, -0.03, -0.01);
+  AdaptivePenaltyUtilities::AdaptNodalPenalties(*s.contact);
+  EXPECT_NEAR(s.N(1).GetValue(INITIAL_PENALTY), 63.0 * std::pow(std::sqrt(4.5) + 1.0, 2), 1e-9);
+  EXPECT_EQ(s.N(2).GetValue(INITIAL_PENALTY), 14.0);
 }
 
 TEST(AdaptivePenalty, NodeWithoutAreaKeepsItsPenalty) {
