@@ -122,7 +122,8 @@ def test_step_splitting_settings_are_checked(tmp_path, settings, fragment):
     assert "solver_settings.step_splitting" in result.stderr and fragment in result.stderr, result.stderr
 
 
-def test_converged_results_are_unchanged_by_splitting_settings(tmp_path):
+def test_converged_results_are_unchanged_by_splitting_settings(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)  # the case writes results.json into the working folder
     os.makedirs(tmp_path / "a")
     os.makedirs(tmp_path / "b")
     plain = mc.run(block_case(str(tmp_path / "a"), push="-0.01*t", max_iteration=20))
