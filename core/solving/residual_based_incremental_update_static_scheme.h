@@ -6,12 +6,29 @@
 namespace mc {
 
 /// The static scheme: the local systems are the entities' own (tangent and residual) and an
-/// iteration adds the increment to the free DoFs, u <- u + dx. The predictor keeps the values
-/// of the previous step (prescribed DoFs carry what the processes imposed).
+/// iteration adds the increment to the free DoFs, u <- u + dx.
+///
+/// The predictor keeps the values of the previous step (prescribed DoFs carry what the
+/// processes imposed), as Kratos does; with `extrapolate` the free DoFs start the step from the
+/// linear extrapolation of the last two converged steps,
+///   u_{n+1}^0 = u_n + (dt_{n+1} / dt_n) (u_n - u_{n-1}),
+/// read from buffer positions 1 and 2 (so the buffer must hold 3 steps) with dt_n =
+/// ProcessInfo[PREVIOUS_DELTA_TIME]. On a proportional load path this is the converged answer
+/// up to the curvature of the path, which saves the first Newton iterations of each step
+/// (issue 14). Not a Kratos option.
 class ResidualBasedIncrementalUpdateStaticScheme : public Scheme {
  public:
+  explicit ResidualBasedIncrementalUpdateStaticScheme(bool extrapolate = false) : extrapolate_(extrapolate) {}
+
   std::string Name() const override { return "static"; }
   bool PassesEntityLeftHandSide() const override { return true; }
+  bool Extrapolates() const noexcept { return extrapolate_; }
+  void Predict(ModelPart& model_part, const DofsArray& dofs) override;
+  /// With `extrapolate`, also an InputError unless the buffer holds 3 steps.
+  void Check(const ModelPart& model_part) const override;
+
+ private:
+  bool extrapolate_;
 };
 
 }  // namespace mc
