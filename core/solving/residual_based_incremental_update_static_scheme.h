@@ -13,9 +13,13 @@ namespace mc {
 /// linear extrapolation of the last two converged steps,
 ///   u_{n+1}^0 = u_n + (dt_{n+1} / dt_n) (u_n - u_{n-1}),
 /// read from buffer positions 1 and 2 (so the buffer must hold 3 steps) with dt_n =
-/// ProcessInfo[PREVIOUS_DELTA_TIME]. On a proportional load path this is the converged answer
-/// up to the curvature of the path, which saves the first Newton iterations of each step
-/// (issue 14). Not a Kratos option.
+/// ProcessInfo[PREVIOUS_DELTA_TIME]. On a smooth load path this is the converged answer up to
+/// the curvature of the path, which saves Newton iterations (issue 14; not a Kratos option).
+/// Every free DoF is extrapolated, the contact multipliers too: keeping them at the last step's
+/// values while the displacements move on took more iterations on the measured cases
+/// (benchmarks/hertz/results_predictor.md). After a split step dt_n is the full step while
+/// u_n - u_{n-1} is the last sub-step's increment: the next step extrapolates too little, which
+/// costs iterations, not accuracy.
 class ResidualBasedIncrementalUpdateStaticScheme : public Scheme {
  public:
   explicit ResidualBasedIncrementalUpdateStaticScheme(bool extrapolate = false) : extrapolate_(extrapolate) {}

@@ -70,6 +70,10 @@ void ResidualBasedNewtonRaphsonContactStrategy::Predict() {
   // values, and a body in free flight (no load, an initial velocity) had a zero residual at the
   // first iteration and stood still.
   scheme_->Predict(model_part_, builder_->GetDofSet());
+  // The active set stays the search's prediction at the last converged coordinates, also after
+  // the static scheme's extrapolation: the NCP evaluated at the extrapolated state (or its union
+  // with the search's set) took as many or more iterations on the Hertz cases and made a penalty
+  // case diverge (benchmarks/hertz/results_predictor.md).
   ModelPart* contact = FindContactModelPart(model_part_);
   if (contact && contact->HasNodalSolutionStepVariable(WEIGHTED_GAP)) {
     const bool slip = model_part_.Is(SLIP) && contact->HasNodalSolutionStepVariable(WEIGHTED_SLIP);
