@@ -63,6 +63,7 @@ def _relative(a: np.ndarray, b: np.ndarray) -> float:
 
 @pytest.mark.parametrize("tight", [False, True], ids=["as-written", "tight"])
 def test_fewer_iterations_and_the_same_answer_on_a_twenty_step_punch(tight):
+    """solver_settings.displacement_extrapolation true against false on the same case."""
     folder = os.path.join(CASES, TWENTY_STEPS)
     overrides = TIGHT if tight else []
     before, after = _run(folder, False, overrides), _run(folder, True, overrides)
