@@ -17,7 +17,8 @@ namespace mc {
 /// the curvature of the path, which saves Newton iterations (issue 14; not a Kratos option).
 /// Every free DoF is extrapolated, the contact multipliers too: keeping them at the last step's
 /// values while the displacements move on took more iterations on the measured cases
-/// (benchmarks/hertz/results_predictor.md). After a split step dt_n is the full step while
+/// (benchmarks/hertz/results_predictor.md). The contact strategy skips this predictor after a
+/// step in which the contact state changed (Extrapolates()). After a split step dt_n is the full step while
 /// u_n - u_{n-1} is the last sub-step's increment: the next step extrapolates too little, which
 /// costs iterations, not accuracy.
 class ResidualBasedIncrementalUpdateStaticScheme : public Scheme {
@@ -26,7 +27,7 @@ class ResidualBasedIncrementalUpdateStaticScheme : public Scheme {
 
   std::string Name() const override { return "static"; }
   bool PassesEntityLeftHandSide() const override { return true; }
-  bool Extrapolates() const noexcept { return extrapolate_; }
+  bool Extrapolates() const override { return extrapolate_; }
   void Predict(ModelPart& model_part, const DofsArray& dofs) override;
   /// With `extrapolate`, also an InputError unless the buffer holds 3 steps.
   void Check(const ModelPart& model_part) const override;

@@ -37,9 +37,9 @@ TEST(StaticPredictor, ExtrapolatesTheFreeDofsWithTheTimeStepRatio) {
   TwoNodes t;
   ResidualBasedIncrementalUpdateStaticScheme scheme(true);
   t.Step(1.0, 0.1, 0.5);
-  t.Step(1.5, 0.2, 0.7);        // dt_n = 0.5
-  t.mp.CloneTimeStep(2.5);      // dt_{n+1} = 1.0: ratio 2
-  t.U(1) = 0.4;                 // the Dirichlet value a process imposes for the step
+  t.Step(1.5, 0.2, 0.7);    // dt_n = 0.5
+  t.mp.CloneTimeStep(2.5);  // dt_{n+1} = 1.0: ratio 2
+  t.U(1) = 0.4;             // the Dirichlet value a process imposes for the step
   scheme.Predict(t.mp, t.dofs);
   EXPECT_DOUBLE_EQ(t.U(2), 0.7 + 2.0 * (0.7 - 0.5));
   EXPECT_DOUBLE_EQ(t.U(1), 0.4);  // fixed: kept
