@@ -30,7 +30,11 @@ void AddSolvingToPython(py::module_& m) {
              std::shared_ptr<ResidualBasedIncrementalUpdateStaticScheme>>(
       m, "StaticScheme",
       "Incremental update u += du (static problems; Kratos ResidualBasedIncrementalUpdateStaticScheme).")
-      .def(py::init<>(), "The static scheme.");
+      .def(py::init<bool>(), py::arg("extrapolate") = false,
+           "The static scheme; extrapolate: free DoFs start each step from the linear extrapolation of the last "
+           "two steps (needs buffer_size 3).")
+      .def("Extrapolates", &ResidualBasedIncrementalUpdateStaticScheme::Extrapolates,
+           "Whether the predictor extrapolates the last two steps.");
   py::class_<ResidualBasedBossakDisplacementScheme, Scheme, std::shared_ptr<ResidualBasedBossakDisplacementScheme>>(
       m, "BossakScheme",
       "Bossak (alpha_m) implicit dynamics; Newmark for alpha_m = 0 (Kratos "

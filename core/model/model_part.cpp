@@ -69,6 +69,7 @@ const ProcessInfo& ModelPart::GetProcessInfo() const { return GetRootModelPart()
 void ModelPart::CloneTimeStep(double time) {
   ModelPart& root = GetRootModelPart();
   ProcessInfo& info = root.GetProcessInfo();
+  if (info.GetValue(STEP) > 0) info.SetValue(PREVIOUS_DELTA_TIME, info.GetValue(DELTA_TIME));
   info.SetValue(DELTA_TIME, time - info.GetValue(TIME));
   info.SetValue(TIME, time);
   info.SetValue(STEP, info.GetValue(STEP) + 1);

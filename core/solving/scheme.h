@@ -32,6 +32,9 @@ class Scheme {
   virtual void FinalizeSolutionStep(ModelPart& model_part);
   /// First guess of the step for the free DoFs; the static default keeps the last values.
   virtual void Predict(ModelPart& model_part, const DofsArray& dofs) {}
+  /// Whether Predict only extrapolates the last steps' values (no state of its own to make
+  /// consistent), so that a strategy that knows the path turned in the last step may skip it.
+  virtual bool Extrapolates() const { return false; }
   /// u += dx on the free DoFs (and whatever depends on u in derived schemes).
   virtual void Update(ModelPart& model_part, const DofsArray& dofs, const Vector& dx);
   /// Validates the entities (Entity::Check) and the scheme's own data.

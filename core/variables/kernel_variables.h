@@ -24,6 +24,8 @@ namespace mc {
 // Time and control (ProcessInfo).
 MC_DECLARE_VARIABLE(double, TIME);
 MC_DECLARE_VARIABLE(double, DELTA_TIME);
+/// ProcessInfo: the DELTA_TIME of the step before the current one (set by CloneTimeStep).
+MC_DECLARE_VARIABLE(double, PREVIOUS_DELTA_TIME);
 MC_DECLARE_VARIABLE(int, STEP);
 MC_DECLARE_VARIABLE(int, NL_ITERATION_NUMBER);
 MC_DECLARE_VARIABLE(int, DOMAIN_SIZE);

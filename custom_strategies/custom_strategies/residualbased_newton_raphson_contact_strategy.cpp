@@ -69,7 +69,17 @@ void ResidualBasedNewtonRaphsonContactStrategy::Predict() {
   // of a dynamic scheme consistent with the first guess. Without it they kept the last step's
   // values, and a body in free flight (no load, an initial velocity) had a zero residual at the
   // first iteration and stood still.
-  scheme_->Predict(model_part_, builder_->GetDofSet());
+  // An extrapolation of the last step is sound only where the path was smooth in it. Across a
+  // change of contact state it carries the kink on: a gap that closed in the last step is
+  // extrapolated as a free approach, i.e. a penetration (measured: one or two more iterations in
+  // the step after contact onset, benchmarks/hertz/results_predictor.md). Unknown history (the
+  // first step, a resumed run) counts as a change.
+  const bool smooth = !converged_states_.empty() && converged_states_ == previous_converged_states_;
+  if (smooth || !scheme_->Extrapolates()) scheme_->Predict(model_part_, builder_->GetDofSet());
+  // The active set stays the search's prediction at the last converged coordinates, also after
+  // an extrapolation: the NCP evaluated at the extrapolated state (or its union with the
+  // search's set) took as many or more iterations on the Hertz cases and made a penalty case
+  // diverge (benchmarks/hertz/results_predictor.md).
   ModelPart* contact = FindContactModelPart(model_part_);
   if (contact && contact->HasNodalSolutionStepVariable(WEIGHTED_GAP)) {
     const bool slip = model_part_.Is(SLIP) && contact->HasNodalSolutionStepVariable(WEIGHTED_SLIP);
@@ -81,6 +91,14 @@ void ResidualBasedNewtonRaphsonContactStrategy::Predict() {
     if (updater_) updater_->ComputeWeightedGap(model_part_);
   }
   if (move_mesh_) MoveMesh();
+}
+
+void ResidualBasedNewtonRaphsonContactStrategy::FinalizeSolutionStep() {
+  NewtonRaphsonStrategy::FinalizeSolutionStep();
+  std::vector<char> states = ContactStates();
+  previous_converged_states_ =
+      converged_states_.empty() ? std::vector<char>(states.size(), 0) : std::move(converged_states_);
+  converged_states_ = std::move(states);
 }
 
 std::vector<char> ResidualBasedNewtonRaphsonContactStrategy::ContactStates() const {

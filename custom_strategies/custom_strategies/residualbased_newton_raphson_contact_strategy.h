@@ -38,7 +38,9 @@ struct ContactStrategySettings {
 ///  - Predict: the scheme's predictor (dynamic schemes: the first guess and its velocities and
 ///    accelerations), then zeroes WEIGHTED_GAP on the "Contact" nodes, asks the MortarUpdater to
 ///    integrate it at the coordinates of the last converged step, and moves the mesh to
-///    X0 + DISPLACEMENT.
+///    X0 + DISPLACEMENT. An extrapolating predictor (the static scheme's
+///    displacement_extrapolation) is skipped after a step in which the contact state of a slave
+///    node changed: the path turned there, and extrapolating it carries the turn on.
 ///  - With `adaptative_strategy`: a step that does not converge (or inverts an element: the
 ///    Jacobian determinant of every solid element is checked after each update) is split as
 ///    NewtonRaphsonStrategy's StepSplitting does (split_factor, max_number_splits); the active
@@ -66,6 +68,8 @@ class ResidualBasedNewtonRaphsonContactStrategy : public NewtonRaphsonStrategy {
   std::string Name() const override { return "newton_raphson_contact_strategy"; }
   void InitializeSolutionStep() override;
   void Predict() override;
+  /// The base step end, then the contact states of the step are kept for the next Predict.
+  void FinalizeSolutionStep() override;
 
   const ContactStrategySettings& Settings() const noexcept { return settings_; }
   void SetMortarUpdater(std::shared_ptr<MortarUpdater> updater) noexcept { updater_ = std::move(updater); }
@@ -119,6 +123,9 @@ class ResidualBasedNewtonRaphsonContactStrategy : public NewtonRaphsonStrategy {
     bool slip;
   };
   std::vector<StartFlags> start_flags_;
+  /// ContactStates at the end of the last two converged steps (the first: all open).
+  std::vector<char> converged_states_;
+  std::vector<char> previous_converged_states_;
 };
 
 }  // namespace mc

@@ -124,8 +124,16 @@ class MechanicalSolver:
             self.main_model_part.AddNodalSolutionStepVariable(_core.GetVariable(name))
 
     def minimum_buffer_size(self) -> int:
-        # A BDF scheme of order p differentiates over p + 1 buffer positions (spec 2.5).
-        return max(2, self._bdf_order() + 1)
+        # A BDF scheme of order p differentiates over p + 1 buffer positions (spec 2.5); the
+        # extrapolating static predictor reads the last two steps.
+        return max(2, self._bdf_order() + 1, 3 if self._extrapolates() else 2)
+
+    def _extrapolates(self) -> bool:
+        """Whether the static scheme extrapolates the last two steps (``displacement_extrapolation``,
+        mortarcontact's key: a non-linear static analysis only)."""
+        s = self.settings
+        return (self.scheme_type in ("static", "pseudo_static") and s["analysis_type"].GetString() == "non_linear"
+                and s["displacement_extrapolation"].GetBool())
 
     def ImportModelPart(self) -> None:
         """Reads the mesh named by ``model_import_settings``: ``input_type`` ``"mdpa"`` (Kratos), or
@@ -315,7 +323,7 @@ class MechanicalSolver:
         process_info.SetValue(_core.RAYLEIGH_ALPHA, s["rayleigh_alpha"].GetDouble())
         process_info.SetValue(_core.RAYLEIGH_BETA, s["rayleigh_beta"].GetDouble())
         if self.scheme_type == "static" or self.scheme_type == "pseudo_static":
-            scheme = _core.StaticScheme()
+            scheme = _core.StaticScheme(extrapolate=self._extrapolates())
         elif self._bdf_order():
             scheme = _core.BDFScheme(order=self._bdf_order())
         elif self.scheme_type == "newmark":

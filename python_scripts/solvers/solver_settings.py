@@ -43,6 +43,7 @@ STRUCTURAL_DEFAULTS = """{
     "use_orthogonal_subscales": false,
     "reform_dofs_at_each_step": false,
     "use_old_stiffness_in_first_iteration": false,
+    "displacement_extrapolation": false,
     "compute_reactions": true,
     "solving_strategy_settings": {
         "type": "newton_raphson",
@@ -114,6 +115,8 @@ KEYS_WITHOUT_EFFECT = {
 }
 #: The structural solver keeps its storage between steps; the contact solver clears it, as Kratos.
 CLEAR_STORAGE_WITHOUT_EFFECT = "the strategy keeps its storage between steps (the results are the same)"
+#: Only the static scheme reads it (the dynamic schemes predict from the velocity and acceleration).
+EXTRAPOLATION_WITHOUT_EFFECT = "only the static scheme of a non-linear analysis extrapolates the last two steps"
 #: The contact strategies build the matrix at every iteration (the contact pairs change it).
 OLD_STIFFNESS_WITHOUT_EFFECT = "the contact strategies build the matrix at every iteration"
 
@@ -191,6 +194,8 @@ def validate_solver_settings(settings: _core.Parameters) -> None:
 def _warn_about_keys_without_effect(settings: _core.Parameters) -> None:
     defaults = _core.Parameters(STRUCTURAL_DEFAULTS)
     warn_about_keys_without_effect(settings, defaults, KEYS_WITHOUT_EFFECT)
+    if settings["solver_type"].GetString() != "Static" or settings["analysis_type"].GetString() != "non_linear":
+        _core.NoEffectWarnings.IfGiven(settings, defaults, "displacement_extrapolation", EXTRAPOLATION_WITHOUT_EFFECT)
     contact = settings["contact_settings"]
     if contact.size() > 0 and contact["mortar_type"].GetString():
         _core.NoEffectWarnings.IfGiven(settings, defaults, "use_old_stiffness_in_first_iteration",
