@@ -162,6 +162,7 @@ sanitize-build: deps
 
 test-sanitize: sanitize-build
 	ASAN_OPTIONS=abort_on_error=1:detect_odr_violation=0 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+	  LSAN_OPTIONS=suppressions=$(CURDIR)/tests/sanitizers/lsan.supp \
 	  ctest --test-dir $(SANITIZE_DIR) --output-on-failure -j $(JOBS)
 	$(SANITIZE_ENV) $(PYTHON) -m pytest -q -p no:cacheprovider tests/python
 
