@@ -6,8 +6,8 @@
 #include "core/model/model_part.h"
 #include "core/variables/kernel_variables.h"
 #include "custom_conditions/contact_condition_utilities.h"
-#include "custom_utilities/contact_variables.h"
 #include "custom_utilities/adaptive_penalty_utilities.h"
+#include "custom_utilities/contact_variables.h"
 #include "custom_utilities/normal_calculation_utilities.h"
 
 namespace mc {

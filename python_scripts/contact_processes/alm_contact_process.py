@@ -133,18 +133,12 @@ class ALMContactProcess(SearchBaseProcess):
                 "use 0 (never reset the SLIP flags) or N > 0 (reset every N steps)")
 
     def check_solver_variables(self) -> None:
-        """The solver registers its formulation before the mesh is read (spec 2.10): the process's
-        must be the same. Axisymmetry needs a 2D model."""
+        """The solver's mortar_type must be this process's; axisymmetry needs a 2D model."""
         info = self.root.GetProcessInfo()
         if self.axisymmetric and info.GetValue(_core.DOMAIN_SIZE) != 2:
             raise _core.InputError(f"{self.settings['alternative_formulations'].Where()}.axisymmetric: true needs "
                                    f"domain_size 2 (x = radius, y = axis), got {info.GetValue(_core.DOMAIN_SIZE)}")
-        solver = info.GetValue(_core.MORTAR_TYPE)
-        if solver != self.formulation.mortar_type:
-            found = f"\"{solver}\"" if solver else "none (a solver without contact_settings)"
-            raise _core.InputError(
-                f"{self.python_module} with contact_type '{self.settings['contact_type'].GetString()}' needs "
-                f"solver_settings.contact_settings.mortar_type \"{self.formulation.mortar_type}\"; found {found}")
+        self._check_mortar_type(f"contact_type '{self.settings['contact_type'].GetString()}'")
 
     def ExecuteInitialize(self) -> None:
         super().ExecuteInitialize()

@@ -73,10 +73,7 @@ class MeshTyingProcess(SearchBaseProcess):
         self.model = model
         self.settings = settings
         self.interval = _settings.interval_of(settings)
-        self.searches = []
-        self.root = None
-        self._steps_since_search = None
-        self._inside = None
+        self._init_search_state()
         self._check_factors()
         self.variable = self._tied_variable()
         self.formulation = _core.ContactFormulation.OfProcess(
@@ -98,13 +95,8 @@ class MeshTyingProcess(SearchBaseProcess):
         return variable
 
     def check_solver_variables(self) -> None:
-        """The solver's mortar_type must be the tying of this variable's kind (spec 2.10)."""
-        solver = self.root.GetProcessInfo().GetValue(_core.MORTAR_TYPE)
-        if solver != self.formulation.mortar_type:
-            found = f"\"{solver}\"" if solver else "none (a solver without contact_settings)"
-            raise _core.InputError(
-                f"{self.python_module} with variable_name '{self.variable.Name()}' needs "
-                f"solver_settings.contact_settings.mortar_type \"{self.formulation.mortar_type}\"; found {found}")
+        """The solver's mortar_type must be the tying of this variable's kind."""
+        self._check_mortar_type(f"variable_name '{self.variable.Name()}'")
 
     def ExecuteInitialize(self) -> None:
         super().ExecuteInitialize()

@@ -59,12 +59,7 @@ class SearchBaseProcess(Process):
         self.settings = settings
         self.settings.RecursivelyValidateAndAssignDefaults(self.GetDefaultParameters())
         self.interval = _settings.interval_of(self.settings)
-        self.searches = []
-        #: (STEP, statistics of UpdateMortarConditions) of every search so far, slot after slot
-        self.search_statistics = []
-        self.root = None
-        self._steps_since_search = None
-        self._inside = None
+        self._init_search_state()
         self._check_types()
         self._check_factors()
         _core.NoEffectWarnings.IfGiven(self.settings, self.GetDefaultParameters(), "consider_tessellation",
@@ -103,6 +98,14 @@ class SearchBaseProcess(Process):
             slots.append(("0", [], slaves["0"].GetStringArray(), ids["0"].GetInt(), mu("0")))
         return slots
 
+    def _init_search_state(self) -> None:
+        self.searches = []
+        #: (STEP, statistics of UpdateMortarConditions) of every search so far, slot after slot
+        self.search_statistics = []
+        self.root = None
+        self._steps_since_search = None
+        self._inside = None
+
     # Hooks ---------------------------------------------------------------------------------------
     def ExecuteInitialize(self) -> None:
         self.root = resolve_model_part(self.model, self.settings["model_part_name"].GetString())
@@ -119,7 +122,7 @@ class SearchBaseProcess(Process):
                                       self.settings["normal_check_proportion"].GetDouble())
             check_initial_overlap(interface, slot)
             interfaces.append((slot, interface, slaves, mu))
-        if sp["adapt_search"].GetBool():
+        if sp.Has("adapt_search") and sp["adapt_search"].GetBool():  # mesh tying has no adapt_search
             self._adapt_search([interface for _, interface, _, _ in interfaces])
         info.SetValue(_core.ACTIVE_CHECK_FACTOR, sp["active_check_factor"].GetDouble())
         for slot, interface, slaves, mu in interfaces:
@@ -162,6 +165,16 @@ class SearchBaseProcess(Process):
 
     def check_solver_variables(self) -> None:
         """Hook: the start-up check of the mortar_type pairing (spec 2.10)."""
+
+    def _check_mortar_type(self, chosen_by: str) -> None:
+        """The solver registers its formulation before the mesh is read (spec 2.10): this process's,
+        chosen by `chosen_by` (its key and value, for the message), must be the same."""
+        solver = self.root.GetProcessInfo().GetValue(_core.MORTAR_TYPE)
+        if solver != self.formulation.mortar_type:
+            found = f"\"{solver}\"" if solver else "none (a solver without contact_settings)"
+            raise _core.InputError(
+                f"{self.python_module} with {chosen_by} needs "
+                f"solver_settings.contact_settings.mortar_type \"{self.formulation.mortar_type}\"; found {found}")
 
     def ExecuteInitializeSolutionStep(self) -> None:
         info = self.root.GetProcessInfo()

@@ -77,7 +77,7 @@ def _flat_interface(dim: int):
     for variable in (mc.DISPLACEMENT, mc.TEMPERATURE):
         root.AddNodalSolutionStepVariable(variable)
     origin, destination = root.CreateSubModelPart("Origin"), root.CreateSubModelPart("Destination")
-    properties = root.GetProperties(0)
+    properties = root.CreateNewProperties(0)
     next_id = [1]
 
     def node(part, x, y, offset):
@@ -230,7 +230,7 @@ def _surfaces(slave_nodes, slave_faces, master_nodes, master_faces):
     root = model.CreateModelPart("Structure")
     root.AddNodalSolutionStepVariable(mc.TEMPERATURE)
     slave, master = root.CreateSubModelPart("Slave"), root.CreateSubModelPart("Master")
-    properties = root.GetProperties(0)
+    properties = root.CreateNewProperties(0)
     for part, nodes, faces, first in ((slave, slave_nodes, slave_faces, 1), (master, master_nodes, master_faces, 100)):
         for node_id, x in nodes.items():
             part.CreateNewNode(node_id, *x)
