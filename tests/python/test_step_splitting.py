@@ -122,10 +122,13 @@ def test_step_splitting_settings_are_checked(tmp_path, settings, fragment):
     assert "solver_settings.step_splitting" in result.stderr and fragment in result.stderr, result.stderr
 
 
-def test_converged_results_are_unchanged_by_splitting_settings(tmp_path):
+def test_converged_results_are_unchanged_by_splitting_settings(tmp_path, monkeypatch):
+    # Each run writes its outputs (relative paths) in its own folder, not where pytest was started.
     os.makedirs(tmp_path / "a")
     os.makedirs(tmp_path / "b")
+    monkeypatch.chdir(tmp_path / "a")
     plain = mc.run(block_case(str(tmp_path / "a"), push="-0.01*t", max_iteration=20))
+    monkeypatch.chdir(tmp_path / "b")
     split = mc.run(block_case(str(tmp_path / "b"), push="-0.01*t", max_iteration=20,
                               splitting={"max_number_splits": 3}))
     assert split.solver.strategy.SplitLevelUsed() == 0
