@@ -144,7 +144,8 @@ fuzz: fuzz-build
 # (issue 16), in build/sanitize (GCC; installed into build/sanitize/install, which the Python tests
 # import first). -O0: the generated contact conditions take hours to compile with optimisation and
 # the sanitizers on a shared 2-core machine. Python itself is not instrumented: libasan is preloaded, and its leaks (interned
-# objects kept to the end) are not reported; the C++ tests check leaks too.
+# objects kept to the end) are not reported; the C++ tests check leaks too, except those allocated inside PETSc and
+# OpenMPI (tests/sanitizers/lsan.supp).
 SANITIZE_DIR := build/sanitize
 SANITIZE_PYDIR := $(SANITIZE_DIR)/install/lib/python
 SANITIZE_ENV := ASAN_OPTIONS=detect_leaks=0:abort_on_error=1:detect_odr_violation=0 \
@@ -162,6 +163,7 @@ sanitize-build: deps
 
 test-sanitize: sanitize-build
 	ASAN_OPTIONS=abort_on_error=1:detect_odr_violation=0 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+	  LSAN_OPTIONS=suppressions=$(CURDIR)/tests/sanitizers/lsan.supp \
 	  ctest --test-dir $(SANITIZE_DIR) --output-on-failure -j $(JOBS)
 	$(SANITIZE_ENV) $(PYTHON) -m pytest -q -p no:cacheprovider tests/python
 

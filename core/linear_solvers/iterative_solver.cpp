@@ -40,16 +40,27 @@ struct IterativeSolver::Backend {
 
 template <class Solver>
 struct IterativeSolver::BackendFor : IterativeSolver::Backend {
+  static constexpr bool kIlut = std::is_same_v<typename Solver::Preconditioner, Eigen::IncompleteLUT<double, int>>;
   explicit BackendFor(const Options& options) {
     solver.setTolerance(options.tolerance);
     solver.setMaxIterations(options.max_iteration);
     if constexpr (requires(Solver s) { s.set_restart(30); }) solver.set_restart(options.krylov_space_dimension);
-    if constexpr (std::is_same_v<typename Solver::Preconditioner, Eigen::IncompleteLUT<double, int>>) {
+    if constexpr (kIlut) {
       if (options.preconditioner == Preconditioner::kIlu0) solver.preconditioner().setFillfactor(1);
     }
   }
-  void Analyze(const SparseMatrix& A) override { solver.analyzePattern(A); }
-  void Factorize(const SparseMatrix& A) override { solver.factorize(A); }
+  // Eigen 3.4.0's IncompleteLUT::analyzePattern leaves its m_info uninitialised, and the Krylov solver's
+  // analyzePattern copies it (an invalid enum load under UBSan). Its compute() analyses and factorizes
+  // in one call and sets m_info, at the price of redoing the fill-reducing ordering for each matrix.
+  void Analyze(const SparseMatrix& A) override {
+    if constexpr (!kIlut) solver.analyzePattern(A);
+  }
+  void Factorize(const SparseMatrix& A) override {
+    if constexpr (kIlut)
+      solver.compute(A);
+    else
+      solver.factorize(A);
+  }
   Eigen::ComputationInfo Solve(const Vector& b, Vector& x, int& iterations, double& residual) override {
     if (solver.info() != Eigen::Success) return solver.info();  // preconditioner breakdown
     x = solver.solve(b);

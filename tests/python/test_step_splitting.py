@@ -123,10 +123,12 @@ def test_step_splitting_settings_are_checked(tmp_path, settings, fragment):
 
 
 def test_converged_results_are_unchanged_by_splitting_settings(tmp_path, monkeypatch):
-    monkeypatch.chdir(tmp_path)  # the case writes results.json into the working folder
+    # Each run writes its outputs (relative paths) in its own folder, not where pytest was started.
     os.makedirs(tmp_path / "a")
     os.makedirs(tmp_path / "b")
+    monkeypatch.chdir(tmp_path / "a")
     plain = mc.run(block_case(str(tmp_path / "a"), push="-0.01*t", max_iteration=20))
+    monkeypatch.chdir(tmp_path / "b")
     split = mc.run(block_case(str(tmp_path / "b"), push="-0.01*t", max_iteration=20,
                               splitting={"max_number_splits": 3}))
     assert split.solver.strategy.SplitLevelUsed() == 0
