@@ -66,6 +66,9 @@ def rss_kib() -> int:
         return next(int(line.split()[1]) for line in f if line.startswith("VmRSS:"))
 
 
+@pytest.mark.skipif("libasan" in os.environ.get("LD_PRELOAD", ""),
+                    reason="under AddressSanitizer (make test-sanitize) the resident size holds its quarantine of "
+                           "freed blocks: measured +120 MB over the first 5000 steps, then +240 KiB over the last 3000")
 def test_memory_stays_constant_over_thousands_of_dynamic_steps(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     path = dynamic_case(str(tmp_path), 8000, outputs=False)
