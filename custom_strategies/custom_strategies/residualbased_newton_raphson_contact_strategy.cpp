@@ -95,6 +95,7 @@ void ResidualBasedNewtonRaphsonContactStrategy::Predict() {
 
 void ResidualBasedNewtonRaphsonContactStrategy::FinalizeSolutionStep() {
   NewtonRaphsonStrategy::FinalizeSolutionStep();
+  if (!scheme_->Extrapolates()) return;  // only the extrapolating predictor reads them
   std::vector<char> states = ContactStates();
   previous_converged_states_ =
       converged_states_.empty() ? std::vector<char>(states.size(), 0) : std::move(converged_states_);

@@ -68,7 +68,8 @@ class ResidualBasedNewtonRaphsonContactStrategy : public NewtonRaphsonStrategy {
   std::string Name() const override { return "newton_raphson_contact_strategy"; }
   void InitializeSolutionStep() override;
   void Predict() override;
-  /// The base step end, then the contact states of the step are kept for the next Predict.
+  /// The base step end; with an extrapolating scheme the contact states of the step are kept for
+  /// the next Predict.
   void FinalizeSolutionStep() override;
 
   const ContactStrategySettings& Settings() const noexcept { return settings_; }
