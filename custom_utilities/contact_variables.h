@@ -53,6 +53,11 @@ MC_DECLARE_VARIABLE(bool, ADAPT_PENALTY);
 MC_DECLARE_VARIABLE(double, MAX_GAP_FACTOR);
 MC_DECLARE_VARIABLE(double, MAX_GAP_THRESHOLD);
 MC_DECLARE_VARIABLE(int, INNER_LOOP_ITERATION);
+/// Slave node, non-historical (ours): its contact state (bit 0 ACTIVE, bit 1 SLIP) at the end of
+/// the last converged step, and in bits 2-3 at the end of the step before; read by the
+/// extrapolating predictor. On the node rather than in the strategy so that a restart checkpoint
+/// carries it.
+MC_DECLARE_VARIABLE(int, CONVERGED_CONTACT_STATES);
 MC_DECLARE_VARIABLE(double, REACTION_CHECK_STIFFNESS_FACTOR);
 /// ProcessInfo: the registered mortar_type of the contact solver (ContactFormulation), which the
 /// contact processes check theirs against.

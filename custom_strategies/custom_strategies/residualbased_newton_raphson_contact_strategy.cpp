@@ -72,10 +72,8 @@ void ResidualBasedNewtonRaphsonContactStrategy::Predict() {
   // An extrapolation of the last step is sound only where the path was smooth in it. Across a
   // change of contact state it carries the kink on: a gap that closed in the last step is
   // extrapolated as a free approach, i.e. a penetration (measured: one or two more iterations in
-  // the step after contact onset, benchmarks/hertz/results_predictor.md). Unknown history (the
-  // first step, a resumed run) counts as a change.
-  const bool smooth = !converged_states_.empty() && converged_states_ == previous_converged_states_;
-  if (smooth || !scheme_->Extrapolates()) scheme_->Predict(model_part_, builder_->GetDofSet());
+  // the step after contact onset, benchmarks/hertz/results_predictor.md).
+  if (!scheme_->Extrapolates() || LastStepKeptContactStates()) scheme_->Predict(model_part_, builder_->GetDofSet());
   // The active set stays the search's prediction at the last converged coordinates, also after
   // an extrapolation: the NCP evaluated at the extrapolated state (or its union with the
   // search's set) took as many or more iterations on the Hertz cases and made a penalty case
@@ -96,10 +94,27 @@ void ResidualBasedNewtonRaphsonContactStrategy::Predict() {
 void ResidualBasedNewtonRaphsonContactStrategy::FinalizeSolutionStep() {
   NewtonRaphsonStrategy::FinalizeSolutionStep();
   if (!scheme_->Extrapolates()) return;  // only the extrapolating predictor reads them
-  std::vector<char> states = ContactStates();
-  previous_converged_states_ =
-      converged_states_.empty() ? std::vector<char>(states.size(), 0) : std::move(converged_states_);
-  converged_states_ = std::move(states);
+  ModelPart* contact = FindContactModelPart(model_part_);
+  if (!contact) return;
+  for (Node* node : contact->Nodes()) {
+    if (!node->Is(SLAVE)) continue;
+    // Before the first step every node is open; a negative value (RestoreStepStart) is unknown.
+    const int last =
+        node->Has(CONVERGED_CONTACT_STATES) ? std::max(node->GetValue(CONVERGED_CONTACT_STATES), 0) & 3 : 0;
+    const int now = (node->Is(ACTIVE) ? kActiveState : 0) | (node->Is(SLIP) ? kSlipState : 0);
+    node->SetValue(CONVERGED_CONTACT_STATES, (last << 2) | now);
+  }
+}
+
+bool ResidualBasedNewtonRaphsonContactStrategy::LastStepKeptContactStates() const {
+  ModelPart* contact = FindContactModelPart(model_part_);
+  if (!contact) return true;
+  for (const Node* node : contact->Nodes()) {
+    if (!node->Is(SLAVE)) continue;
+    const int states = node->Has(CONVERGED_CONTACT_STATES) ? node->GetValue(CONVERGED_CONTACT_STATES) : -1;
+    if (states < 0 || (states & 3) != (states >> 2)) return false;
+  }
+  return true;
 }
 
 std::vector<char> ResidualBasedNewtonRaphsonContactStrategy::ContactStates() const {
@@ -237,13 +252,17 @@ void ResidualBasedNewtonRaphsonContactStrategy::SaveStepStart() {
   NewtonRaphsonStrategy::SaveStepStart();
   start_flags_.clear();
   for (Node* node : model_part_.GetRootModelPart().Nodes())
-    start_flags_.push_back({node, node->Is(ACTIVE), node->Is(SLIP)});
+    start_flags_.push_back({node, node->Is(ACTIVE), node->Is(SLIP),
+                            node->Has(CONVERGED_CONTACT_STATES) ? node->GetValue(CONVERGED_CONTACT_STATES) : -1});
 }
 
 void ResidualBasedNewtonRaphsonContactStrategy::RestoreStepStart() {
-  for (const auto& [node, active, slip] : start_flags_) {
+  for (const auto& [node, active, slip, converged_states] : start_flags_) {
     node->Set(ACTIVE, active);
     node->Set(SLIP, slip);
+    // The sub-steps of a failed split level must not count as the history of the next attempt.
+    if (converged_states >= 0 || node->Has(CONVERGED_CONTACT_STATES))
+      node->SetValue(CONVERGED_CONTACT_STATES, converged_states);
   }
   NewtonRaphsonStrategy::RestoreStepStart();
 }

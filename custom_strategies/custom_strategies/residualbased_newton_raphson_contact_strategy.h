@@ -68,8 +68,8 @@ class ResidualBasedNewtonRaphsonContactStrategy : public NewtonRaphsonStrategy {
   std::string Name() const override { return "newton_raphson_contact_strategy"; }
   void InitializeSolutionStep() override;
   void Predict() override;
-  /// The base step end; with an extrapolating scheme the contact states of the step are kept for
-  /// the next Predict.
+  /// The base step end; with an extrapolating scheme each slave node's CONVERGED_CONTACT_STATES
+  /// then takes the step's state, for the next Predict.
   void FinalizeSolutionStep() override;
 
   const ContactStrategySettings& Settings() const noexcept { return settings_; }
@@ -88,7 +88,7 @@ class ResidualBasedNewtonRaphsonContactStrategy : public NewtonRaphsonStrategy {
   /// Why the step failed: inverted element, the slave nodes whose state keeps switching (per-node
   /// flip counts over the step), or the last criterion values and the largest residuals.
   std::string DescribeFailure() const override;
-  /// The base state plus the ACTIVE flag of every node.
+  /// The base state plus the ACTIVE and SLIP flags and CONVERGED_CONTACT_STATES of every node.
   void SaveStepStart() override;
   void RestoreStepStart() override;
   /// Always logged: a contact step that fails is worth a line even when silent.
@@ -108,6 +108,9 @@ class ResidualBasedNewtonRaphsonContactStrategy : public NewtonRaphsonStrategy {
   void SetContactStates(const std::vector<char>& states);
   /// Adds one flip to every slave node whose ACTIVE flag differs from `before`; returns how many.
   std::size_t CountFlips(const std::vector<char>& before);
+  /// Whether no slave node changed its contact state in the last converged step (false when
+  /// that is not known: the first step).
+  bool LastStepKeptContactStates() const;
   /// Id of an element with a negative Jacobian determinant at an integration point, or 0.
   IndexType FindInvertedElement() const;
 
@@ -117,16 +120,15 @@ class ResidualBasedNewtonRaphsonContactStrategy : public NewtonRaphsonStrategy {
   std::size_t last_changes_ = 0;
   IndexType inverted_element_ = 0;
   int passes_ = 0;
-  /// ACTIVE and SLIP flags of every node of the root model part at the start of the step.
+  /// ACTIVE and SLIP flags and CONVERGED_CONTACT_STATES (-1: none) of every node of the root
+  /// model part at the start of the step.
   struct StartFlags {
     Node* node;
     bool active;
     bool slip;
+    int converged_states;
   };
   std::vector<StartFlags> start_flags_;
-  /// ContactStates at the end of the last two converged steps (the first: all open).
-  std::vector<char> converged_states_;
-  std::vector<char> previous_converged_states_;
 };
 
 }  // namespace mc

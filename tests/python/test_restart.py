@@ -145,6 +145,45 @@ def test_resumed_dynamic_patch_is_bit_identical(tmp_path):
     assert_same_checkpoints(kept, checkpoint_path(tmp_path, 4))
 
 
+#: The robustness sweep's 20-step flat punch: its contact zone stops changing after step 3, so the
+#: extrapolating predictor acts from then on (one Newton iteration per step).
+PUNCH = os.path.join(os.path.dirname(__file__), "..", "cases", "robustness",
+                     "2d_quad_flat_r0.5_overhang-none_gap_disp_20steps_alm")
+
+
+def test_resumed_run_with_the_extrapolating_predictor_is_bit_identical(tmp_path):
+    """solver_settings.displacement_extrapolation skips a step that follows a change of contact
+    state; that history is on the slave nodes (CONVERGED_CONTACT_STATES), so a checkpoint carries
+    it and the resumed run extrapolates where the uninterrupted one did."""
+    for name in os.listdir(PUNCH):
+        if name.endswith((".mdpa", "_materials.json")):
+            shutil.copy(os.path.join(PUNCH, name), tmp_path)
+    with open(os.path.join(PUNCH, "ProjectParameters.json")) as f:
+        params = json.load(f)
+    params["problem_data"]["end_time"] = 8 * params["solver_settings"]["time_stepping"]["time_step"] * (1 - 1e-9)
+    params["solver_settings"]["displacement_extrapolation"] = True
+    params["output_processes"] = {"restart_processes": [{
+        "python_module": "save_restart_process", "kratos_module": "KratosMultiphysics",
+        "Parameters": {"model_part_name": "Structure", "restart_control_type": "step", "restart_save_frequency": 2}}]}
+    path = os.path.join(tmp_path, "ProjectParameters.json")
+    for import_settings in (None, resume_settings(4)):
+        if import_settings:
+            params["solver_settings"]["model_import_settings"] = import_settings
+        with open(path, "w") as f:
+            json.dump(params, f)
+        output = run_cli(tmp_path, path)
+        if not import_settings:
+            kept = str(tmp_path / "uninterrupted.rest")
+            shutil.copy(checkpoint_path(tmp_path, 8), kept)
+    assert "4 steps to t = 0.4" in output
+    assert_same_checkpoints(kept, checkpoint_path(tmp_path, 8))
+    with h5py.File(kept, "r") as f:
+        states = f["nodes/non_historical/CONVERGED_CONTACT_STATES/values"][()]
+        held = f["nodes/non_historical/CONVERGED_CONTACT_STATES/held"][()]
+    # Contact at the end, unchanged in the last step: the state the predictor needs.
+    assert np.count_nonzero(held) > 0 and np.count_nonzero(states[held.astype(bool)] == 0b0101) >= 4
+
+
 def test_resumed_run_with_threads_differs_by_round_off(tmp_path):
     kept, _ = run_and_resume(tmp_path, HERTZ, "Dynamic", 0.125, threads=2)
     resumed = checkpoint_path(tmp_path, 4)
