@@ -27,11 +27,11 @@ class ContactFormulation {
   using CriterionFactory = std::function<std::shared_ptr<ConvergenceCriteria>(Parameters contact_settings)>;
 
   struct Description {
-    std::string mortar_type;   ///< "ALMContactFrictionless"
-    std::string process;       ///< python_module of its process: "alm_contact_process"
-    std::string contact_type;  ///< that process' contact_type: "Frictionless"
-    std::string enforcement;   ///< condition name stem: "ALM", "Penalty"
-    std::string contact_kind;  ///< condition name stem: "Frictionless", "FrictionlessComponents"
+    std::string mortar_type;     ///< "ALMContactFrictionless"
+    std::string process;         ///< python_module of its process: "alm_contact_process"
+    std::string contact_type;    ///< that process' contact_type: "Frictionless"
+    std::string enforcement;     ///< condition name stem: "ALM", "Penalty"
+    std::string contact_kind{};  ///< condition name stem: "Frictionless", "FrictionlessComponents"
     /// End of the condition name stem: the contact pairs' ("MortarContactCondition") or the tying
     /// pairs' ("MortarCondition", spec 6.2: MeshTyingMortarCondition3D4N).
     std::string condition_suffix = "MortarContactCondition";
@@ -54,7 +54,7 @@ class ContactFormulation {
     int buffer_size = 2;
     CriterionFactory active_set_criterion;
     /// Non-empty for a formulation that is known but not implemented yet: what is missing.
-    std::string not_implemented;
+    std::string not_implemented{};
   };
 
   explicit ContactFormulation(Description description) : d_(std::move(description)) {}

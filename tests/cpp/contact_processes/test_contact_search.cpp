@@ -250,7 +250,9 @@ TEST(ContactSearch, CurvedHertzInterface) {
     if (condition->Is(SLAVE) && std::abs(condition->GetGeometry().Center().x()) < 0.5) ++near_centre;
   EXPECT_GE(stats.pairs, near_centre);
   for (const Node* node : sub.Nodes())
-    if (node->Is(SLAVE) && std::abs(node->X()) < 0.5) EXPECT_FALSE(node->Is(ISOLATED)) << node->Id();
+    if (node->Is(SLAVE) && std::abs(node->X()) < 0.5) {
+      EXPECT_FALSE(node->Is(ISOLATED)) << node->Id();
+    }
   for (const Condition* pair : search.ComputingPart().Conditions())
     EXPECT_LT(
         pair->GetGeometry().Center().y() - dynamic_cast<const PairedCondition&>(*pair).GetPairedGeometry().Center().y(),
