@@ -294,6 +294,56 @@ TEST(ExactMortarIntegration, Sum4_SliverPolygons) {
   EXPECT_LT(worst, 1e-9);
 }
 
+// Degenerate clipping (issue 12): a unit slave square and a master square of side a (a = 1 or
+// 0.5) whose edges lie on the slave's edges, meet them at a corner or a shared vertex, cover it
+// exactly, or miss those positions by 1e-15 .. 1e-7 (aligned meshes after a tangential shift),
+// mapped onto an arbitrarily rotated plane with a 1e-3 gap so that no coordinate is exact. Every
+// pair is segmented (no "clipped polygon with n vertices"), into at most 8 vertices, and its area
+// is the exact overlap (a product of the interval overlaps) to 1e-12; slivers narrower than the
+// vertex-merging distance (1e-10 of the face size) may be dropped.
+TEST(ExactMortarIntegration, AlignedSharedAndCoincidentQuadrilaterals) {
+  using K = K44;
+  const Eigen::Matrix3d rotation =
+      (Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()) * Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()))
+          .toRotationMatrix();
+  const Eigen::Vector3d origin(0.31, -0.27, 0.11);
+  auto place = [&](double x, double y, double z) { return (origin + rotation * Eigen::Vector3d(x, y, z)).eval(); };
+  K::SlaveMatrix x1;
+  const double square[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  for (int i = 0; i < 4; ++i) x1.row(i) = place(square[i][0], square[i][1], 0.0).transpose();
+  const double offsets[] = {0.0, 1e-15, -1e-15, 1e-11, -1e-11, 1e-9, -1e-7};
+  const double positions[] = {-1.0, -0.5, 0.0, 0.25, 0.5, 1.0};
+  int pairs = 0, overlapping = 0;
+  for (const double side : {1.0, 0.5})
+    for (const double px : positions)
+      for (const double py : positions)
+        for (const double ox : offsets)
+          for (const double oy : offsets) {
+            const double x0 = px + ox, y0 = py + oy;
+            K::MasterMatrix x2;
+            for (int l = 0; l < 4; ++l)
+              x2.row(l) = place(x0 + side * square[3 - l][0], y0 + side * square[3 - l][1], 1e-3).transpose();
+            const double exact = std::max(0.0, std::min(1.0, x0 + side) - std::max(0.0, x0)) *
+                                 std::max(0.0, std::min(1.0, y0 + side) - std::max(0.0, y0));
+            MortarIntegrationPoints<double, 3, 4, 4> points;
+            bool found = false;
+            ASSERT_NO_THROW(found = (ExactMortarIntegrationUtility<3, 4, 4>::Compute(
+                                x1, x2, ConditionNormals<K>(x1), Order(2), points)))
+                << "master at (" << x0 << ", " << y0 << "), side " << side;
+            const double area = found ? points.area : 0.0;
+            if (exact > 1e-9 || area > 0.0)
+              EXPECT_NEAR(area, exact, 1e-12) << "master at (" << x0 << ", " << y0 << "), side " << side;
+            else
+              EXPECT_LT(exact, 1e-10) << "master at (" << x0 << ", " << y0 << "), side " << side;
+            // At most n + m - 2 = 6 fan triangles of 3 points.
+            EXPECT_LE(points.size, 6 * 3);
+            ++pairs;
+            overlapping += exact > 1e-12;
+          }
+  EXPECT_EQ(pairs, 2 * 36 * 49);
+  EXPECT_GT(overlapping, 1000);
+}
+
 TEST(ExactMortarIntegration, SettingsErrors) {
   K33 k;
   const auto x1 = Rows<K33::SlaveMatrix>({0, 0, 0, 1, 0, 0, 0, 1, 0});
