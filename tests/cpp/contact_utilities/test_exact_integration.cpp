@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "contact_utilities_test_helpers.h"
@@ -342,6 +343,31 @@ TEST(ExactMortarIntegration, AlignedSharedAndCoincidentQuadrilaterals) {
           }
   EXPECT_EQ(pairs, 2 * 36 * 49);
   EXPECT_GT(overlapping, 1000);
+}
+
+// The pair that raised "clipped polygon with 9 vertices" in the frictional sweep
+// (3d_hex_flat_r0.5_overhang-none_gap_disp_4steps_fric_mu0.3_shift, step 7, third iteration, after a
+// Newton step of |r_u|^2/|r_u0|^2 = 6e20): its master face, 1 in size where it was 0.2, is folded
+// seen along the slave normal. The error says so instead of integrating a wrong area.
+TEST(ExactMortarIntegration, FoldedMasterFaceOfADivergedIterateIsAnError) {
+  const auto x1 = Rows<K44::SlaveMatrix>({0.35786855178134835, -0.22733297504675262, -0.08438905766806408,
+                                          0.44918066344109708, -0.23138547302904547, 0.057306946730948993,
+                                          0.35801866758089473, -0.29472682400676603, 0.18794168939019615,
+                                          0.30458745203534759, -0.34406695627128331, 0.034539875089470297});
+  const auto x2 = Rows<K44::MasterMatrix>({0.22056610750475786, -0.35149835123712392, 0.42221754546887058,
+                                           0.6338917167536805, -0.548426321814242, -0.488899243957234,
+                                           0.3832963397977398, -0.36836643982492345, 0.48717960457888315,
+                                           0.33410950341129081, -0.23161639191032182, -0.14522702204877991});
+  MortarIntegrationPoints<double, 3, 4, 4> points;
+  try {
+    ExactMortarIntegrationUtility<3, 4, 4>::Compute(x1, x2, ConditionNormals<K44>(x1), Order(2), points);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("clipped polygon with 9 vertices (at most 8 for convex faces)"), std::string::npos)
+        << message;
+    EXPECT_NE(message.find("folded or self-intersecting"), std::string::npos) << message;
+  }
 }
 
 TEST(ExactMortarIntegration, SettingsErrors) {
