@@ -328,8 +328,8 @@ TEST(ExactMortarIntegration, AlignedSharedAndCoincidentQuadrilaterals) {
                                  std::max(0.0, std::min(1.0, y0 + side) - std::max(0.0, y0));
             MortarIntegrationPoints<double, 3, 4, 4> points;
             bool found = false;
-            ASSERT_NO_THROW(found = (ExactMortarIntegrationUtility<3, 4, 4>::Compute(
-                                x1, x2, ConditionNormals<K>(x1), Order(2), points)))
+            ASSERT_NO_THROW(found = (ExactMortarIntegrationUtility<3, 4, 4>::Compute(x1, x2, ConditionNormals<K>(x1),
+                                                                                     Order(2), points)))
                 << "master at (" << x0 << ", " << y0 << "), side " << side;
             const double area = found ? points.area : 0.0;
             if (exact > 1e-9 || area > 0.0)
@@ -350,14 +350,14 @@ TEST(ExactMortarIntegration, AlignedSharedAndCoincidentQuadrilaterals) {
 // Newton step of |r_u|^2/|r_u0|^2 = 6e20): its master face, 1 in size where it was 0.2, is folded
 // seen along the slave normal. The error says so instead of integrating a wrong area.
 TEST(ExactMortarIntegration, FoldedMasterFaceOfADivergedIterateIsAnError) {
-  const auto x1 = Rows<K44::SlaveMatrix>({0.35786855178134835, -0.22733297504675262, -0.08438905766806408,
-                                          0.44918066344109708, -0.23138547302904547, 0.057306946730948993,
-                                          0.35801866758089473, -0.29472682400676603, 0.18794168939019615,
-                                          0.30458745203534759, -0.34406695627128331, 0.034539875089470297});
-  const auto x2 = Rows<K44::MasterMatrix>({0.22056610750475786, -0.35149835123712392, 0.42221754546887058,
-                                           0.6338917167536805, -0.548426321814242, -0.488899243957234,
-                                           0.3832963397977398, -0.36836643982492345, 0.48717960457888315,
-                                           0.33410950341129081, -0.23161639191032182, -0.14522702204877991});
+  const auto x1 =
+      Rows<K44::SlaveMatrix>({0.35786855178134835, -0.22733297504675262, -0.08438905766806408, 0.44918066344109708,
+                              -0.23138547302904547, 0.057306946730948993, 0.35801866758089473, -0.29472682400676603,
+                              0.18794168939019615, 0.30458745203534759, -0.34406695627128331, 0.034539875089470297});
+  const auto x2 =
+      Rows<K44::MasterMatrix>({0.22056610750475786, -0.35149835123712392, 0.42221754546887058, 0.6338917167536805,
+                               -0.548426321814242, -0.488899243957234, 0.3832963397977398, -0.36836643982492345,
+                               0.48717960457888315, 0.33410950341129081, -0.23161639191032182, -0.14522702204877991});
   MortarIntegrationPoints<double, 3, 4, 4> points;
   try {
     ExactMortarIntegrationUtility<3, 4, 4>::Compute(x1, x2, ConditionNormals<K44>(x1), Order(2), points);
