@@ -242,7 +242,17 @@ def _cse_lines(exprs, indent: str, prefix: str = "t"):
 
 
 def _prelude_lines(branch: Branch, indent: str):
-    return [f"{indent}const double {cxx(s)} = {cxx(e)};" for s, e in branch.prelude]
+    lines = []
+    for s, e in branch.prelude:
+        if s.name == "inv_norm":
+            # |a| = 0 has no direction: dir = 0, and nothing is differentiated through it. Exact
+            # where the direction is scaled by a vanishing friction bound (mu = 0); the condition
+            # sends a zero |a| with a nonzero bound to the stick branch instead.
+            lines.append(f"{indent}const double norm2 = {cxx(e**-2)};")
+            lines.append(f"{indent}const double {cxx(s)} = norm2 > 0.0 ? 1.0/std::sqrt(norm2) : 0.0;")
+        else:
+            lines.append(f"{indent}const double {cxx(s)} = {cxx(e)};")
+    return lines
 
 
 def emit_rhs_branch(branch: Branch, indent: str):

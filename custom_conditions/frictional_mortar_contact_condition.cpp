@@ -83,8 +83,10 @@ void FrictionalMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::Complet
     data.friction_threshold(j) =
         slave[j].Has(TRESCA_FRICTION_THRESHOLD) ? slave[j].GetValue(TRESCA_FRICTION_THRESHOLD) : 0.0;
     // Without an augmented tangent pressure the slip direction is undefined; the stick branch is
-    // then the regular one (its tangential traction vanishes with it).
-    data.slip[j] = slave[j].Is(SLIP) && AugmentedTangentPressure(data, j).norm() > 0.0;
+    // then the regular one (its tangential traction vanishes with it). Without friction (mu = tau
+    // = 0, so b = 0) no direction is needed: the slip branch takes dir = 0 and frees the node.
+    const bool frictionless = data.friction_coefficient(j) == 0.0 && data.friction_threshold(j) == 0.0;
+    data.slip[j] = slave[j].Is(SLIP) && (frictionless || AugmentedTangentPressure(data, j).norm() > 0.0);
   }
 }
 

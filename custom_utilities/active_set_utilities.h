@@ -76,9 +76,12 @@ constexpr double FrictionBound(double friction_coefficient, double friction_thre
   return friction_threshold - friction_coefficient * augmented_normal_pressure;
 }
 
-/// |lbar_t| > theta b. Without friction (b = 0) any tangent pressure slips.
+/// |lbar_t| > theta b. Without friction (b = 0) the node slips whatever its tangent pressure, zero
+/// included: nothing can hold it. (Kratos 10.4 divides |lbar_t| by mu |lbar_n|, so a frictionless
+/// node with a zero lbar_t, e.g. just activated, tests 0 / 0 and sticks: held by a stick
+/// constraint it does not have.)
 inline bool IsSlip(double tangent_pressure_norm, double friction_bound, double theta) noexcept {
-  return tangent_pressure_norm > theta * friction_bound;
+  return !(friction_bound > 0.0) || tangent_pressure_norm > theta * friction_bound;
 }
 
 /// The tangent traction of a slipping node: the bound b along `direction` (normalised here; a

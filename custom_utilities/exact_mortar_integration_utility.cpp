@@ -295,9 +295,15 @@ bool ExactMortarIntegrationUtility<TDim, TNumNodes, TNumNodesMaster>::Compute(co
     }
     while (n_clean > 1 && ValueOf((next[n_clean - 1] - next[0]).norm()) <= eps_len * 1e2) --n_clean;
     if (n_clean < 3) return false;
+    // Two convex polygons clip to at most n + m vertices, also with aligned or coincident edges
+    // (merged above): more means a face that is not convex seen along the slave normal, folded or
+    // self-intersecting. The robustness sweep met it only in the iterate after a diverging Newton
+    // step (issue 12), where a fan over it would integrate a wrong area.
     if (n_clean > TNumNodes + TNumNodesMaster)
-      throw Error(Concat("mortar integration: clipped polygon with ", n_clean,
-                         " vertices (non-convex slave or master condition?)"));
+      throw Error(Concat("mortar integration: clipped polygon with ", n_clean, " vertices (at most ",
+                         TNumNodes + TNumNodesMaster,
+                         " for convex faces): a slave or master face is folded or self-intersecting seen along "
+                         "the slave normal, e.g. in the iterate after a diverging Newton step"));
     std::copy(next.begin(), next.begin() + n_clean, poly.begin());
     n_poly = n_clean;
     if (!(ValueOf(signed_area(poly, n_poly)) > eps * area_scale)) return false;

@@ -25,7 +25,8 @@ void ALMFrictionalRHS(const MortarKernelData<2, 2, 2>& data, Vector& rhs) {
   if (data.active[0] && data.slip[0]) {
     const double a0 = cslip*ct*eps(0)*s(0, 0) + k*(lm(0, 0) - n1(0, 0)*(lm(0, 0)*n1(0, 0) + lm(0, 1)*n1(0, 1)));
     const double a1 = cslip*ct*eps(0)*s(0, 1) + k*(lm(0, 1) - n1(0, 1)*(lm(0, 0)*n1(0, 0) + lm(0, 1)*n1(0, 1)));
-    const double inv_norm = 1.0/std::sqrt(a0*a0 + a1*a1);
+    const double norm2 = a0*a0 + a1*a1;
+    const double inv_norm = norm2 > 0.0 ? 1.0/std::sqrt(norm2) : 0.0;
     const double dir0 = a0*inv_norm;
     const double dir1 = a1*inv_norm;
     const double t0 = lm(0, 0)*n1(0, 0) + lm(0, 1)*n1(0, 1);
@@ -80,7 +81,8 @@ void ALMFrictionalRHS(const MortarKernelData<2, 2, 2>& data, Vector& rhs) {
   if (data.active[1] && data.slip[1]) {
     const double a0 = cslip*ct*eps(1)*s(1, 0) + k*(lm(1, 0) - n1(1, 0)*(lm(1, 0)*n1(1, 0) + lm(1, 1)*n1(1, 1)));
     const double a1 = cslip*ct*eps(1)*s(1, 1) + k*(lm(1, 1) - n1(1, 1)*(lm(1, 0)*n1(1, 0) + lm(1, 1)*n1(1, 1)));
-    const double inv_norm = 1.0/std::sqrt(a0*a0 + a1*a1);
+    const double norm2 = a0*a0 + a1*a1;
+    const double inv_norm = norm2 > 0.0 ? 1.0/std::sqrt(norm2) : 0.0;
     const double dir0 = a0*inv_norm;
     const double dir1 = a1*inv_norm;
     const double t0 = lm(1, 0)*n1(1, 0) + lm(1, 1)*n1(1, 1);
@@ -159,7 +161,8 @@ void ALMFrictionalLHS(const MortarKernelData<2, 2, 2>& data, Matrix& lhs, Matrix
   if (data.active[0] && data.slip[0]) {
     const double a0 = cslip*ct*eps(0)*s(0, 0) + k*(lm(0, 0) - n1(0, 0)*(lm(0, 0)*n1(0, 0) + lm(0, 1)*n1(0, 1)));
     const double a1 = cslip*ct*eps(0)*s(0, 1) + k*(lm(0, 1) - n1(0, 1)*(lm(0, 0)*n1(0, 0) + lm(0, 1)*n1(0, 1)));
-    const double inv_norm = 1.0/std::sqrt(a0*a0 + a1*a1);
+    const double norm2 = a0*a0 + a1*a1;
+    const double inv_norm = norm2 > 0.0 ? 1.0/std::sqrt(norm2) : 0.0;
     const double dir0 = a0*inv_norm;
     const double dir1 = a1*inv_norm;
     const double t0 = dir0*mu(0);
@@ -481,7 +484,8 @@ void ALMFrictionalLHS(const MortarKernelData<2, 2, 2>& data, Matrix& lhs, Matrix
   if (data.active[1] && data.slip[1]) {
     const double a0 = cslip*ct*eps(1)*s(1, 0) + k*(lm(1, 0) - n1(1, 0)*(lm(1, 0)*n1(1, 0) + lm(1, 1)*n1(1, 1)));
     const double a1 = cslip*ct*eps(1)*s(1, 1) + k*(lm(1, 1) - n1(1, 1)*(lm(1, 0)*n1(1, 0) + lm(1, 1)*n1(1, 1)));
-    const double inv_norm = 1.0/std::sqrt(a0*a0 + a1*a1);
+    const double norm2 = a0*a0 + a1*a1;
+    const double inv_norm = norm2 > 0.0 ? 1.0/std::sqrt(norm2) : 0.0;
     const double dir0 = a0*inv_norm;
     const double dir1 = a1*inv_norm;
     const double t0 = dir0*mu(1);

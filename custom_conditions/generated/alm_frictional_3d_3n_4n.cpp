@@ -26,7 +26,8 @@ void ALMFrictionalRHS(const MortarKernelData<3, 3, 4>& data, Vector& rhs) {
     const double a0 = cslip*ct*eps(0)*s(0, 0) + k*(lm(0, 0) - n1(0, 0)*(lm(0, 0)*n1(0, 0) + lm(0, 1)*n1(0, 1) + lm(0, 2)*n1(0, 2)));
     const double a1 = cslip*ct*eps(0)*s(0, 1) + k*(lm(0, 1) - n1(0, 1)*(lm(0, 0)*n1(0, 0) + lm(0, 1)*n1(0, 1) + lm(0, 2)*n1(0, 2)));
     const double a2 = cslip*ct*eps(0)*s(0, 2) + k*(lm(0, 2) - n1(0, 2)*(lm(0, 0)*n1(0, 0) + lm(0, 1)*n1(0, 1) + lm(0, 2)*n1(0, 2)));
-    const double inv_norm = 1.0/std::sqrt(a0*a0 + a1*a1 + a2*a2);
+    const double norm2 = a0*a0 + a1*a1 + a2*a2;
+    const double inv_norm = norm2 > 0.0 ? 1.0/std::sqrt(norm2) : 0.0;
     const double dir0 = a0*inv_norm;
     const double dir1 = a1*inv_norm;
     const double dir2 = a2*inv_norm;
@@ -123,7 +124,8 @@ void ALMFrictionalRHS(const MortarKernelData<3, 3, 4>& data, Vector& rhs) {
     const double a0 = cslip*ct*eps(1)*s(1, 0) + k*(lm(1, 0) - n1(1, 0)*(lm(1, 0)*n1(1, 0) + lm(1, 1)*n1(1, 1) + lm(1, 2)*n1(1, 2)));
     const double a1 = cslip*ct*eps(1)*s(1, 1) + k*(lm(1, 1) - n1(1, 1)*(lm(1, 0)*n1(1, 0) + lm(1, 1)*n1(1, 1) + lm(1, 2)*n1(1, 2)));
     const double a2 = cslip*ct*eps(1)*s(1, 2) + k*(lm(1, 2) - n1(1, 2)*(lm(1, 0)*n1(1, 0) + lm(1, 1)*n1(1, 1) + lm(1, 2)*n1(1, 2)));
-    const double inv_norm = 1.0/std::sqrt(a0*a0 + a1*a1 + a2*a2);
+    const double norm2 = a0*a0 + a1*a1 + a2*a2;
+    const double inv_norm = norm2 > 0.0 ? 1.0/std::sqrt(norm2) : 0.0;
     const double dir0 = a0*inv_norm;
     const double dir1 = a1*inv_norm;
     const double dir2 = a2*inv_norm;
@@ -220,7 +222,8 @@ void ALMFrictionalRHS(const MortarKernelData<3, 3, 4>& data, Vector& rhs) {
     const double a0 = cslip*ct*eps(2)*s(2, 0) + k*(lm(2, 0) - n1(2, 0)*(lm(2, 0)*n1(2, 0) + lm(2, 1)*n1(2, 1) + lm(2, 2)*n1(2, 2)));
     const double a1 = cslip*ct*eps(2)*s(2, 1) + k*(lm(2, 1) - n1(2, 1)*(lm(2, 0)*n1(2, 0) + lm(2, 1)*n1(2, 1) + lm(2, 2)*n1(2, 2)));
     const double a2 = cslip*ct*eps(2)*s(2, 2) + k*(lm(2, 2) - n1(2, 2)*(lm(2, 0)*n1(2, 0) + lm(2, 1)*n1(2, 1) + lm(2, 2)*n1(2, 2)));
-    const double inv_norm = 1.0/std::sqrt(a0*a0 + a1*a1 + a2*a2);
+    const double norm2 = a0*a0 + a1*a1 + a2*a2;
+    const double inv_norm = norm2 > 0.0 ? 1.0/std::sqrt(norm2) : 0.0;
     const double dir0 = a0*inv_norm;
     const double dir1 = a1*inv_norm;
     const double dir2 = a2*inv_norm;
@@ -341,7 +344,8 @@ void ALMFrictionalLHS(const MortarKernelData<3, 3, 4>& data, Matrix& lhs, Matrix
     const double a0 = cslip*ct*eps(0)*s(0, 0) + k*(lm(0, 0) - n1(0, 0)*(lm(0, 0)*n1(0, 0) + lm(0, 1)*n1(0, 1) + lm(0, 2)*n1(0, 2)));
     const double a1 = cslip*ct*eps(0)*s(0, 1) + k*(lm(0, 1) - n1(0, 1)*(lm(0, 0)*n1(0, 0) + lm(0, 1)*n1(0, 1) + lm(0, 2)*n1(0, 2)));
     const double a2 = cslip*ct*eps(0)*s(0, 2) + k*(lm(0, 2) - n1(0, 2)*(lm(0, 0)*n1(0, 0) + lm(0, 1)*n1(0, 1) + lm(0, 2)*n1(0, 2)));
-    const double inv_norm = 1.0/std::sqrt(a0*a0 + a1*a1 + a2*a2);
+    const double norm2 = a0*a0 + a1*a1 + a2*a2;
+    const double inv_norm = norm2 > 0.0 ? 1.0/std::sqrt(norm2) : 0.0;
     const double dir0 = a0*inv_norm;
     const double dir1 = a1*inv_norm;
     const double dir2 = a2*inv_norm;
@@ -1084,7 +1088,8 @@ void ALMFrictionalLHS(const MortarKernelData<3, 3, 4>& data, Matrix& lhs, Matrix
     const double a0 = cslip*ct*eps(1)*s(1, 0) + k*(lm(1, 0) - n1(1, 0)*(lm(1, 0)*n1(1, 0) + lm(1, 1)*n1(1, 1) + lm(1, 2)*n1(1, 2)));
     const double a1 = cslip*ct*eps(1)*s(1, 1) + k*(lm(1, 1) - n1(1, 1)*(lm(1, 0)*n1(1, 0) + lm(1, 1)*n1(1, 1) + lm(1, 2)*n1(1, 2)));
     const double a2 = cslip*ct*eps(1)*s(1, 2) + k*(lm(1, 2) - n1(1, 2)*(lm(1, 0)*n1(1, 0) + lm(1, 1)*n1(1, 1) + lm(1, 2)*n1(1, 2)));
-    const double inv_norm = 1.0/std::sqrt(a0*a0 + a1*a1 + a2*a2);
+    const double norm2 = a0*a0 + a1*a1 + a2*a2;
+    const double inv_norm = norm2 > 0.0 ? 1.0/std::sqrt(norm2) : 0.0;
     const double dir0 = a0*inv_norm;
     const double dir1 = a1*inv_norm;
     const double dir2 = a2*inv_norm;
@@ -1827,7 +1832,8 @@ void ALMFrictionalLHS(const MortarKernelData<3, 3, 4>& data, Matrix& lhs, Matrix
     const double a0 = cslip*ct*eps(2)*s(2, 0) + k*(lm(2, 0) - n1(2, 0)*(lm(2, 0)*n1(2, 0) + lm(2, 1)*n1(2, 1) + lm(2, 2)*n1(2, 2)));
     const double a1 = cslip*ct*eps(2)*s(2, 1) + k*(lm(2, 1) - n1(2, 1)*(lm(2, 0)*n1(2, 0) + lm(2, 1)*n1(2, 1) + lm(2, 2)*n1(2, 2)));
     const double a2 = cslip*ct*eps(2)*s(2, 2) + k*(lm(2, 2) - n1(2, 2)*(lm(2, 0)*n1(2, 0) + lm(2, 1)*n1(2, 1) + lm(2, 2)*n1(2, 2)));
-    const double inv_norm = 1.0/std::sqrt(a0*a0 + a1*a1 + a2*a2);
+    const double norm2 = a0*a0 + a1*a1 + a2*a2;
+    const double inv_norm = norm2 > 0.0 ? 1.0/std::sqrt(norm2) : 0.0;
     const double dir0 = a0*inv_norm;
     const double dir1 = a1*inv_norm;
     const double dir2 = a2*inv_norm;

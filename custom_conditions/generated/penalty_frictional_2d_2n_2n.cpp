@@ -22,7 +22,8 @@ void PenaltyFrictionalRHS(const MortarKernelData<2, 2, 2>& data, Vector& rhs) {
   if (data.active[0] && data.slip[0]) {
     const double a0 = s(0, 0);
     const double a1 = s(0, 1);
-    const double inv_norm = 1.0/std::sqrt(a0*a0 + a1*a1);
+    const double norm2 = a0*a0 + a1*a1;
+    const double inv_norm = norm2 > 0.0 ? 1.0/std::sqrt(norm2) : 0.0;
     const double dir0 = a0*inv_norm;
     const double dir1 = a1*inv_norm;
     const double t0 = eps(0)*g(0);
@@ -62,7 +63,8 @@ void PenaltyFrictionalRHS(const MortarKernelData<2, 2, 2>& data, Vector& rhs) {
   if (data.active[1] && data.slip[1]) {
     const double a0 = s(1, 0);
     const double a1 = s(1, 1);
-    const double inv_norm = 1.0/std::sqrt(a0*a0 + a1*a1);
+    const double norm2 = a0*a0 + a1*a1;
+    const double inv_norm = norm2 > 0.0 ? 1.0/std::sqrt(norm2) : 0.0;
     const double dir0 = a0*inv_norm;
     const double dir1 = a1*inv_norm;
     const double t0 = eps(1)*g(1);
@@ -123,7 +125,8 @@ void PenaltyFrictionalLHS(const MortarKernelData<2, 2, 2>& data, Matrix& lhs, Ma
   if (data.active[0] && data.slip[0]) {
     const double a0 = s(0, 0);
     const double a1 = s(0, 1);
-    const double inv_norm = 1.0/std::sqrt(a0*a0 + a1*a1);
+    const double norm2 = a0*a0 + a1*a1;
+    const double inv_norm = norm2 > 0.0 ? 1.0/std::sqrt(norm2) : 0.0;
     const double dir0 = a0*inv_norm;
     const double dir1 = a1*inv_norm;
     const double t0 = eps(0)*g(0);
@@ -276,7 +279,8 @@ void PenaltyFrictionalLHS(const MortarKernelData<2, 2, 2>& data, Matrix& lhs, Ma
   if (data.active[1] && data.slip[1]) {
     const double a0 = s(1, 0);
     const double a1 = s(1, 1);
-    const double inv_norm = 1.0/std::sqrt(a0*a0 + a1*a1);
+    const double norm2 = a0*a0 + a1*a1;
+    const double inv_norm = norm2 > 0.0 ? 1.0/std::sqrt(norm2) : 0.0;
     const double dir0 = a0*inv_norm;
     const double dir1 = a1*inv_norm;
     const double t0 = eps(1)*g(1);

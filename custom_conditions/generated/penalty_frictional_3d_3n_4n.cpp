@@ -23,7 +23,8 @@ void PenaltyFrictionalRHS(const MortarKernelData<3, 3, 4>& data, Vector& rhs) {
     const double a0 = s(0, 0);
     const double a1 = s(0, 1);
     const double a2 = s(0, 2);
-    const double inv_norm = 1.0/std::sqrt(a0*a0 + a1*a1 + a2*a2);
+    const double norm2 = a0*a0 + a1*a1 + a2*a2;
+    const double inv_norm = norm2 > 0.0 ? 1.0/std::sqrt(norm2) : 0.0;
     const double dir0 = a0*inv_norm;
     const double dir1 = a1*inv_norm;
     const double dir2 = a2*inv_norm;
@@ -99,7 +100,8 @@ void PenaltyFrictionalRHS(const MortarKernelData<3, 3, 4>& data, Vector& rhs) {
     const double a0 = s(1, 0);
     const double a1 = s(1, 1);
     const double a2 = s(1, 2);
-    const double inv_norm = 1.0/std::sqrt(a0*a0 + a1*a1 + a2*a2);
+    const double norm2 = a0*a0 + a1*a1 + a2*a2;
+    const double inv_norm = norm2 > 0.0 ? 1.0/std::sqrt(norm2) : 0.0;
     const double dir0 = a0*inv_norm;
     const double dir1 = a1*inv_norm;
     const double dir2 = a2*inv_norm;
@@ -175,7 +177,8 @@ void PenaltyFrictionalRHS(const MortarKernelData<3, 3, 4>& data, Vector& rhs) {
     const double a0 = s(2, 0);
     const double a1 = s(2, 1);
     const double a2 = s(2, 2);
-    const double inv_norm = 1.0/std::sqrt(a0*a0 + a1*a1 + a2*a2);
+    const double norm2 = a0*a0 + a1*a1 + a2*a2;
+    const double inv_norm = norm2 > 0.0 ? 1.0/std::sqrt(norm2) : 0.0;
     const double dir0 = a0*inv_norm;
     const double dir1 = a1*inv_norm;
     const double dir2 = a2*inv_norm;
@@ -272,7 +275,8 @@ void PenaltyFrictionalLHS(const MortarKernelData<3, 3, 4>& data, Matrix& lhs, Ma
     const double a0 = s(0, 0);
     const double a1 = s(0, 1);
     const double a2 = s(0, 2);
-    const double inv_norm = 1.0/std::sqrt(a0*a0 + a1*a1 + a2*a2);
+    const double norm2 = a0*a0 + a1*a1 + a2*a2;
+    const double inv_norm = norm2 > 0.0 ? 1.0/std::sqrt(norm2) : 0.0;
     const double dir0 = a0*inv_norm;
     const double dir1 = a1*inv_norm;
     const double dir2 = a2*inv_norm;
@@ -621,7 +625,8 @@ void PenaltyFrictionalLHS(const MortarKernelData<3, 3, 4>& data, Matrix& lhs, Ma
     const double a0 = s(1, 0);
     const double a1 = s(1, 1);
     const double a2 = s(1, 2);
-    const double inv_norm = 1.0/std::sqrt(a0*a0 + a1*a1 + a2*a2);
+    const double norm2 = a0*a0 + a1*a1 + a2*a2;
+    const double inv_norm = norm2 > 0.0 ? 1.0/std::sqrt(norm2) : 0.0;
     const double dir0 = a0*inv_norm;
     const double dir1 = a1*inv_norm;
     const double dir2 = a2*inv_norm;
@@ -970,7 +975,8 @@ void PenaltyFrictionalLHS(const MortarKernelData<3, 3, 4>& data, Matrix& lhs, Ma
     const double a0 = s(2, 0);
     const double a1 = s(2, 1);
     const double a2 = s(2, 2);
-    const double inv_norm = 1.0/std::sqrt(a0*a0 + a1*a1 + a2*a2);
+    const double norm2 = a0*a0 + a1*a1 + a2*a2;
+    const double inv_norm = norm2 > 0.0 ? 1.0/std::sqrt(norm2) : 0.0;
     const double dir0 = a0*inv_norm;
     const double dir1 = a1*inv_norm;
     const double dir2 = a2*inv_norm;

@@ -206,6 +206,36 @@ TYPED_TEST(FrictionalTangentTest, TrescaSlip) {
   }
 }
 
+// Issue 12: without friction (mu = tau = 0) a slipping node with a zero tangential multiplier (ALM,
+// c_slip = 0: lbar_t = 0, no slip direction) takes the slip branch with a zero direction, not the
+// stick branch: its tangential multiplier residual is zero (the stick one, k s . T(wl), is not,
+// as s is not), and the tangent still equals the finite differences.
+TYPED_TEST(FrictionalTangentTest, FrictionlessSlipWithZeroTangentPressure) {
+  Fixture<TypeParam> fixture(Pattern::kAllSlip);
+  fixture.root.GetProcessInfo().SetValue(SLIP_AUGMENTATION_COEFFICIENT, 0.0);
+  for (Node* node : fixture.pair->GetGeometry().Nodes()) {
+    node->SetValue(FRICTION_COEFFICIENT, 0.0);
+    const Array3 n = node->FastGetSolutionStepValue(NORMAL);
+    Array3 lm = node->FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER);
+    node->FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER) = n.dot(lm) * n;
+  }
+  fixture.CheckTangent();
+  constexpr int kDim = Fixture<TypeParam>::kDim;
+  const int multipliers = fixture.pair->LocalSize() - TypeParam::kNumDisplacementDofs;
+  if (multipliers == 0) return;  // penalty: no multiplier rows
+  Vector rhs;
+  fixture.pair->CalculateRightHandSide(rhs, fixture.root.GetProcessInfo());
+  int j = 0;
+  for (Node* node : fixture.pair->GetGeometry().Nodes()) {
+    const Array3 n = node->FastGetSolutionStepValue(NORMAL);
+    Array3 row = Array3::Zero();
+    for (int c = 0; c < kDim; ++c) row[c] = rhs[TypeParam::kNumDisplacementDofs + kDim * j + c];
+    EXPECT_GT(std::abs(n.dot(row)), 1e-6) << "node " << j;  // the normal constraint k g (n . wl)
+    EXPECT_LE((row - n.dot(row) * n).norm(), 1e-12 * row.norm()) << "node " << j;
+    ++j;
+  }
+}
+
 // The kinematics behind the tangent really has an overlap and non-trivial operator derivatives,
 // so that the test above exercises the chain rule through D, M and the gap.
 TYPED_TEST(TangentTest, OverlapIsNonTrivial) {

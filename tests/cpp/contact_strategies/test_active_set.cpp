@@ -155,9 +155,11 @@ TEST(ActiveSet, FrictionKernels) {
   EXPECT_FALSE(IsSlip(0.5, FrictionBound(0.25, 0.0, -2.0), 1.0));
   EXPECT_TRUE(IsSlip(0.5 + 1e-12, FrictionBound(0.25, 0.0, -2.0), 1.0));
   EXPECT_TRUE(IsSlip(0.4, FrictionBound(0.25, 0.0, -2.0), 0.75));
-  // Without friction any tangential pressure slips, none sticks.
+  // Without friction a node slips whatever its tangential pressure, zero included: none sticks.
   EXPECT_TRUE(IsSlip(1e-300, FrictionBound(0.0, 0.0, -2.0), 1.0));
-  EXPECT_FALSE(IsSlip(0.0, FrictionBound(0.0, 0.0, -2.0), 1.0));
+  EXPECT_TRUE(IsSlip(0.0, FrictionBound(0.0, 0.0, -2.0), 1.0));
+  EXPECT_TRUE(IsSlip(0.0, FrictionBound(0.0, 0.0, -2.0), 0.75));
+  EXPECT_FALSE(IsSlip(0.0, FrictionBound(0.0, 1e-300, -2.0), 1.0));  // Tresca, however small the threshold
   EXPECT_EQ(FrictionLimit(FrictionBound(0.25, 0.0, -2.0), Array3(0.0, 0.0, 3.0)), Array3(0.0, 0.0, 0.5));
   EXPECT_EQ(FrictionLimit(0.5, Array3::Zero()), Array3::Zero());
 }
@@ -277,22 +279,33 @@ TEST(ActiveSet, AlmFrictionalTransitions) {
 }
 
 TEST(ActiveSet, AlmFrictionalWithoutFrictionOmitsTheTangentialStart) {
-  FrictionalNodes s(2);
-  for (IndexType id : {1, 2}) s.N(id).SetValue(FRICTION_COEFFICIENT, 0.0);
+  FrictionalNodes s(3);
+  for (IndexType id : {1, 2, 3}) s.N(id).SetValue(FRICTION_COEFFICIENT, 0.0);
   // 1: activates with a slip: lambda = n lbar_n / k only; any tangential pressure slips, with a
   // zero traction (the Coulomb limit).
   s.Gap(1) = -0.25;
   s.Slip(1) = Array3(0.0625, 0.0, 0.0);
-  // 2: active, no tangential pressure at all: sticks.
+  // 2: slipping, no tangential pressure at all: nothing holds it, it keeps slipping (issue 12: it
+  // used to stick, and the condition then imposed a stick constraint on a frictionless node).
   s.State(2, true, true);
   s.Lm(2) = Array3(0.0, -1.0, 0.0);
+  // 3: sticking (e.g. activated with zero slip), no tangential pressure: slips.
+  s.State(3, true, false);
+  s.Lm(3) = Array3(0.0, -1.0, 0.0);
   const SetChanges changes = ComputeALMFrictionalActiveSet(*s.contact, false);
   EXPECT_EQ(changes.active, 1u);
-  EXPECT_EQ(changes.slip, 2u);
+  EXPECT_EQ(changes.slip, 2u);  // nodes 1 and 3
   EXPECT_EQ(s.Lm(1), Array3(0.0, -1.0, 0.0));
-  EXPECT_TRUE(s.N(1).Is(SLIP));
-  EXPECT_EQ(s.Tangent(1), Array3::Zero());
-  EXPECT_FALSE(s.N(2).Is(SLIP));
+  for (IndexType id : {1, 2, 3}) {
+    EXPECT_TRUE(s.N(id).Is(SLIP)) << id;
+    EXPECT_EQ(s.Tangent(id), Array3::Zero()) << id;
+  }
+  // The penalty update decides alike (lbar_n = eps g < 0, lbar_t = c_tau eps s = 0 at node 3).
+  s.State(3, true, false);
+  s.Gap(3) = -0.25;
+  s.Slip(3) = Array3::Zero();
+  ComputePenaltyFrictionalActiveSet(*s.contact, false);
+  EXPECT_TRUE(s.N(3).Is(SLIP));
 }
 
 TEST(ActiveSet, PureSlipKeepsEveryActiveNodeSlippingAndWarns) {

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "contact_utilities_test_helpers.h"
@@ -292,6 +293,81 @@ TEST(ExactMortarIntegration, Sum4_SliverPolygons) {
     }
   // Kratos asserts 5e-5; merging vertices closer than the tolerance costs ~1e-11 here.
   EXPECT_LT(worst, 1e-9);
+}
+
+// Degenerate clipping (issue 12): a unit slave square and a master square of side a (a = 1 or
+// 0.5) whose edges lie on the slave's edges, meet them at a corner or a shared vertex, cover it
+// exactly, or miss those positions by 1e-15 .. 1e-7 (aligned meshes after a tangential shift),
+// mapped onto an arbitrarily rotated plane with a 1e-3 gap so that no coordinate is exact. Every
+// pair is segmented (no "clipped polygon with n vertices"), into at most 8 vertices, and its area
+// is the exact overlap (a product of the interval overlaps) to 1e-12; slivers narrower than the
+// vertex-merging distance (1e-10 of the face size) may be dropped.
+TEST(ExactMortarIntegration, AlignedSharedAndCoincidentQuadrilaterals) {
+  using K = K44;
+  const Eigen::Matrix3d rotation =
+      (Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()) * Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()))
+          .toRotationMatrix();
+  const Eigen::Vector3d origin(0.31, -0.27, 0.11);
+  auto place = [&](double x, double y, double z) { return (origin + rotation * Eigen::Vector3d(x, y, z)).eval(); };
+  K::SlaveMatrix x1;
+  const double square[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  for (int i = 0; i < 4; ++i) x1.row(i) = place(square[i][0], square[i][1], 0.0).transpose();
+  const double offsets[] = {0.0, 1e-15, -1e-15, 1e-11, -1e-11, 1e-9, -1e-7};
+  const double positions[] = {-1.0, -0.5, 0.0, 0.25, 0.5, 1.0};
+  int pairs = 0, overlapping = 0;
+  for (const double side : {1.0, 0.5})
+    for (const double px : positions)
+      for (const double py : positions)
+        for (const double ox : offsets)
+          for (const double oy : offsets) {
+            const double x0 = px + ox, y0 = py + oy;
+            K::MasterMatrix x2;
+            for (int l = 0; l < 4; ++l)
+              x2.row(l) = place(x0 + side * square[3 - l][0], y0 + side * square[3 - l][1], 1e-3).transpose();
+            const double exact = std::max(0.0, std::min(1.0, x0 + side) - std::max(0.0, x0)) *
+                                 std::max(0.0, std::min(1.0, y0 + side) - std::max(0.0, y0));
+            MortarIntegrationPoints<double, 3, 4, 4> points;
+            bool found = false;
+            ASSERT_NO_THROW(found = (ExactMortarIntegrationUtility<3, 4, 4>::Compute(x1, x2, ConditionNormals<K>(x1),
+                                                                                     Order(2), points)))
+                << "master at (" << x0 << ", " << y0 << "), side " << side;
+            const double area = found ? points.area : 0.0;
+            if (exact > 1e-9 || area > 0.0)
+              EXPECT_NEAR(area, exact, 1e-12) << "master at (" << x0 << ", " << y0 << "), side " << side;
+            else
+              EXPECT_LT(exact, 1e-10) << "master at (" << x0 << ", " << y0 << "), side " << side;
+            // At most n + m - 2 = 6 fan triangles of 3 points.
+            EXPECT_LE(points.size, 6 * 3);
+            ++pairs;
+            overlapping += exact > 1e-12;
+          }
+  EXPECT_EQ(pairs, 2 * 36 * 49);
+  EXPECT_GT(overlapping, 1000);
+}
+
+// The pair that raised "clipped polygon with 9 vertices" in the frictional sweep
+// (3d_hex_flat_r0.5_overhang-none_gap_disp_4steps_fric_mu0.3_shift, step 7, third iteration, after a
+// Newton step of |r_u|^2/|r_u0|^2 = 6e20): its master face, 1 in size where it was 0.2, is folded
+// seen along the slave normal. The error says so instead of integrating a wrong area.
+TEST(ExactMortarIntegration, FoldedMasterFaceOfADivergedIterateIsAnError) {
+  const auto x1 =
+      Rows<K44::SlaveMatrix>({0.35786855178134835, -0.22733297504675262, -0.08438905766806408, 0.44918066344109708,
+                              -0.23138547302904547, 0.057306946730948993, 0.35801866758089473, -0.29472682400676603,
+                              0.18794168939019615, 0.30458745203534759, -0.34406695627128331, 0.034539875089470297});
+  const auto x2 =
+      Rows<K44::MasterMatrix>({0.22056610750475786, -0.35149835123712392, 0.42221754546887058, 0.6338917167536805,
+                               -0.548426321814242, -0.488899243957234, 0.3832963397977398, -0.36836643982492345,
+                               0.48717960457888315, 0.33410950341129081, -0.23161639191032182, -0.14522702204877991});
+  MortarIntegrationPoints<double, 3, 4, 4> points;
+  try {
+    ExactMortarIntegrationUtility<3, 4, 4>::Compute(x1, x2, ConditionNormals<K44>(x1), Order(2), points);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("clipped polygon with 9 vertices (at most 8 for convex faces)"), std::string::npos)
+        << message;
+    EXPECT_NE(message.find("folded or self-intersecting"), std::string::npos) << message;
+  }
 }
 
 TEST(ExactMortarIntegration, SettingsErrors) {
