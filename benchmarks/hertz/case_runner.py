@@ -223,6 +223,7 @@ def run_mortarcontact(parameters_path: str, dim: int, record: dict, linear_solve
         record["steps"].append({"time": t, "iterations": iterations, "converged": converged, "seconds": seconds})
     record["phases"] = _mortarcontact_phases(analysis, record["analysis_seconds"])
     record["linear_solver_counters"] = analysis.solver.strategy.GetBuilderAndSolver().GetLinearSolverCounters()
+    record["dofs"] = analysis.solver.strategy.GetBuilderAndSolver().NumberOfDofs()
     searches = [s for p in analysis.processes for s in getattr(p, "searches", [])]
     record["contact_pairs"] = sum(s.ComputingPart().NumberOfConditions() for s in searches)
     record["searches"] = sum(s.NumberOfSearches() for s in searches)
@@ -281,6 +282,12 @@ def main(argv=None) -> int:
     record["process_seconds"] = time.perf_counter() - process_started
     record["peak_rss_mb"] = _peak_rss_mb()
     record["blas"] = _blas_libraries()
+    if args.code == "mortarcontact":
+        import mortarcontact as mc
+
+        # Under mpirun each rank records its own phases and memory: rank r > 0 beside rank 0's file.
+        if (rank := mc._core.LaunchedRank()) > 0:
+            output = f"{os.path.splitext(output)[0]}.rank{rank}.json"
     with open(output, "w") as f:
         json.dump(record, f, indent=1)
     return 0

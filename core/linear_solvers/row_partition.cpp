@@ -19,8 +19,8 @@ RowPartition RowPartition::AtNodes(const std::vector<Dof*>& dof_of_row, std::int
   partition.starts_[0] = 0;
   for (int r = 1; r < size; ++r) {
     std::int64_t cut = std::max(rows * r / size, partition.starts_[static_cast<std::size_t>(r) - 1]);
-    while (cut > 0 && cut < rows && dof_of_row[static_cast<std::size_t>(cut)]->node ==
-                                        dof_of_row[static_cast<std::size_t>(cut) - 1]->node)
+    while (cut > 0 && cut < rows &&
+           dof_of_row[static_cast<std::size_t>(cut)]->node == dof_of_row[static_cast<std::size_t>(cut) - 1]->node)
       ++cut;
     partition.starts_[static_cast<std::size_t>(r)] = cut;
   }

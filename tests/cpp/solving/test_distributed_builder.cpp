@@ -164,8 +164,8 @@ TEST_P(DistributedBuilders, RanksGiveTheSerialIterationsAndSolution) {
   std::vector<std::thread> threads;
   for (int r = 0; r < size; ++r)
     threads.emplace_back([&, r] {
-      runs[static_cast<std::size_t>(r)] = SolveTruss(*trusses[static_cast<std::size_t>(r)],
-                                                     MakeBuilder(type, solvers[static_cast<std::size_t>(r)]));
+      runs[static_cast<std::size_t>(r)] =
+          SolveTruss(*trusses[static_cast<std::size_t>(r)], MakeBuilder(type, solvers[static_cast<std::size_t>(r)]));
     });
   for (auto& t : threads) t.join();
 
