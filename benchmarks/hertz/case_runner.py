@@ -216,6 +216,7 @@ def run_mortarcontact(parameters_path: str, dim: int, record: dict, linear_solve
     analysis.Initialize()
     record["setup_seconds"] = time.perf_counter() - started
     analysis.RunSolutionLoop()
+    record["dofs"] = analysis.solver.strategy.GetBuilderAndSolver().NumberOfDofs()  # Finalize frees them
     analysis.Finalize()
     record["analysis_seconds"] = time.perf_counter() - started
     record["analysis_cpu_seconds"] = time.process_time() - cpu_started
@@ -223,7 +224,6 @@ def run_mortarcontact(parameters_path: str, dim: int, record: dict, linear_solve
         record["steps"].append({"time": t, "iterations": iterations, "converged": converged, "seconds": seconds})
     record["phases"] = _mortarcontact_phases(analysis, record["analysis_seconds"])
     record["linear_solver_counters"] = analysis.solver.strategy.GetBuilderAndSolver().GetLinearSolverCounters()
-    record["dofs"] = analysis.solver.strategy.GetBuilderAndSolver().NumberOfDofs()
     searches = [s for p in analysis.processes for s in getattr(p, "searches", [])]
     record["contact_pairs"] = sum(s.ComputingPart().NumberOfConditions() for s in searches)
     record["searches"] = sum(s.NumberOfSearches() for s in searches)
