@@ -133,13 +133,25 @@ def test_two_ranks_give_the_serial_answer(tmp_path, run):
     assert len(summaries) == 1, outputs[2]
 
 
-def test_a_serial_linear_solver_under_mpirun_is_one_clear_error(tmp_path):
-    """Not a silent run of the whole problem on every rank: the error names the key and 'petsc'."""
-    _write_case(tmp_path, RUNS["patch3d-mumps"][0], None, {"solver_type": "skyline_lu_factorization"})
+ERRORS = {
+    # Not a silent run of the whole problem on every rank: the error names the key and 'petsc'.
+    "serial-solver": ({"solver_type": "skyline_lu_factorization"}, 2, "input error",
+                      ["linear_solver_settings.solver_type: 'skyline_lu_factorization' solves on one process",
+                       "2 processes", '"petsc"']),
+    # Row scaling needs whole rows.
+    "scaling": ({"solver_type": "petsc", "scaling": True}, 3, "not implemented",
+                ["linear_solver_settings.scaling: not available in a run on 2 processes"]),
+}
+
+
+@pytest.mark.parametrize("error", sorted(ERRORS))
+def test_what_does_not_distribute_is_one_clear_error(tmp_path, error):
+    linear_solver, code, kind, parts = ERRORS[error]
+    _write_case(tmp_path, RUNS["patch3d-mumps"][0], False, linear_solver)
     done = _run(tmp_path, 2)
-    assert done.returncode == 2, done.stdout + done.stderr
+    assert done.returncode == code, done.stdout + done.stderr
     assert "Traceback" not in done.stderr
-    messages = [line for line in done.stderr.splitlines() if line.startswith("mortarcontact: input error")]
-    assert len(messages) == 1, done.stderr
-    assert "linear_solver_settings.solver_type: 'skyline_lu_factorization' solves on one process" in messages[0]
-    assert "2 processes" in messages[0] and '"petsc"' in messages[0]
+    messages = [line for line in done.stderr.splitlines() if line.startswith(f"mortarcontact: {kind}")]
+    assert len(messages) == 1, done.stderr  # rank 0's only
+    for part in parts:
+        assert part in messages[0], messages[0]
