@@ -44,11 +44,14 @@ FIELDSPLIT = {"solver_type": "petsc", "tolerance": 1e-14, "max_iteration": 500,
               "petsc_options": {"pc_type": "fieldsplit"}}
 
 HERTZ_2D = "ALM_frictionless_contact_test_2D/simple_hertz_sphere_plate_test"
+GENERATED = "generated/hertz2d_2k"
 # (case, vector multiplier, linear solver): a 2D Hertz-type case of Kratos' (a curved body pressed
 # on a plate, implicit dynamics) with MUMPS and with the field split (BoomerAMG on 2 ranks), its
-# vector-multiplier variant (condensed by MixedULM in the serial run, solved whole on 2 ranks), and
-# Kratos' 3D patch (hexahedra, quadrilateral faces).
+# vector-multiplier variant (condensed by MixedULM in the serial run, solved whole on 2 ranks),
+# Kratos' 3D patch (hexahedra, quadrilateral faces), and our Hertz cylinder (4 load steps, the
+# contact zone growing in each: the active set changes between iterations; needs gmsh).
 RUNS = {
+    "hertz2d-generated-mumps": (GENERATED, False, MUMPS),
     "hertz2d-mumps": (HERTZ_2D, False, MUMPS),
     "hertz2d-fieldsplit": (HERTZ_2D, False, FIELDSPLIT),
     "hertz2d-components-mumps": (HERTZ_2D, True, MUMPS),
@@ -56,13 +59,28 @@ RUNS = {
 }
 
 
+def _parameters(folder, case: str) -> dict:
+    """The case's files copied into `folder` (or generated there) and its parameters."""
+    if case == GENERATED:
+        pytest.importorskip("gmsh", reason="gmsh is not installed: the Hertz cylinder case is generated with it")
+        from mortarcontact.cases import hertz
+
+        generated = hertz.write_case("hertz2d", "2k", str(folder))
+        for name in os.listdir(generated):
+            shutil.move(os.path.join(generated, name), os.path.join(folder, name))
+        path = os.path.join(folder, "ProjectParameters.json")
+    else:
+        sub = os.path.dirname(case)
+        shutil.copytree(os.path.join(CASES, sub), os.path.join(folder, sub), dirs_exist_ok=True)
+        path = os.path.join(CASES, f"{case}_parameters.json")
+    with open(path) as f:
+        return json.load(f)
+
+
 def _write_case(folder, case: str, components, linear_solver: dict) -> str:
-    """The Kratos case in `folder` with its parameters as ProjectParameters.json, solved by
+    """The case in `folder` with its parameters as ProjectParameters.json, solved by
     `linear_solver`, writing the displacements, the contact pressures and the Newton history."""
-    sub = os.path.dirname(case)
-    shutil.copytree(os.path.join(CASES, sub), os.path.join(folder, sub), dirs_exist_ok=True)
-    with open(os.path.join(CASES, f"{case}_parameters.json")) as f:
-        parameters = json.load(f)
+    parameters = _parameters(folder, case)
     solver = parameters["solver_settings"]
     solver["linear_solver_settings"] = linear_solver
     solver["convergence_history"] = {"file_name": "history.csv"}
@@ -70,7 +88,7 @@ def _write_case(folder, case: str, components, linear_solver: dict) -> str:
         solver["contact_settings"]["mortar_type"] = "ALMContactFrictionlessComponents"
         for process in parameters["processes"]["contact_process_list"]:
             process["Parameters"]["contact_type"] = "FrictionlessComponents"
-    part = solver.get("model_part_name", parameters["problem_data"].get("model_part_name", "Structure"))
+    part = solver.get("model_part_name") or parameters["problem_data"].get("model_part_name", "Structure")
     processes = parameters["processes"]
     processes.pop("json_check_process", None)  # compared with the serial run instead
     processes["json_output"] = [
