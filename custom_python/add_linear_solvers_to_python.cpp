@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <pybind11/eigen.h>
 
+#include "core/linear_solvers/assembly_communicator.h"
 #include "core/linear_solvers/linear_solver.h"
 #include "core/parameters/parameters.h"
 #include "custom_python/python_module.h"
@@ -32,7 +33,18 @@ void AddLinearSolversToPython(py::module_& m) {
                             py::arg("krylov_iterations") = c.krylov_iterations, py::arg("fallbacks") = c.fallbacks);
           },
           "Work done so far: numeric factorizations, Krylov solves with kept factors, their iterations, fallbacks to "
-          "a fresh factorization.");
+          "a fresh factorization.")
+      .def(
+          "Processes",
+          [](const LinearSolver& solver) {
+            const AssemblyCommunicator* communicator = solver.Communicator();
+            return communicator ? communicator->Size() : 1;
+          },
+          "How many processes the system is distributed over (1: solved within this process).");
+  m.def("LaunchedProcesses", &AssemblyCommunicator::LaunchedSize,
+        "How many processes mpirun (or mpiexec, srun) started this one among, from its environment; 1 without.");
+  m.def("LaunchedRank", &AssemblyCommunicator::LaunchedRank,
+        "This process's rank among those mpirun started (0 without mpirun).");
   m.def(
       "CreateLinearSolver",
       [](const Parameters& settings) { return std::shared_ptr<LinearSolver>(CreateLinearSolver(settings)); },

@@ -22,7 +22,7 @@ from .process_factory import create_process_lists, naming_the_item
 from .project_parameters import migrate_project_parameters, read_project_parameters
 from .restart import attach_run
 from .solvers import create_solver
-from .utilities import warn
+from .utilities import secondary_process, warn
 
 
 class ConvergenceFailure(_core.SolutionError):
@@ -70,7 +70,8 @@ class StructuralMechanicsAnalysis:
         self.solver.ImportModelPart()
         self.solver.AddDofs()
         self.processes = self._create_processes("processes")
-        self.output_processes = self._create_processes("output_processes")
+        # Under mpirun the ranks hold the same model: only rank 0 writes it out.
+        self.output_processes = [] if secondary_process() else self._create_processes("output_processes")
         attach_run(self._all_processes(), self.solver.mesh_record, self.solver)
         for process in self._all_processes():
             with naming_the_item(getattr(process, "item_where", "")):

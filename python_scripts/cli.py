@@ -35,6 +35,9 @@ def main(argv=None) -> int:
     from . import _core
     from .analysis_stage import run_case as run_case_cli
 
+    if _core.LaunchedRank() > 0:
+        # Under mpirun every rank runs the same case; rank 0 speaks for them all.
+        _silence_this_process()
     try:
         analysis = run_case_cli(args.parameters, progress=not args.no_progress and sys.stdout.isatty(),
                                 stop_on_non_convergence=not args.continue_on_non_convergence)
@@ -48,6 +51,17 @@ def main(argv=None) -> int:
         return _fail(args, "check failed", error, 5)
     print(analysis.Summary())
     return 0
+
+
+def _silence_this_process() -> None:
+    import os
+
+    quiet = os.open(os.devnull, os.O_WRONLY)
+    sys.stdout.flush()
+    sys.stderr.flush()
+    os.dup2(quiet, 1)  # the C++ log and PETSc write to the descriptors, not to sys.stdout
+    os.dup2(quiet, 2)
+    os.close(quiet)
 
 
 def _fail(args, kind: str, error: Exception, code: int) -> int:

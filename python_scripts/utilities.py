@@ -43,9 +43,21 @@ def write_text_atomically(path: str, text: str) -> None:
         raise
 
 
+def secondary_process() -> bool:
+    """Whether this is a process other than rank 0 of a run under ``mpirun``: every rank holds the
+    whole model and takes part in the distributed solves, but only rank 0 prints and writes files."""
+    from . import _core
+
+    return _core.LaunchedRank() > 0
+
+
 def publish_file(temporary: str, path: str) -> None:
     """Renames a finished temporary file over ``path`` with the mode of a file created normally
-    (0666 less the umask, usually 0644) instead of mkstemp's private 0600."""
+    (0666 less the umask, usually 0644) instead of mkstemp's private 0600. In a secondary process
+    of an mpirun run the file is dropped: rank 0 writes the same one."""
+    if secondary_process():
+        os.remove(temporary)
+        return
     umask = os.umask(0)
     os.umask(umask)
     os.chmod(temporary, 0o666 & ~umask)

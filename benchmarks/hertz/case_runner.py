@@ -216,6 +216,7 @@ def run_mortarcontact(parameters_path: str, dim: int, record: dict, linear_solve
     analysis.Initialize()
     record["setup_seconds"] = time.perf_counter() - started
     analysis.RunSolutionLoop()
+    record["dofs"] = analysis.solver.strategy.GetBuilderAndSolver().NumberOfDofs()  # Finalize frees them
     analysis.Finalize()
     record["analysis_seconds"] = time.perf_counter() - started
     record["analysis_cpu_seconds"] = time.process_time() - cpu_started
@@ -281,6 +282,12 @@ def main(argv=None) -> int:
     record["process_seconds"] = time.perf_counter() - process_started
     record["peak_rss_mb"] = _peak_rss_mb()
     record["blas"] = _blas_libraries()
+    if args.code == "mortarcontact":
+        import mortarcontact as mc
+
+        # Under mpirun each rank records its own phases and memory: rank r > 0 beside rank 0's file.
+        if (rank := mc._core.LaunchedRank()) > 0:
+            output = f"{os.path.splitext(output)[0]}.rank{rank}.json"
     with open(output, "w") as f:
         json.dump(record, f, indent=1)
     return 0

@@ -11,7 +11,9 @@
 
 namespace mc {
 
+class AssemblyCommunicator;
 class Parameters;
+class RowPartition;
 struct Dof;
 
 /// Raised by a direct solver whose factorization met a zero pivot; `Equation()` is the row or
@@ -60,6 +62,15 @@ class LinearSolver {
   virtual bool AdditionalPhysicalDataIsNeeded() const { return false; }
   /// `dof_of_equation[i]` is the DoF of row i of A (entries beyond A.rows() are not rows).
   virtual void ProvideAdditionalData(const SparseMatrix& A, const std::vector<Dof*>& dof_of_equation) {}
+
+  /// Non-null when the system is distributed over several processes (PETSc under `mpirun -n N`,
+  /// N > 1). The builder then assembles on each rank only the entities it owns, and the contract
+  /// of Initialize and Solve changes: A is this rank's share of the matrix (the system matrix is
+  /// the sum of the ranks' shares, on one pattern, the same on every rank), b is whole and the
+  /// same on every rank, and Solve returns the whole x on every rank, the same bits everywhere.
+  /// SetRowPartition tells, before Initialize, which rows each rank owns.
+  virtual const AssemblyCommunicator* Communicator() const { return nullptr; }
+  virtual void SetRowPartition(const RowPartition& rows) {}
 };
 
 /// Builds a solver from `linear_solver_settings` (Kratos names, normalised as in spec 7.1:

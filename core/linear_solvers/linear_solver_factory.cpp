@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/linear_solvers/assembly_communicator.h"
 #include "core/linear_solvers/cholmod_solver.h"
 #include "core/linear_solvers/eigen_sparse_lu_solver.h"
 #include "core/linear_solvers/factorization_reuse_solver.h"
@@ -259,7 +260,9 @@ void RegisterLinearSolver(const std::string& name, LinearSolverCreator create) {
   RegisteredSolvers()[name] = std::move(create);
 }
 
-std::unique_ptr<LinearSolver> CreateLinearSolver(const Parameters& user_settings) {
+namespace {
+
+std::unique_ptr<LinearSolver> CreateSerialOrDistributed(const Parameters& user_settings) {
   if (user_settings.Has("solver_type") && user_settings["solver_type"].IsString()) {
     const auto registered =
         RegisteredSolvers().find(NormalizeLinearSolverName(user_settings["solver_type"].GetString()));
@@ -340,7 +343,31 @@ std::unique_ptr<LinearSolver> CreateLinearSolver(const Parameters& user_settings
                  "' (sparse QR) is not implemented; use 'umfpack' or 'skyline_lu_factorization'"));
     case Backend::kPetsc: solver = CreatePetscSolver(settings); break;
   }
-  if (settings["scaling"].GetBool()) solver = std::make_unique<ScalingSolver>(std::move(solver));
+  if (settings["scaling"].GetBool()) {
+    // Row scaling needs whole rows, which a distributed run's ranks hold only in part.
+    if (solver->Communicator())
+      throw NotImplementedError(Concat(settings.Where(), ".scaling: not available in a run on ",
+                                       solver->Communicator()->Size(),
+                                       " processes (and contact_settings.rescale_linear_solver, which sets it)"));
+    solver = std::make_unique<ScalingSolver>(std::move(solver));
+  }
+  return solver;
+}
+
+}  // namespace
+
+std::unique_ptr<LinearSolver> CreateLinearSolver(const Parameters& user_settings) {
+  std::unique_ptr<LinearSolver> solver = CreateSerialOrDistributed(user_settings);
+  // Under mpirun a solver of one process would run the whole problem N times over.
+  if (const int processes = AssemblyCommunicator::LaunchedSize(); processes > 1 && !solver->Communicator()) {
+    const std::string given = user_settings.Has("solver_type") && user_settings["solver_type"].IsString()
+                                  ? user_settings["solver_type"].GetString()
+                                  : std::string("umfpack");
+    throw InputError(Concat(user_settings.Where(), ".solver_type: '", given, "' solves on one process, and this run ",
+                            "was started on ", processes,
+                            " processes (mpirun): only \"petsc\" distributes the system (MUMPS LU by default, "
+                            "\"petsc_options\": {\"pc_type\": \"fieldsplit\"} for the field split with BoomerAMG)"));
+  }
   return solver;
 }
 

@@ -39,7 +39,20 @@ void BlockBuilderAndSolver::ApplyDirichletConditions(bool lhs, bool rhs) {
   double* values = A_.valuePtr();
   const long n = static_cast<long>(n_system_);
   scale_ = 1.0;
-  if (diagonal_ == DirichletDiagonal::kMaxDiagonal) {
+  const AssemblyCommunicator* communicator = Communicator();
+  if (diagonal_ == DirichletDiagonal::kMaxDiagonal && communicator) {
+    // The diagonal is the sum of the ranks' shares: sum it before taking the largest.
+    std::vector<double> diagonal(n_system_, 0.0);
+    for (long j = 0; j < n; ++j) {
+      if (constrained_[j]) continue;
+      for (int p = outer[j]; p < outer[j + 1]; ++p)
+        if (inner[p] == j) diagonal[static_cast<std::size_t>(j)] = values[p];
+    }
+    communicator->SumToAll(diagonal.data(), diagonal.size());
+    double largest = 0.0;
+    for (const double d : diagonal) largest = std::max(largest, std::abs(d));
+    if (largest > 0.0) scale_ = largest;
+  } else if (diagonal_ == DirichletDiagonal::kMaxDiagonal) {
     double largest = 0.0;
 #pragma omp parallel for reduction(max : largest) if (n >= kMinParallelDofs)
     for (long j = 0; j < n; ++j) {
@@ -52,7 +65,9 @@ void BlockBuilderAndSolver::ApplyDirichletConditions(bool lhs, bool rhs) {
 #pragma omp parallel for if (n >= kMinParallelDofs)
   for (long j = 0; j < n; ++j) {
     if (constrained_[j]) {
-      for (int p = outer[j]; p < outer[j + 1]; ++p) values[p] = inner[p] == j ? scale_ : 0.0;
+      // Distributed: the rank owning the row puts the diagonal, the others' shares add zero.
+      const double diagonal = communicator && !Partition().Owns(j) ? 0.0 : scale_;
+      for (int p = outer[j]; p < outer[j + 1]; ++p) values[p] = inner[p] == j ? diagonal : 0.0;
     } else {
       for (int p = outer[j]; p < outer[j + 1]; ++p)
         if (constrained_[inner[p]]) values[p] = 0.0;

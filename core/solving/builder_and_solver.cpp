@@ -39,7 +39,8 @@ std::string DofName(const Dof& dof) { return Concat(dof.variable->Name(), " of n
 }  // namespace
 
 BuilderAndSolver::BuilderAndSolver(std::shared_ptr<LinearSolver> linear_solver)
-    : linear_solver_(std::move(linear_solver)) {}
+    : linear_solver_(std::move(linear_solver)),
+      communicator_(linear_solver_ ? linear_solver_->Communicator() : nullptr) {}
 
 BuilderAndSolver::~BuilderAndSolver() = default;
 
@@ -115,6 +116,9 @@ void BuilderAndSolver::SetUpSystem() {
     dofs_by_equation_[static_cast<std::size_t>(d->equation_id)] = d;
     fixed_at_numbering_[static_cast<std::size_t>(d->equation_id)] = d->fixed;
   }
+  if (communicator_)
+    partition_ = RowPartition::AtNodes(dofs_by_equation_, static_cast<std::int64_t>(n_system_), communicator_->Size(),
+                                       communicator_->Rank());
   rhs_raw_.setZero(static_cast<Eigen::Index>(n));
   rhs_effective_.setZero(static_cast<Eigen::Index>(n));
   residual_.setZero(static_cast<Eigen::Index>(n));
@@ -147,6 +151,11 @@ void BuilderAndSolver::ClearConstraints() {
 // Pattern ---------------------------------------------------------------------------------------
 
 void BuilderAndSolver::PrepareBuild() {
+  // T^T K T and T^T (r - K g) would mix the ranks' shares of K with the whole residual.
+  if (communicator_ && !constraints_.empty())
+    throw NotImplementedError(Concat("master-slave constraints (", constraints_.size(),
+                                     ", e.g. from impose_rigid_movement_process) in a run on ", communicator_->Size(),
+                                     " processes: run them on one process"));
   if (!numbered_ || constraints_changed_ || NumberingIsStale()) SetUpSystem();
   for (const auto& [slave, c] : slave_of_)
     if (slave->fixed)
@@ -273,7 +282,7 @@ void BuilderAndSolver::Assemble(Scheme& scheme, ModelPart& model_part, Mode mode
   // Scatter adds are atomic only when threads share the loop: an atomic add of a double is a
   // compare-and-swap loop, several times the cost of the plain add of a serial run.
   auto assemble = [&](auto& e, Mode entity_mode, auto concurrent) {
-    if (!e.IsActive()) return;
+    if (!e.IsActive() || (communicator_ && !OwnsEntity(e, info))) return;
     const bool with_lhs = entity_mode != Mode::kRhs;
     const bool with_rhs = entity_mode != Mode::kLhs;
     static thread_local Matrix local_lhs;
@@ -359,6 +368,16 @@ void BuilderAndSolver::Assemble(Scheme& scheme, ModelPart& model_part, Mode mode
   assemble_all(model_part.Conditions(), mode);
 }
 
+bool BuilderAndSolver::OwnsEntity(const Entity& entity, const ProcessInfo& info) const {
+  static thread_local EquationIdVectorType ids;
+  entity.EquationIdVector(ids, info);
+  return ids.empty() ? partition_.Rank() == 0 : partition_.Owns(ids.front());
+}
+
+void BuilderAndSolver::SumResidualOverRanks() {
+  if (communicator_) communicator_->SumToAll(rhs_raw_.data(), static_cast<std::size_t>(rhs_raw_.size()));
+}
+
 void BuilderAndSolver::FinishResidual() {
   rhs_effective_ = rhs_raw_;
   for (const auto& c : constraints_) {
@@ -400,6 +419,7 @@ void BuilderAndSolver::Build(Scheme& scheme, ModelPart& model_part) {
   if (!pattern_valid_) BuildPattern(model_part);
   ScopedTimer timer(timings_.build);
   Assemble(scheme, model_part, Mode::kBoth);
+  SumResidualOverRanks();
   FinishResidual();
   ReduceSystem(Mode::kBoth);
   ApplyDirichletConditions(true, true);
@@ -420,6 +440,7 @@ void BuilderAndSolver::BuildRHS(Scheme& scheme, ModelPart& model_part) {
   PrepareBuild();
   ScopedTimer timer(timings_.build);
   Assemble(scheme, model_part, Mode::kRhs);
+  SumResidualOverRanks();
   FinishResidual();
   if (pattern_valid_ || constraints_.empty()) {
     ReduceSystem(Mode::kRhs);
@@ -433,10 +454,24 @@ void BuilderAndSolver::CheckEmptyColumns() const {
   std::vector<const Dof*> empty;
   const int* outer = A_.outerIndexPtr();
   const double* values = A_.valuePtr();
-  for (Eigen::Index j = 0; j < A_.outerSize(); ++j) {
-    bool any = false;
-    for (int p = outer[j]; p < outer[j + 1] && !any; ++p) any = values[p] != 0.0;
-    if (!any) empty.push_back(dofs_by_equation_[static_cast<std::size_t>(j)]);
+  if (communicator_) {
+    // A column empty in this rank's share may be filled by another's: count the ranks filling it.
+    std::vector<double> filled(static_cast<std::size_t>(A_.outerSize()), 0.0);
+    for (Eigen::Index j = 0; j < A_.outerSize(); ++j)
+      for (int p = outer[j]; p < outer[j + 1]; ++p)
+        if (values[p] != 0.0) {
+          filled[static_cast<std::size_t>(j)] = 1.0;
+          break;
+        }
+    communicator_->SumToAll(filled.data(), filled.size());
+    for (std::size_t j = 0; j < filled.size(); ++j)
+      if (filled[j] == 0.0) empty.push_back(dofs_by_equation_[j]);
+  } else {
+    for (Eigen::Index j = 0; j < A_.outerSize(); ++j) {
+      bool any = false;
+      for (int p = outer[j]; p < outer[j + 1] && !any; ++p) any = values[p] != 0.0;
+      if (!any) empty.push_back(dofs_by_equation_[static_cast<std::size_t>(j)]);
+    }
   }
   if (!empty.empty()) ThrowSingular(empty, "");
 }
@@ -476,6 +511,7 @@ void BuilderAndSolver::SolveSystem() {
   {
     ScopedTimer timer(timings_.solve);
     if (solver_pattern_version_ != pattern_version_) {
+      if (communicator_) linear_solver_->SetRowPartition(partition_);
       linear_solver_->Initialize(A_);
       solver_pattern_version_ = pattern_version_;
     }

@@ -6,13 +6,17 @@
 #include <unordered_map>
 #include <vector>
 
+#include "core/linear_solvers/assembly_communicator.h"
 #include "core/linear_solvers/linear_solver.h"
+#include "core/linear_solvers/row_partition.h"
 #include "core/linear_solvers/sparse_types.h"
 #include "core/model/dof.h"
 
 namespace mc {
 
+class Entity;
 class ModelPart;
+class ProcessInfo;
 class Scheme;
 class MasterSlaveConstraint;
 
@@ -32,6 +36,15 @@ class MasterSlaveConstraint;
 /// unknowns to the assembled ones and g the current constraint violation,
 ///   A = T^T K T,  b = T^T (r - K g),  dx = T x + g,
 /// so every constraint holds exactly after each solve.
+///
+/// Distributed (a linear solver with a Communicator(): PETSc under `mpirun -n N`): every rank
+/// holds the whole model and the whole DoF set, numbers it the same way, and owns a block of rows
+/// (RowPartition::AtNodes). An element or condition belongs to the rank that owns the row of its
+/// first equation id (its first node), so each is computed by exactly one rank; each rank
+/// assembles its own entities into its share of the matrix, which the linear solver sums
+/// (PETSc's MPIAIJ), and the residual is summed over the ranks, so Residual(), Increment() and
+/// the reactions are whole and identical on every rank, and the criteria, the contact search
+/// and the active set run as in a serial run. With one process nothing of this runs.
 class BuilderAndSolver {
  public:
   /// Cumulative wall-clock seconds, for benchmarks.
@@ -105,6 +118,10 @@ class BuilderAndSolver {
   Vector& Increment() noexcept { return dx_; }
 
   LinearSolver* GetLinearSolver() const noexcept { return linear_solver_.get(); }
+  /// Null in a serial run; see the class comment.
+  const AssemblyCommunicator* Communicator() const noexcept { return communicator_; }
+  /// The rows each rank owns (distributed runs; updated by SetUpSystem).
+  const RowPartition& Partition() const noexcept { return partition_; }
   /// Frees what the linear solver keeps between solves (factorizations, analyses): the next
   /// solve starts as in a new run. Restart checkpoints call it, so that a resumed run repeats the
   /// uninterrupted one bit for bit although the solver reuses factorizations across steps.
@@ -160,9 +177,13 @@ class BuilderAndSolver {
   void FinishResidual();
   void ReduceSystem(Mode mode);
   void CheckEmptyColumns() const;
+  bool OwnsEntity(const Entity& entity, const ProcessInfo& info) const;
+  void SumResidualOverRanks();
   [[noreturn]] void ThrowSingular(const std::vector<const Dof*>& dofs, const std::string& detail) const;
 
   std::shared_ptr<LinearSolver> linear_solver_;
+  const AssemblyCommunicator* communicator_ = nullptr;  ///< owned by linear_solver_
+  RowPartition partition_;
   std::vector<std::shared_ptr<const MasterSlaveConstraint>> added_constraints_;  ///< by AddConstraint
   std::vector<std::shared_ptr<const MasterSlaveConstraint>> constraints_;        ///< added + model part's
   std::unordered_map<const Dof*, const MasterSlaveConstraint*> slave_of_;

@@ -15,6 +15,7 @@
 #include "core/model/dof.h"
 #include "core/model/node.h"
 #include "core/utilities/string_utilities.h"
+#include "petsc/petsc_communicator.h"
 
 namespace mc {
 
@@ -102,7 +103,14 @@ struct PetscSolver::Handles {
   Mat matrix = nullptr;
   KSP ksp = nullptr;
   Eigen::SparseMatrix<double, Eigen::RowMajor, PetscInt> rows;  // A by rows, as AIJ stores it
+  // Distributed: this rank's part of the solution, the whole solution, the gather between them.
+  Vec solution = nullptr;
+  Vec whole = nullptr;
+  VecScatter to_all = nullptr;
   ~Handles() {
+    if (to_all) VecScatterDestroy(&to_all);
+    if (whole) VecDestroy(&whole);
+    if (solution) VecDestroy(&solution);
     if (ksp) KSPDestroy(&ksp);
     if (matrix) MatDestroy(&matrix);
   }
@@ -112,9 +120,28 @@ PetscSolver::PetscSolver(Options options) : options_(std::move(options)), prefix
   options_.petsc_options = WithDefaults(std::move(options_.petsc_options));
   for (const auto& [key, value] : options_.petsc_options)
     if (key == "pc_type") field_split_ = value == "fieldsplit";
+  // A process started alone never loads MPI before its first solve, as before.
+  if (const int launched = AssemblyCommunicator::LaunchedSize(); launched > 1) {
+    EnsureInitialized();
+    communicator_ = std::make_unique<PetscCommunicator>(PETSC_COMM_WORLD);
+    if (communicator_->Size() != launched)
+      throw SolutionError(Concat("PETSc: the launcher started ", launched, " processes, MPI sees ",
+                                 communicator_->Size(), " (is mpirun the one of the MPI that PETSc was built with?)"));
+  }
 }
 
-PetscSolver::~PetscSolver() { ClearOptions(); }
+const AssemblyCommunicator* PetscSolver::Communicator() const { return communicator_.get(); }
+
+void PetscSolver::SetRowPartition(const RowPartition& rows) {
+  if (rows == partition_) return;
+  partition_ = rows;
+  Clear();
+}
+
+PetscSolver::~PetscSolver() {
+  handles_.reset();  // before the communicator the matrix lives on
+  ClearOptions();
+}
 
 void PetscSolver::ClearOptions() {
   if (!options_pending_) return;
@@ -178,20 +205,24 @@ void PetscSolver::Initialize(const SparseMatrix& A) {
   handles->rows = M;
   handles->rows.makeCompressed();
   const auto n = static_cast<PetscInt>(M.rows());
-  Check(MatCreate(PETSC_COMM_SELF, &handles->matrix), "MatCreate");
-  Check(MatSetSizes(handles->matrix, n, n, n, n), "MatSetSizes");
-  Check(MatSetType(handles->matrix, MATSEQAIJ), "MatSetType");
-  Check(MatSeqAIJSetPreallocationCSR(handles->matrix, handles->rows.outerIndexPtr(), handles->rows.innerIndexPtr(),
-                                     handles->rows.valuePtr()),
-        "MatSeqAIJSetPreallocationCSR");
-  // Solve copies values straight into AIJ's array: the entry count must be ours, zeros included.
-  MatInfo info;
-  Check(MatGetInfo(handles->matrix, MAT_LOCAL, &info), "MatGetInfo");
-  if (static_cast<long>(info.nz_used) != static_cast<long>(handles->rows.nonZeros()))
-    throw SolutionError(
-        Concat("PETSc: the AIJ matrix holds ", info.nz_used, " entries for ", handles->rows.nonZeros(), " given"));
+  if (communicator_) {
+    CreateDistributedMatrix(*handles);
+  } else {
+    Check(MatCreate(PETSC_COMM_SELF, &handles->matrix), "MatCreate");
+    Check(MatSetSizes(handles->matrix, n, n, n, n), "MatSetSizes");
+    Check(MatSetType(handles->matrix, MATSEQAIJ), "MatSetType");
+    Check(MatSeqAIJSetPreallocationCSR(handles->matrix, handles->rows.outerIndexPtr(), handles->rows.innerIndexPtr(),
+                                       handles->rows.valuePtr()),
+          "MatSeqAIJSetPreallocationCSR");
+    // Solve copies values straight into AIJ's array: the entry count must be ours, zeros included.
+    MatInfo info;
+    Check(MatGetInfo(handles->matrix, MAT_LOCAL, &info), "MatGetInfo");
+    if (static_cast<long>(info.nz_used) != static_cast<long>(handles->rows.nonZeros()))
+      throw SolutionError(
+          Concat("PETSc: the AIJ matrix holds ", info.nz_used, " entries for ", handles->rows.nonZeros(), " given"));
+  }
 
-  Check(KSPCreate(PETSC_COMM_SELF, &handles->ksp), "KSPCreate");
+  Check(KSPCreate(communicator_ ? communicator_->Comm() : PETSC_COMM_SELF, &handles->ksp), "KSPCreate");
   Check(KSPSetOptionsPrefix(handles->ksp, prefix_.c_str()), "KSPSetOptionsPrefix");
   ClearOptions();
   options_pending_ = true;
@@ -224,21 +255,43 @@ void PetscSolver::Solve(const SparseMatrix& A, Vector& x, const Vector& b) {
   // Same pattern: refresh the values in place (PETSc keeps its symbolic factorization).
   Eigen::SparseMatrix<double, Eigen::RowMajor, PetscInt>& rows = handles_->rows;
   rows = M;
-  PetscScalar* values = nullptr;
-  Check(MatSeqAIJGetArray(handles_->matrix, &values), "MatSeqAIJGetArray");
-  std::copy(rows.valuePtr(), rows.valuePtr() + rows.nonZeros(), values);
-  Check(MatSeqAIJRestoreArray(handles_->matrix, &values), "MatSeqAIJRestoreArray");
+  if (communicator_) {
+    FillDistributedMatrix();
+  } else {
+    PetscScalar* values = nullptr;
+    Check(MatSeqAIJGetArray(handles_->matrix, &values), "MatSeqAIJGetArray");
+    std::copy(rows.valuePtr(), rows.valuePtr() + rows.nonZeros(), values);
+    Check(MatSeqAIJRestoreArray(handles_->matrix, &values), "MatSeqAIJRestoreArray");
+  }
   Check(KSPSetOperators(handles_->ksp, handles_->matrix, handles_->matrix), "KSPSetOperators");
 
   x.setZero(M.cols());
   const auto n = static_cast<PetscInt>(M.rows());
   Vec rhs = nullptr, solution = nullptr;
-  Check(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, n, b.data(), &rhs), "VecCreateSeqWithArray");
-  Check(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, n, x.data(), &solution), "VecCreateSeqWithArray");
-  const PetscErrorCode solved = KSPSolve(handles_->ksp, rhs, solution);
+  PetscErrorCode solved = 0;
+  if (communicator_) {
+    const auto begin = static_cast<PetscInt>(partition_.Begin());
+    const auto local = static_cast<PetscInt>(partition_.End()) - begin;
+    Check(VecCreateMPIWithArray(communicator_->Comm(), 1, local, n, b.data() + begin, &rhs), "VecCreateMPIWithArray");
+    solved = KSPSolve(handles_->ksp, rhs, handles_->solution);
+    if (solved == 0) {
+      Check(VecScatterBegin(handles_->to_all, handles_->solution, handles_->whole, INSERT_VALUES, SCATTER_FORWARD),
+            "VecScatterBegin");
+      Check(VecScatterEnd(handles_->to_all, handles_->solution, handles_->whole, INSERT_VALUES, SCATTER_FORWARD),
+            "VecScatterEnd");
+      const PetscScalar* whole = nullptr;
+      Check(VecGetArrayRead(handles_->whole, &whole), "VecGetArrayRead");
+      std::copy(whole, whole + n, x.data());
+      Check(VecRestoreArrayRead(handles_->whole, &whole), "VecRestoreArrayRead");
+    }
+  } else {
+    Check(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, n, b.data(), &rhs), "VecCreateSeqWithArray");
+    Check(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, n, x.data(), &solution), "VecCreateSeqWithArray");
+    solved = KSPSolve(handles_->ksp, rhs, solution);
+  }
   ClearOptions();  // read by now, the nested solvers' ones included
   VecDestroy(&rhs);
-  VecDestroy(&solution);
+  if (solution) VecDestroy(&solution);
   KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
   KSPGetConvergedReason(handles_->ksp, &reason);
   PetscInt iterations = 0;
@@ -263,6 +316,62 @@ void PetscSolver::Solve(const SparseMatrix& A, Vector& x, const Vector& b) {
   }
 }
 
+void PetscSolver::CreateDistributedMatrix(Handles& handles) const {
+  const auto n = static_cast<PetscInt>(handles.rows.rows());
+  if (partition_.Rows() != n || partition_.Size() != communicator_->Size())
+    throw SolutionError(Concat("PETSc: a row partition of ", partition_.Rows(), " rows on ", partition_.Size(),
+                               " ranks for a system of ", n, " rows on ", communicator_->Size(),
+                               " (SetRowPartition before Initialize)"));
+  const auto begin = static_cast<PetscInt>(partition_.Begin());
+  const auto end = static_cast<PetscInt>(partition_.End());
+  // Exact preallocation of the rows this rank owns: entries in its own columns, and the others.
+  std::vector<PetscInt> diagonal(static_cast<std::size_t>(end - begin), 0), off(diagonal.size(), 0);
+  const PetscInt* outer = handles.rows.outerIndexPtr();
+  const PetscInt* inner = handles.rows.innerIndexPtr();
+  for (PetscInt i = begin; i < end; ++i)
+    for (PetscInt p = outer[i]; p < outer[i + 1]; ++p)
+      ++(inner[p] >= begin && inner[p] < end ? diagonal : off)[static_cast<std::size_t>(i - begin)];
+  const MPI_Comm comm = communicator_->Comm();
+  Check(MatCreateAIJ(comm, end - begin, end - begin, n, n, 0, diagonal.data(), 0, off.data(), &handles.matrix),
+        "MatCreateAIJ");
+  Check(MatSetOption(handles.matrix, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE), "MatSetOption");
+  Check(VecCreateMPI(comm, end - begin, n, &handles.solution), "VecCreateMPI");
+  Check(VecScatterCreateToAll(handles.solution, &handles.to_all, &handles.whole), "VecScatterCreateToAll");
+}
+
+void PetscSolver::FillDistributedMatrix() {
+  const auto& rows = handles_->rows;
+  const auto begin = static_cast<PetscInt>(partition_.Begin());
+  const auto end = static_cast<PetscInt>(partition_.End());
+  const PetscInt* outer = rows.outerIndexPtr();
+  const PetscInt* inner = rows.innerIndexPtr();
+  const double* values = rows.valuePtr();
+  Mat matrix = handles_->matrix;
+  Check(MatZeroEntries(matrix), "MatZeroEntries");
+  std::vector<PetscInt> columns;
+  std::vector<PetscScalar> nonzeros;
+  for (PetscInt i = 0; i < static_cast<PetscInt>(rows.rows()); ++i) {
+    if (i >= begin && i < end) {
+      Check(MatSetValues(matrix, 1, &i, outer[i + 1] - outer[i], inner + outer[i], values + outer[i], ADD_VALUES),
+            "MatSetValues");
+      continue;
+    }
+    columns.clear();
+    nonzeros.clear();
+    for (PetscInt p = outer[i]; p < outer[i + 1]; ++p)
+      if (values[p] != 0.0) {
+        columns.push_back(inner[p]);
+        nonzeros.push_back(values[p]);
+      }
+    if (!columns.empty())
+      Check(MatSetValues(matrix, 1, &i, static_cast<PetscInt>(columns.size()), columns.data(), nonzeros.data(),
+                         ADD_VALUES),
+            "MatSetValues");
+  }
+  Check(MatAssemblyBegin(matrix, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+  Check(MatAssemblyEnd(matrix, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+}
+
 void PetscSolver::Clear() {
   handles_.reset();
   pattern_.Clear();
@@ -280,11 +389,15 @@ void PetscSolver::SetFieldSplits(KSP ksp) {
     return;
   }
   auto set = [&](const char* name, const std::vector<int>& rows, int block) {
-    const std::vector<PetscInt> indices(rows.begin(), rows.end());
+    // Distributed: each rank names the rows it owns (whole nodes: the partition cuts between them).
+    std::vector<PetscInt> indices;
+    indices.reserve(rows.size());
+    for (const int row : rows)
+      if (!communicator_ || partition_.Owns(row)) indices.push_back(row);
     IS is = nullptr;
-    Check(
-        ISCreateGeneral(PETSC_COMM_SELF, static_cast<PetscInt>(indices.size()), indices.data(), PETSC_COPY_VALUES, &is),
-        "ISCreateGeneral");
+    Check(ISCreateGeneral(communicator_ ? communicator_->Comm() : PETSC_COMM_SELF,
+                          static_cast<PetscInt>(indices.size()), indices.data(), PETSC_COPY_VALUES, &is),
+          "ISCreateGeneral");
     if (block > 1) Check(ISSetBlockSize(is, block), "ISSetBlockSize");
     const PetscErrorCode code = PCFieldSplitSetIS(pc, name, is);
     ISDestroy(&is);

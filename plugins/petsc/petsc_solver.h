@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/linear_solvers/linear_solver.h"
+#include "core/linear_solvers/row_partition.h"
 #include "core/linear_solvers/sparse_pattern.h"
 #include "core/parameters/parameters.h"
 
@@ -14,12 +15,22 @@ struct _p_KSP;  // PETSc's KSP, without its headers
 
 namespace mc {
 
+class PetscCommunicator;
+
 /// PETSc's KSP on the global system (Debian's PETSc: MUMPS, hypre, SuperLU_dist): a sparse direct
 /// solver by default (KSPPREONLY + PCLU with MUMPS), or any Krylov method and preconditioner
-/// PETSc offers through `petsc_options` (e.g. {"ksp_type": "gmres", "pc_type": "hypre"}). The
-/// matrix lives on PETSC_COMM_SELF for now: the step toward a distributed system is the
-/// assembly, not this class. `Initialize` sets up the matrix structure and the KSP once per
-/// pattern; PETSc then keeps the symbolic factorization while only the values change.
+/// PETSc offers through `petsc_options` (e.g. {"ksp_type": "gmres", "pc_type": "hypre"}).
+/// `Initialize` sets up the matrix structure and the KSP once per pattern; PETSc then keeps the
+/// symbolic factorization while only the values change.
+///
+/// Started by `mpirun -n N` (N > 1) the system is distributed (see LinearSolver::Communicator):
+/// an MPIAIJ matrix on PETSC_COMM_WORLD whose rows are split by the builder's RowPartition,
+/// preallocated from the pattern (every rank holds the whole pattern). Each rank adds its share:
+/// its own rows in full, zeros included, so that the structure is the pattern's and MUMPS keeps
+/// its analysis; other ranks' rows by their nonzeros only, which PETSc's stash sends to their
+/// owner. The right-hand side is whole on every rank (each takes its rows, nothing is sent), and
+/// the solution is gathered to every rank (VecScatterCreateToAll). Alone, it works on
+/// PETSC_COMM_SELF as before.
 ///
 /// With {"pc_type": "fieldsplit"} the rows are split by their DoF into the fields "u" (the
 /// displacements and every other primal unknown, with the block size of the nodes when their
@@ -64,6 +75,8 @@ class PetscSolver : public LinearSolver {
   /// Only the field split needs the DoF of each row.
   bool AdditionalPhysicalDataIsNeeded() const override { return field_split_; }
   void ProvideAdditionalData(const SparseMatrix& A, const std::vector<Dof*>& dof_of_equation) override;
+  const AssemblyCommunicator* Communicator() const override;
+  void SetRowPartition(const RowPartition& rows) override;
 
   /// Rows of the last ProvideAdditionalData: primal unknowns and contact multipliers.
   const std::vector<int>& PrimalRows() const { return primal_rows_; }
@@ -75,7 +88,11 @@ class PetscSolver : public LinearSolver {
   struct Handles;  // PETSc's Mat and KSP (keeps the PETSc headers private)
   void SetFieldSplits(_p_KSP* ksp);
   void ClearOptions();
+  void CreateDistributedMatrix(Handles& handles) const;
+  void FillDistributedMatrix();
   Options options_;
+  std::unique_ptr<PetscCommunicator> communicator_;  ///< null on one process
+  RowPartition partition_;
   std::string prefix_;
   std::unique_ptr<Handles> handles_;
   SparsePattern pattern_;

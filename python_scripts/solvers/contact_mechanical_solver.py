@@ -136,6 +136,14 @@ class ContactMechanicalSolver(MechanicalSolver):
                 settings.AddValue("scaling", _core.Parameters("false"))
             settings["scaling"].SetBool(True)
         linear_solver = _core.CreateLinearSolver(settings)
+        if linear_solver.Processes() > 1:
+            # A rank holds only part of each row: condensing node by node needs whole rows. PETSc
+            # solves the saddle-point system as it is (MUMPS, or the field split of the multipliers).
+            if contact["condn_convergence_criterion"].GetBool():
+                raise _core.NotImplementedFeatureError(
+                    f"{contact.Where()}.condn_convergence_criterion: the condition number needs the whole "
+                    f"matrix, which a run on {linear_solver.Processes()} processes does not assemble anywhere")
+            return linear_solver
         mixed = contact["mixed_ulm_solver_parameters"]
         if self.formulation.condensable and contact["use_mixed_ulm_solver"].GetBool():
             if mixed["solver_type"].GetString() == "mixed_ulm_linear_solver":

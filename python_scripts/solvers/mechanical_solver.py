@@ -286,6 +286,10 @@ class MechanicalSolver:
     def _create_strategy(self):
         s = self.settings
         part = self.GetComputingModelPart()
+        if self.explicit and _core.LaunchedProcesses() > 1:
+            raise _core.NotImplementedFeatureError(
+                f"{s.Where()}.time_integration_method: explicit dynamics on {_core.LaunchedProcesses()} processes "
+                "(mpirun): it has no linear system to distribute; run it on one process")
         linear_solver = _core.CreateLinearSolver(s["linear_solver_settings"])
         if self.explicit:
             return _core.ExplicitStrategy(part, _core.ExplicitCentralDifferencesScheme(),

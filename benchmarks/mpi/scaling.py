@@ -1,0 +1,95 @@
+"""Strong scaling of the distributed assembly and PETSc solve (issue 17, step 1): one Hertz case
+run on 1 and on 2 processes (``mpirun -n 2``), one OpenMP thread per process, with the same PETSc
+solver; prints a Markdown table of the wall time per phase (the slowest rank's) and the peak
+memory of each rank, and checks that both runs took the same Newton iterations.
+
+    python benchmarks/mpi/scaling.py --case hertz2d_100k --solver mumps
+    python benchmarks/mpi/scaling.py --case hertz3d_50k --solver fieldsplit
+
+The per-rank records come from benchmarks/hertz/case_runner.py (rank r > 0 writes
+``<output>.rank<r>.json``).
+"""
+from __future__ import annotations
+
+import argparse
+import glob
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+RUNNER = os.path.join(HERE, "..", "hertz", "case_runner.py")
+SOLVERS = {
+    "mumps": {"solver_type": "petsc"},
+    "fieldsplit": {"solver_type": "petsc", "tolerance": 1e-8, "max_iteration": 500,
+                   "petsc_options": {"pc_type": "fieldsplit"}},
+}
+
+
+def run(case_dir: str, solver: dict, ranks: int, work: str) -> list[dict]:
+    output = os.path.join(work, f"ranks{ranks}.json")
+    command = [sys.executable, RUNNER, "--code", "mortarcontact", "--linear-solver", json.dumps(solver),
+               case_dir, output]
+    if ranks > 1:
+        command = [shutil.which("mpirun"), "-n", str(ranks), *command]
+    # A waiting rank yields its core (shared machines) instead of polling.
+    env = dict(os.environ, OMP_NUM_THREADS="1", OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+               OMPI_MCA_mpi_yield_when_idle="1")
+    subprocess.run(command, check=True, env=env)
+    records = [output, *sorted(glob.glob(os.path.join(work, f"ranks{ranks}.rank*.json")))]
+    loaded = []
+    for path in records:
+        with open(path) as f:
+            loaded.append(json.load(f))
+    for record in loaded:
+        if record["status"] != "ok":
+            raise SystemExit(f"{ranks} ranks: {record['status']}: {record.get('error')}")
+    return loaded
+
+
+def row(ranks: int, records: list[dict]) -> str:
+    def per_rank(*names, digits=2):
+        return " / ".join(f"{sum(r['phases'][n] for n in names):.{digits}f}" for r in records)
+
+    def per_rank_value(key, digits=1):
+        return " / ".join(f"{r[key]:.{digits}f}" for r in records)
+
+    iterations = sum(s["iterations"] for s in records[0]["steps"])
+    return (f"| {ranks} | {iterations} | {per_rank('elements', 'conditions', 'build_other')} | {per_rank('solve')} | "
+            f"{per_rank('dof_setup')} | {per_rank('search', 'weighted_gap', 'normals')} | "
+            f"{per_rank_value('analysis_seconds')} | {per_rank_value('analysis_cpu_seconds')} | "
+            f"{per_rank_value('peak_rss_mb', 0)} |")
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--case", default="hertz2d_100k", help="a Hertz case name, e.g. hertz2d_100k, hertz3d_50k")
+    parser.add_argument("--solver", choices=sorted(SOLVERS), default="mumps")
+    args = parser.parse_args()
+    from mortarcontact.cases import hertz
+
+    family, label = args.case.rsplit("_", 1)
+    load_before = f"{os.getloadavg()[0]:.1f}"  # on a shared machine the timings are only as good as this
+    with tempfile.TemporaryDirectory() as work:
+        case_dir = hertz.write_case(family, label, work)
+        results = {ranks: run(case_dir, SOLVERS[args.solver], ranks, work) for ranks in (1, 2)}
+    steps = {ranks: [s["iterations"] for s in records[0]["steps"]] for ranks, records in results.items()}
+    if steps[1] != steps[2]:
+        raise SystemExit(f"the Newton iterations differ: {steps}")
+    dofs = results[1][0].get("dofs", "?")
+    print(f"{args.case} ({dofs} DoFs), PETSc {args.solver}, one thread per process; wall-clock seconds per rank "
+          f"(rank 0 / rank 1); load average before and after: {load_before} / {os.getloadavg()[0]:.1f}")
+    print()
+    print("| processes | Newton iterations | assembly | linear solve | DoF set-up + pattern | contact search + "
+          "mortar | analysis | analysis CPU s | peak memory (MB) |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    for ranks, records in results.items():
+        print(row(ranks, records))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

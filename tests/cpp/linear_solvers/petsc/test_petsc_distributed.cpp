@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Issue 17: started by `mpirun -n 2` (the ctest petsc_solver_on_two_ranks), the solver sums the
+// ranks' shares of a matrix into one MPIAIJ system, solves it with MUMPS or a Krylov method, and
+// hands every rank the whole solution, the same bits on every rank; a process started alone has
+// no communicator. Every rank holds the whole pattern, as the builder's do.
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include "core/linear_solvers/assembly_communicator.h"
+#include "core/linear_solvers/row_partition.h"
+#include "core/model/dof.h"
+#include "core/model/node.h"
+#include "core/parameters/parameters.h"
+#include "core/variables/variables_list.h"
+#include "petsc/petsc_solver.h"
+#include "test_matrices.h"
+
+namespace mc {
+namespace {
+
+using testing::ConvectionDiffusion2D;
+using testing::ManufacturedSolution;
+using testing::RelativeError;
+
+// Two rows per node, as a 2D displacement field: the partition cuts between nodes.
+struct Rows {
+  explicit Rows(long count) {
+    for (long i = 0; i < count; ++i) {
+      if (i % 2 == 0)
+        nodes.push_back(std::make_unique<Node>(static_cast<IndexType>(i / 2 + 1), Array3::Zero(), variables, 1));
+      dofs.push_back(Dof{nodes.back().get()});
+    }
+    for (Dof& d : dofs) pointers.push_back(&d);
+  }
+  VariablesList variables;
+  std::vector<std::unique_ptr<Node>> nodes;
+  std::vector<Dof> dofs;
+  std::vector<Dof*> pointers;
+};
+
+TEST(PetscCommunicator, NoneForAProcessStartedAlone) {
+  if (AssemblyCommunicator::LaunchedSize() > 1) GTEST_SKIP() << "for a process started alone";
+  PetscSolver solver(PetscSolver::Options{});
+  EXPECT_EQ(solver.Communicator(), nullptr);
+}
+
+class PetscDistributed : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(PetscDistributed, SharesSumToTheSystemAndEveryRankGetsTheWholeSolution) {
+  if (AssemblyCommunicator::LaunchedSize() < 2) GTEST_SKIP() << "runs under mpirun -n 2 (petsc_solver_on_two_ranks)";
+  PetscSolver solver(ReadPetscOptions(Parameters(GetParam())));
+  const AssemblyCommunicator* communicator = solver.Communicator();
+  ASSERT_NE(communicator, nullptr);
+  const int size = communicator->Size();
+  const int rank = communicator->Rank();
+
+  const SparseMatrix A = ConvectionDiffusion2D(24);  // non-symmetric, 576 rows
+  const Vector expected = ManufacturedSolution(A.rows());
+  const Vector b = A * expected;
+  // This rank's share: the entries with (row + column) % size == rank, in the whole pattern.
+  SparseMatrix share = A;
+  for (int j = 0; j < share.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(share, j); it; ++it)
+      if ((it.row() + j) % size != rank) it.valueRef() = 0.0;
+  Rows rows(A.rows());
+  solver.SetRowPartition(RowPartition::AtNodes(rows.pointers, A.rows(), size, rank));
+
+  solver.Initialize(share);
+  for (int solve = 0; solve < 2; ++solve) {  // the second on the kept structure
+    Vector x;
+    solver.Solve(share, x, b);
+    EXPECT_LT(RelativeError(x, expected), 1e-9) << "solve " << solve;
+    // The same bits on every rank: their difference, summed, is zero.
+    Vector difference = rank == 0 ? Vector(x) : Vector(-x);
+    communicator->SumToAll(difference.data(), static_cast<std::size_t>(difference.size()));
+    EXPECT_EQ(difference.cwiseAbs().maxCoeff(), 0.0) << "solve " << solve;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Solvers, PetscDistributed,
+                         ::testing::Values(R"({"tolerance": 1e-6, "max_iteration": 200, "petsc_options": {}})",
+                                           R"({"tolerance": 1e-13, "max_iteration": 500,
+                                               "petsc_options": {"ksp_type": "gmres", "pc_type": "bjacobi"}})"),
+                         [](const auto& info) { return info.index == 0 ? "mumps" : "gmres_bjacobi"; });
+
+}  // namespace
+}  // namespace mc

@@ -1,0 +1,175 @@
+"""Issue 17, step 1: ``mpirun -n 2 mortarcontact run`` distributes the assembly and the PETSc
+solve (the model stays replicated) and gives the serial answer: the same Newton iterations, the
+displacements and contact pressures to 1e-8 relative; rank 0 alone prints and writes; a linear
+solver of one process under mpirun is one clear error. Skipped when mpirun or the PETSc plugin is
+missing (``make deps-petsc``, then ``make install``; CI installs both)."""
+from __future__ import annotations
+
+import csv
+import json
+import os
+import shutil
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+CASES = os.path.join(os.path.dirname(__file__), "..", "cases", "kratos_csma")
+CLI = os.path.join(os.path.dirname(sys.executable), "mortarcontact")
+MPIRUN = shutil.which("mpirun")
+# As root (containers, CI) Open MPI wants both; one thread per rank on a 2-core machine.
+ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OMP_NUM_THREADS="1",
+           OMPI_MCA_rmaps_base_oversubscribe="1")
+for _launcher_variable in ("OMPI_COMM_WORLD_SIZE", "OMPI_COMM_WORLD_RANK", "PMI_SIZE", "PMI_RANK"):
+    ENV.pop(_launcher_variable, None)
+
+
+def _petsc_plugin_available() -> bool:
+    # In a child process: loading the plugin brings MPI into the process that loads it.
+    code = ("import mortarcontact as mc\n"
+            "mc._core.CreateLinearSolver(mc.Parameters('{\"solver_type\": \"petsc\"}'))\n")
+    return subprocess.run([sys.executable, "-c", code], env=ENV, capture_output=True).returncode == 0
+
+
+pytestmark = [
+    pytest.mark.skipif(MPIRUN is None, reason="mpirun is not installed (make deps-petsc installs Open MPI)"),
+    pytest.mark.skipif(MPIRUN is not None and not _petsc_plugin_available(),
+                       reason="the PETSc plugin is not built (Debian's petsc-dev missing): make deps-petsc, then "
+                              "make install"),
+]
+
+MUMPS = {"solver_type": "petsc"}
+FIELDSPLIT = {"solver_type": "petsc", "tolerance": 1e-14, "max_iteration": 500,
+              "petsc_options": {"pc_type": "fieldsplit"}}
+
+HERTZ_2D = "ALM_frictionless_contact_test_2D/simple_hertz_sphere_plate_test"
+GENERATED = "generated/hertz2d_2k"
+# (case, vector multiplier, linear solver): a 2D Hertz-type case of Kratos' (a curved body pressed
+# on a plate, implicit dynamics) with MUMPS and with the field split (BoomerAMG on 2 ranks), its
+# vector-multiplier variant (condensed by MixedULM in the serial run, solved whole on 2 ranks),
+# Kratos' 3D patch (hexahedra, quadrilateral faces), and our Hertz cylinder (4 load steps, the
+# contact zone growing in each: the active set changes between iterations; needs gmsh).
+RUNS = {
+    "hertz2d-generated-mumps": (GENERATED, False, MUMPS),
+    "hertz2d-mumps": (HERTZ_2D, False, MUMPS),
+    "hertz2d-fieldsplit": (HERTZ_2D, False, FIELDSPLIT),
+    "hertz2d-components-mumps": (HERTZ_2D, True, MUMPS),
+    "patch3d-mumps": ("ALM_frictionless_contact_test_3D/3D_contact_simplest_patch_matching_test", False, MUMPS),
+}
+
+
+def _parameters(folder, case: str) -> dict:
+    """The case's files copied into `folder` (or generated there) and its parameters."""
+    if case == GENERATED:
+        pytest.importorskip("gmsh", reason="gmsh is not installed: the Hertz cylinder case is generated with it")
+        from mortarcontact.cases import hertz
+
+        generated = hertz.write_case("hertz2d", "2k", str(folder))
+        for name in os.listdir(generated):
+            shutil.move(os.path.join(generated, name), os.path.join(folder, name))
+        path = os.path.join(folder, "ProjectParameters.json")
+    else:
+        sub = os.path.dirname(case)
+        shutil.copytree(os.path.join(CASES, sub), os.path.join(folder, sub), dirs_exist_ok=True)
+        path = os.path.join(CASES, f"{case}_parameters.json")
+    with open(path) as f:
+        return json.load(f)
+
+
+def _write_case(folder, case: str, components, linear_solver: dict) -> str:
+    """The case in `folder` with its parameters as ProjectParameters.json, solved by
+    `linear_solver`, writing the displacements, the contact pressures and the Newton history."""
+    parameters = _parameters(folder, case)
+    solver = parameters["solver_settings"]
+    solver["linear_solver_settings"] = linear_solver
+    solver["convergence_history"] = {"file_name": "history.csv"}
+    if components:
+        solver["contact_settings"]["mortar_type"] = "ALMContactFrictionlessComponents"
+        for process in parameters["processes"]["contact_process_list"]:
+            process["Parameters"]["contact_type"] = "FrictionlessComponents"
+    part = solver.get("model_part_name") or parameters["problem_data"].get("model_part_name", "Structure")
+    processes = parameters["processes"]
+    processes.pop("json_check_process", None)  # compared with the serial run instead
+    processes["json_output"] = [
+        {"python_module": "json_output_process", "kratos_module": "KratosMultiphysics",
+         "Parameters": {"model_part_name": part, "output_variables": ["DISPLACEMENT"],
+                        "output_file_name": "displacements.json", "time_frequency": 0.0}},
+        {"python_module": "json_output_process", "kratos_module": "KratosMultiphysics",
+         "Parameters": {"model_part_name": f"{part}.Contact", "output_variables":
+                        ["CONTACT_PRESSURE"], "historical_value": False, "output_file_name": "pressures.json",
+                        "time_frequency": 0.0}}]
+    path = os.path.join(folder, "ProjectParameters.json")
+    with open(path, "w") as f:
+        json.dump(parameters, f, indent=1)
+    return path
+
+
+def _run(folder, ranks: int) -> subprocess.CompletedProcess:
+    command = [CLI, "run", "--no-progress", "ProjectParameters.json"]
+    if ranks > 1:
+        command = [MPIRUN, "-n", str(ranks), *command]
+    return subprocess.run(command, cwd=folder, env=ENV, capture_output=True, text=True, timeout=300)
+
+
+def _results(folder) -> dict:
+    values = {}
+    for name in ("displacements.json", "pressures.json"):
+        with open(os.path.join(folder, name)) as f:
+            for key, node in json.load(f).items():
+                if key.startswith("NODE_"):
+                    for variable, series in node.items():
+                        values[(name, key, variable)] = np.asarray(series)
+    with open(os.path.join(folder, "history.csv")) as f:
+        iterations = [(row["step"], row["iteration"]) for row in csv.DictReader(f)]
+    return {"values": values, "iterations": iterations}
+
+
+@pytest.mark.parametrize("run", sorted(RUNS))
+def test_two_ranks_give_the_serial_answer(tmp_path, run):
+    case, components, linear_solver = RUNS[run]
+    answers, outputs = {}, {}
+    for ranks in (1, 2):
+        folder = tmp_path / f"ranks{ranks}"
+        folder.mkdir()
+        _write_case(folder, case, components, linear_solver)
+        done = _run(folder, ranks)
+        assert done.returncode == 0, done.stdout + done.stderr
+        answers[ranks], outputs[ranks] = _results(folder), done.stdout
+    serial, distributed = answers[1], answers[2]
+    assert distributed["iterations"] == serial["iterations"]
+    assert len(serial["iterations"]) >= 2
+    assert distributed["values"].keys() == serial["values"].keys()
+    for file in ("displacements.json", "pressures.json"):
+        keys = [k for k in serial["values"] if k[0] == file]
+        scale = max(np.abs(serial["values"][k]).max() for k in keys)
+        assert scale > 0.0, f"{file}: nothing to compare"
+        worst = max(np.abs(distributed["values"][k] - serial["values"][k]).max() for k in keys)
+        assert worst <= 1e-8 * scale, f"{file}: {worst:.3g} against {scale:.3g}"
+    # Rank 0 speaks for both: one summary line, as in the serial run.
+    summaries = [line for line in outputs[2].splitlines() if "Newton iterations" in line or " steps" in line]
+    assert len(summaries) == 1, outputs[2]
+
+
+ERRORS = {
+    # Not a silent run of the whole problem on every rank: the error names the key and 'petsc'.
+    "serial-solver": ({"solver_type": "skyline_lu_factorization"}, 2, "input error",
+                      ["linear_solver_settings.solver_type: 'skyline_lu_factorization' solves on one process",
+                       "2 processes", '"petsc"']),
+    # Row scaling needs whole rows.
+    "scaling": ({"solver_type": "petsc", "scaling": True}, 3, "not implemented",
+                ["linear_solver_settings.scaling: not available in a run on 2 processes"]),
+}
+
+
+@pytest.mark.parametrize("error", sorted(ERRORS))
+def test_what_does_not_distribute_is_one_clear_error(tmp_path, error):
+    linear_solver, code, kind, parts = ERRORS[error]
+    _write_case(tmp_path, RUNS["patch3d-mumps"][0], False, linear_solver)
+    done = _run(tmp_path, 2)
+    assert done.returncode == code, done.stdout + done.stderr
+    assert "Traceback" not in done.stderr
+    messages = [line for line in done.stderr.splitlines() if line.startswith(f"mortarcontact: {kind}")]
+    assert len(messages) == 1, done.stderr  # rank 0's only
+    for part in parts:
+        assert part in messages[0], messages[0]
