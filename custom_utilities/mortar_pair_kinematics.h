@@ -94,15 +94,15 @@ struct MortarPairKinematics {
                      const MortarIntegrationSettings& settings);
 
   /// The constraint rows' correction of the weighted-gap derivatives, from node j's mean gap
-  /// (its WEIGHTED_GAP over its NODAL_AREA, summed over its pairs):
+  /// (the caller's choice; MortarContactCondition: its WEIGHTED_GAP over its NODAL_AREA where that
+  /// is negative, else 0):
   ///   d_constraint_gap_correction(j, q) = -mean_gap(j) d nodal_area(j)/dq.
-  /// With the pair dual basis weighted_gap(j) = nodal_area(j) x (the gap at node j), so the
-  /// constraint rows linearised with it solve the mean gap for zero, scaled by the nodal area:
-  /// the same solutions, the same tangent wherever an active node's gap is closed. What they leave
-  /// out is the growth of an overlap that only begins to cover the node (an element over the
-  /// master's edge), whose nodal area can double in a step while the gap is still open: the
-  /// exact linearisation of area x gap then overshoots the gap. Derivatives (Compute) needed; zero
-  /// for a sliver (standard basis) and until this is called.
+  /// With the pair dual basis weighted_gap(j) = nodal_area(j) x (the gap at node j), so constraint
+  /// rows linearised with it solve the mean gap for zero, scaled by the nodal area: the same
+  /// solutions, and the exact tangent again once the node's gap is closed. What they leave out is
+  /// the growth of an overlap that only begins to cover the node (an element over the master's
+  /// edge), whose nodal area can double in a step. Derivatives (Compute) needed; zero for a sliver
+  /// (standard basis) and until this is called.
   void SetMeanGaps(const SlaveVector& mean_gap);
 
   /// A pair left unintegrated (its kernels read no mortar quantity): the inputs are stored, every
