@@ -101,6 +101,9 @@ class MortarContactCondition : public PairedCondition {
  private:
   void CalculateAll(Matrix* lhs, Vector* rhs, const ProcessInfo& info);
   void FillData(Data& data, const ProcessInfo& info) const;
+  /// min(0, WEIGHTED_GAP / NODAL_AREA) of the slave nodes, as last updated (0 where NODAL_AREA is
+  /// not positive): the mean gaps MortarPairKinematics::SetMeanGaps holds the weights of.
+  typename Kinematics::SlaveVector PenetratingMeanGaps() const;
 };
 
 #define MC_EXTERN(D, S, M) extern template class MortarContactCondition<D, S, M>;

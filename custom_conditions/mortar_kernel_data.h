@@ -67,10 +67,12 @@ void ComputeWeightedSlip(TData& data) {
 template <class TKinematics, class TCD, class TCM, class TCG>
 void AddOperatorChainRule(const TKinematics& kinematics, int j, const TCD& cD, const TCM& cM, const TCG& cG,
                           Matrix& lhs) {
+  const Eigen::Index multipliers = cG.size() - TKinematics::kNumDisplacementDofs;
   for (int q = 0; q < TKinematics::kNumDisplacementDofs; ++q) {
     const auto dD = kinematics.dD[q].row(j).transpose();
     const auto dM = kinematics.dM[q].row(j).transpose();
     lhs.col(q).noalias() += cD * dD + cM * dM + cG * kinematics.d_weighted_gap(j, q);
+    lhs.col(q).tail(multipliers) += cG.tail(multipliers) * kinematics.d_constraint_gap_correction(j, q);
   }
 }
 
@@ -83,11 +85,13 @@ void AddOperatorChainRule(const TKinematics& kinematics, int j, const TCD& cD, c
 template <class TKinematics, class TCD, class TCM, class TCG, class TCN>
 void AddNormalChainRule(const TKinematics& kinematics, int j, const TCD& cD, const TCM& cM, const TCG& cG,
                         const TCN& cN, Matrix& sensitivity) {
+  const Eigen::Index multipliers = cG.size() - TKinematics::kNumDisplacementDofs;
   for (int p = 0; p < TKinematics::kNumSlaveDofs; ++p) {
     const int q = TKinematics::kNumDisplacementDofs + p;
     const auto dD = kinematics.dD[q].row(j).transpose();
     const auto dM = kinematics.dM[q].row(j).transpose();
     sensitivity.col(p).noalias() += cD * dD + cM * dM + cG * kinematics.d_weighted_gap(j, q);
+    sensitivity.col(p).tail(multipliers) += cG.tail(multipliers) * kinematics.d_constraint_gap_correction(j, q);
   }
   sensitivity.middleCols(j * TKinematics::kDim, TKinematics::kDim) += cN;
 }

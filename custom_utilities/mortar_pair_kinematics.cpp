@@ -170,6 +170,7 @@ bool MortarPairKinematics<TDim, TNumNodes, TNumNodesMaster>::Compute(const Slave
   for (auto& m : dM) m.setZero();
   d_weighted_gap.setZero();
   d_nodal_area.setZero();
+  d_constraint_gap_correction.setZero();
   d_area.setZero();
   if (!has_overlap) {
     ClearValues();
@@ -207,6 +208,12 @@ bool MortarPairKinematics<TDim, TNumNodes, TNumNodesMaster>::Compute(const Slave
     d_weighted_gap.row(i) = v.weighted_gap(i).derivatives().transpose();
   }
   return true;
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+void MortarPairKinematics<TDim, TNumNodes, TNumNodesMaster>::SetMeanGaps(const SlaveVector& mean_gap) {
+  if (!has_overlap || sliver) return;
+  for (int j = 0; j < TNumNodes; ++j) d_constraint_gap_correction.row(j) = -mean_gap(j) * d_nodal_area.row(j);
 }
 
 #define MC_INSTANTIATE(D, S, M) template struct MortarPairKinematics<D, S, M>;

@@ -81,6 +81,7 @@ struct MortarPairKinematics {
   std::array<MMatrix, kNumDerivatives> dM{};
   DerivativeRows d_weighted_gap = DerivativeRows::Zero();  ///< (j, q) = d weighted_gap(j)/dq
   DerivativeRows d_nodal_area = DerivativeRows::Zero();
+  DerivativeRows d_constraint_gap_correction = DerivativeRows::Zero();  ///< SetMeanGaps
   Eigen::Matrix<double, kNumDerivatives, 1> d_area = Eigen::Matrix<double, kNumDerivatives, 1>::Zero();
 
   /// Values and derivatives. Returns has_overlap; without overlap (or with one too thin to carry
@@ -91,6 +92,18 @@ struct MortarPairKinematics {
   /// Values only (derivative members untouched).
   bool ComputeValues(const SlaveMatrix& x1, const MasterMatrix& x2, const SlaveMatrix& n1,
                      const MortarIntegrationSettings& settings);
+
+  /// The constraint rows' correction of the weighted-gap derivatives, from node j's mean gap
+  /// (the caller's choice; MortarContactCondition: its WEIGHTED_GAP over its NODAL_AREA where that
+  /// is negative, else 0):
+  ///   d_constraint_gap_correction(j, q) = -mean_gap(j) d nodal_area(j)/dq.
+  /// With the pair dual basis weighted_gap(j) = nodal_area(j) x (the gap at node j), so constraint
+  /// rows linearised with it solve the mean gap for zero, scaled by the nodal area: the same
+  /// solutions, and the exact tangent again once the node's gap is closed. What they leave out is
+  /// the growth of an overlap that only begins to cover the node (an element over the master's
+  /// edge), whose nodal area can double in a step. Derivatives (Compute) needed; zero for a sliver
+  /// (standard basis) and until this is called.
+  void SetMeanGaps(const SlaveVector& mean_gap);
 
   /// A pair left unintegrated (its kernels read no mortar quantity): the inputs are stored, every
   /// value is zero as without overlap, the derivative members are untouched.

@@ -88,7 +88,8 @@ SUBSETS = {
     + ["3d_hex_flat_r4_overhang-none_gap_disp_4steps_alm", "3d_hex_flat_r1.001_overhang-none_gap_disp_4steps_alm",
        "3d_hex_inclined_r2_overhang-none_gap_disp_4steps_alm",
        "2d_quad_flat_r0.5_overhang-none_gap_disp_4steps_penalty",
-       "2d_quad_flat_r0.5_overhang-none_pen_line-load_4steps_penalty"],
+       "2d_quad_flat_r0.5_overhang-none_pen_line-load_4steps_penalty",
+       "2d_quad_flat_r0.5_overhang-both_gap_disp_4steps_alm"],
     "test-slow": SLOW_TESTS,
 }
 

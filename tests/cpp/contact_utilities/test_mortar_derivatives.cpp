@@ -95,6 +95,51 @@ TEST(MortarDerivatives, Line2D2PartialOverlap) {
   CheckAgainstFiniteDifferences<K>(x1, x2_inside, TiltedNormals<K>(x1), 2);
 }
 
+// The constraint rows' correction (SetMeanGaps) with the pair's own mean gaps wg_j / a_j gives
+// a_j d(wg_j / a_j): the derivative of the mean gap, scaled by the nodal area.
+template <class K>
+void CheckMeanGapCorrection(const typename K::SlaveMatrix& x1, const typename K::MasterMatrix& x2,
+                            const typename K::SlaveMatrix& n1) {
+  const MortarIntegrationSettings settings = Order(3);
+  K k;
+  ASSERT_TRUE(k.Compute(x1, x2, n1, settings));
+  ASSERT_FALSE(k.sliver);
+  const typename K::SlaveVector mean_gap = k.weighted_gap.cwiseQuotient(k.nodal_area);
+  k.SetMeanGaps(mean_gap);
+  const double h = 1e-6;
+  Errors e_mean, e_change;
+  K plus, minus;
+  for (int q = 0; q < K::kNumDisplacementDofs; ++q) {
+    typename K::SlaveMatrix y1 = x1;
+    typename K::MasterMatrix y2 = x2;
+    auto& value = q < K::kNumMasterDofs ? y2(q / K::kDim, q % K::kDim)
+                                        : y1((q - K::kNumMasterDofs) / K::kDim, (q - K::kNumMasterDofs) % K::kDim);
+    const double original = value;
+    value = original + h;
+    ASSERT_TRUE(plus.ComputeValues(y1, y2, n1, settings));
+    value = original - h;
+    ASSERT_TRUE(minus.ComputeValues(y1, y2, n1, settings));
+    for (int j = 0; j < K::kNumSlaveNodes; ++j) {
+      const double fd_mean =
+          (plus.weighted_gap(j) / plus.nodal_area(j) - minus.weighted_gap(j) / minus.nodal_area(j)) / (2 * h);
+      e_mean.Add(k.d_weighted_gap(j, q) + k.d_constraint_gap_correction(j, q), k.nodal_area(j) * fd_mean);
+      e_change.Add(k.d_constraint_gap_correction(j, q), 0.0);
+    }
+  }
+  EXPECT_LT(e_mean.Relative(), 1e-6) << "a d(wg / a), max " << e_mean.max_value;
+  EXPECT_GT(e_change.max_value, 1e-3 * e_mean.max_value);  // the correction is not trivially zero
+}
+
+TEST(MortarDerivatives, MeanGapCorrection) {
+  using K2 = MortarPairKinematics<2, 2, 2>;
+  const auto x1 = Rows<K2::SlaveMatrix>({1.0, 0.05, 0.0, -0.02});
+  CheckMeanGapCorrection<K2>(x1, Rows<K2::MasterMatrix>({0.4, 0.1, 1.6, 0.2}), TiltedNormals<K2>(x1));
+  using K3 = MortarPairKinematics<3, 4, 4>;
+  const auto q1 = Rows<K3::SlaveMatrix>({0, 0, 0, 1, 0.1, 0.03, 1.1, 0.9, -0.02, -0.1, 1, 0.04});
+  const auto q2 = Rows<K3::MasterMatrix>({0.3, 0.2, 0.1, 1.4, 0.3, 0.12, 1.3, 1.2, 0.09, 0.2, 1.1, 0.11});
+  CheckMeanGapCorrection<K3>(q1, q2, TiltedNormals<K3>(q1));
+}
+
 TEST(MortarDerivatives, AxisymmetricLine2D2) {
   // x = radius: the 2 pi r weight and the r-weighted dual basis are differentiated too.
   using K = MortarPairKinematics<2, 2, 2>;
