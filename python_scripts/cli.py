@@ -34,8 +34,9 @@ def main(argv=None) -> int:
 
     from . import _core
     from .analysis_stage import run_case as run_case_cli
+    from .utilities import secondary_process
 
-    if _core.LaunchedRank() > 0:
+    if secondary_process():
         # Under mpirun every rank runs the same case; rank 0 speaks for them all.
         _silence_this_process()
     try:

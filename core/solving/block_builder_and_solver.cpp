@@ -53,6 +53,7 @@ void BlockBuilderAndSolver::ApplyDirichletConditions(bool lhs, bool rhs) {
     for (const double d : diagonal) largest = std::max(largest, std::abs(d));
     if (largest > 0.0) scale_ = largest;
   } else if (diagonal_ == DirichletDiagonal::kMaxDiagonal) {
+    // Without the buffer above: a serial build allocates nothing after the first.
     double largest = 0.0;
 #pragma omp parallel for reduction(max : largest) if (n >= kMinParallelDofs)
     for (long j = 0; j < n; ++j) {

@@ -467,6 +467,8 @@ void BuilderAndSolver::CheckEmptyColumns() const {
     for (std::size_t j = 0; j < filled.size(); ++j)
       if (filled[j] == 0.0) empty.push_back(dofs_by_equation_[j]);
   } else {
+    // Kept apart from the loop above: a serial build allocates nothing after the first
+    // (AssemblyAllocations.LaterBuildsAllocateNothingOnOneThread).
     for (Eigen::Index j = 0; j < A_.outerSize(); ++j) {
       bool any = false;
       for (int p = outer[j]; p < outer[j + 1] && !any; ++p) any = values[p] != 0.0;

@@ -21,6 +21,15 @@ constexpr char kSlipState = 2;
 int CountActive(const std::vector<char>& states) {
   return static_cast<int>(std::count_if(states.begin(), states.end(), [](char s) { return (s & kActiveState) != 0; }));
 }
+
+char ContactState(const Node& node) {
+  return static_cast<char>((node.Is(ACTIVE) ? kActiveState : 0) | (node.Is(SLIP) ? kSlipState : 0));
+}
+
+/// The node's CONVERGED_CONTACT_STATES, -1 where it has none (the history is unknown).
+int ConvergedContactStates(const Node& node) {
+  return node.Has(CONVERGED_CONTACT_STATES) ? node.GetValue(CONVERGED_CONTACT_STATES) : -1;
+}
 }  // namespace
 
 Parameters ResidualBasedNewtonRaphsonContactStrategy::GetDefaultParameters() {
@@ -98,11 +107,9 @@ void ResidualBasedNewtonRaphsonContactStrategy::FinalizeSolutionStep() {
   if (!contact) return;
   for (Node* node : contact->Nodes()) {
     if (!node->Is(SLAVE)) continue;
-    // Before the first step every node is open; a negative value (RestoreStepStart) is unknown.
-    const int last =
-        node->Has(CONVERGED_CONTACT_STATES) ? std::max(node->GetValue(CONVERGED_CONTACT_STATES), 0) & 3 : 0;
-    const int now = (node->Is(ACTIVE) ? kActiveState : 0) | (node->Is(SLIP) ? kSlipState : 0);
-    node->SetValue(CONVERGED_CONTACT_STATES, (last << 2) | now);
+    // Before the first step every node is open, and so it is taken where the history is unknown.
+    const int last = std::max(ConvergedContactStates(*node), 0) & 3;
+    node->SetValue(CONVERGED_CONTACT_STATES, (last << 2) | ContactState(*node));
   }
 }
 
@@ -111,7 +118,7 @@ bool ResidualBasedNewtonRaphsonContactStrategy::LastStepKeptContactStates() cons
   if (!contact) return true;
   for (const Node* node : contact->Nodes()) {
     if (!node->Is(SLAVE)) continue;
-    const int states = node->Has(CONVERGED_CONTACT_STATES) ? node->GetValue(CONVERGED_CONTACT_STATES) : -1;
+    const int states = ConvergedContactStates(*node);
     if (states < 0 || (states & 3) != (states >> 2)) return false;
   }
   return true;
@@ -121,8 +128,7 @@ std::vector<char> ResidualBasedNewtonRaphsonContactStrategy::ContactStates() con
   std::vector<char> states;
   if (ModelPart* contact = FindContactModelPart(model_part_))
     for (const Node* node : contact->Nodes())
-      if (node->Is(SLAVE))
-        states.push_back(static_cast<char>((node->Is(ACTIVE) ? kActiveState : 0) | (node->Is(SLIP) ? kSlipState : 0)));
+      if (node->Is(SLAVE)) states.push_back(ContactState(*node));
   return states;
 }
 
@@ -252,8 +258,7 @@ void ResidualBasedNewtonRaphsonContactStrategy::SaveStepStart() {
   NewtonRaphsonStrategy::SaveStepStart();
   start_flags_.clear();
   for (Node* node : model_part_.GetRootModelPart().Nodes())
-    start_flags_.push_back({node, node->Is(ACTIVE), node->Is(SLIP),
-                            node->Has(CONVERGED_CONTACT_STATES) ? node->GetValue(CONVERGED_CONTACT_STATES) : -1});
+    start_flags_.push_back({node, node->Is(ACTIVE), node->Is(SLIP), ConvergedContactStates(*node)});
 }
 
 void ResidualBasedNewtonRaphsonContactStrategy::RestoreStepStart() {
