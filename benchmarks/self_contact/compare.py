@@ -4,10 +4,11 @@
 mortarcontact and by Kratos 10.4 on the same files, with automatic roles (one contact part, empty
 assume_master_slave) and with the roles given (left inner face slave, right one master).
 
-Prints a Markdown table: converged?, Newton iterations per step, run time, and the largest
-displacement difference to mortarcontact's given-roles run relative to the largest displacement.
+Writes benchmarks/self_contact/results.md, a Markdown table: converged?, Newton iterations per
+step, run time, and the largest displacement difference to mortarcontact's given-roles run
+relative to the largest displacement.
 
-    MORTARCONTACT_KRATOS_VENV=/path/to/venv python benchmarks/self_contact/compare.py [--dims 2,3]
+    python benchmarks/self_contact/compare.py [--dims 2,3]
 
 Each run is a subprocess of this script in ``--run`` mode, with the Python of the code under
 test (Kratos: MORTARCONTACT_KRATOS_VENV's), so that the two codes never share a process.
@@ -25,8 +26,9 @@ import sys
 import tempfile
 import time
 
-SNAPSHOT = os.path.join(os.path.dirname(__file__), "..", "..", "tests", "cases", "self_contact",
-                        "kratos_10_4_2d_given.json")
+HERE = os.path.dirname(os.path.abspath(__file__))
+SNAPSHOT = os.path.join(HERE, "..", "..", "tests", "cases", "self_contact", "kratos_10_4_2d_given.json")
+RESULTS = os.path.join(HERE, "results.md")
 
 
 def run(code: str, case_dir: str, output: str) -> None:
@@ -39,8 +41,8 @@ def run(code: str, case_dir: str, output: str) -> None:
     started = time.perf_counter()
     if code == "kratos":
         import KratosMultiphysics as KM
-        import KratosMultiphysics.ContactStructuralMechanicsApplication  # noqa: F401 (registers the solver)
-        import KratosMultiphysics.LinearSolversApplication  # noqa: F401 (registers sparse_lu)
+        import KratosMultiphysics.ContactStructuralMechanicsApplication
+        import KratosMultiphysics.LinearSolversApplication
         from KratosMultiphysics.StructuralMechanicsApplication.structural_mechanics_analysis import (
             StructuralMechanicsAnalysis,
         )
@@ -51,7 +53,7 @@ def run(code: str, case_dir: str, output: str) -> None:
             "input_type": "mdpa", "input_filename": os.path.splitext(imports["input_filename"])[0]}
 
         class Recorded(StructuralMechanicsAnalysis):
-            def SolveSolutionStep(self):  # noqa: N802 (Kratos' name)
+            def SolveSolutionStep(self):
                 converged = bool(self._GetSolver().SolveSolutionStep())
                 info = self._GetSolver().GetComputingModelPart().ProcessInfo
                 record["steps"].append((info[KM.NL_ITERATION_NUMBER], converged))
@@ -59,7 +61,7 @@ def run(code: str, case_dir: str, output: str) -> None:
 
         model = KM.Model()
         Recorded(model, KM.Parameters(json.dumps(parameters))).Run()
-        displacement = KM.DISPLACEMENT
+        displacement, api = KM.DISPLACEMENT, KM
     else:
         import mortarcontact as mc
 
@@ -67,10 +69,13 @@ def run(code: str, case_dir: str, output: str) -> None:
         analysis = mc.Analysis(model, parameters, stop_on_non_convergence=False)
         analysis.Run()
         record["steps"] = [(iterations, converged) for _, _, iterations, converged, _ in analysis.step_log]
-        displacement = mc.DISPLACEMENT
+        displacement, api = mc.DISPLACEMENT, mc
     record["seconds"] = time.perf_counter() - started
     root = model["Structure"]
     record["displacements"] = {str(node.Id): list(node.GetSolutionStepValue(displacement)) for node in root.Nodes}
+    reaction = api.REACTION
+    record["bottom_reaction"] = [sum(node.GetSolutionStepValue(reaction)[k] for node in
+                                     root.GetSubModelPart("DISPLACEMENT_bottom").Nodes) for k in range(3)]
     with open(output, "w") as f:
         json.dump(record, f)
 
@@ -85,15 +90,21 @@ def main(argv=None) -> int:
         run(*args.run)
         return 0
     import numpy as np
+
     from mortarcontact.cases import self_contact
     from mortarcontact.cases.mesh_files import write_kratos_mdpa
 
-    venv = os.environ.get("MORTARCONTACT_KRATOS_VENV")
-    pythons = {"mortarcontact": sys.executable}
-    if venv:
-        pythons["Kratos 10.4"] = os.path.join(venv, "bin", "python")
-    print("| case | roles | code | converged | iterations per step | time (s) | max |du| / max |u| |")
-    print("|---|---|---|---|---|---|---|")
+    sys.path.insert(0, os.path.join(HERE, "..", "hertz"))
+    import harness  # the Kratos 10.4 venv of the benchmarks (MORTARCONTACT_KRATOS_VENV), made on first use
+
+    pythons = {"mortarcontact": sys.executable, "Kratos 10.4": harness.kratos_python()}
+    lines = ["| case | roles | code | converged | iterations per step | time (s) | max abs(du) / max abs(u) |",
+             "|---|---|---|---|---|---|---|"]
+
+    def add(line: str) -> None:
+        lines.append(line)
+        print(line, flush=True)
+
     with tempfile.TemporaryDirectory() as scratch:
         for dim in (int(d) for d in args.dims.split(",")):
             reference = None
@@ -103,8 +114,13 @@ def main(argv=None) -> int:
                 for label, python in pythons.items():
                     output = os.path.join(scratch, f"{dim}-{roles}-{label.split()[0]}.json")
                     code = "kratos" if label.startswith("Kratos") else "mortarcontact"
-                    subprocess.run([python, os.path.abspath(__file__), "--run", code, folder, output], check=True,
-                                   stdout=subprocess.DEVNULL)
+                    child = subprocess.run([python, os.path.abspath(__file__), "--run", code, folder, output],
+                                         stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+                    if child.returncode != 0:
+                        error = [line for line in child.stderr.splitlines() if "rror" in line]
+                        add(f"| self_contact_{dim}d | {roles} | {label} | crashed: "
+                            f"{(error or child.stderr.splitlines() or ['?'])[-1].strip()[:120]} | | | |")
+                        continue
                     with open(output) as f:
                         record = json.load(f)
                     if args.snapshot and code == "kratos" and dim == 2 and roles == "given":
@@ -120,9 +136,20 @@ def main(argv=None) -> int:
                     difference = np.abs(u - reference).max() / np.abs(reference).max()
                     failed = [str(k + 1) for k, (_, converged) in enumerate(record["steps"]) if not converged]
                     status = "no (steps " + ",".join(failed) + ")" if failed else "yes"
-                    print(f"| self_contact_{dim}d | {roles} | {label} | {status} | "
-                          f"{','.join(str(n) for n, _ in record['steps'])} | {record['seconds']:.2f} | {difference:.1e} |",
-                          flush=True)
+                    iterations = ",".join(str(n) for n, _ in record["steps"])
+                    add(f"| self_contact_{dim}d | {roles} | {label} | {status} | {iterations} | "
+                        f"{record['seconds']:.2f} | {difference:.1e} |")
+    load = os.getloadavg()[0]
+    with open(RESULTS, "w") as f:
+        f.write("# Self-contact: the U-shaped clamp, mortarcontact and Kratos 10.4\n\n"
+                "Generated by `benchmarks/self_contact/compare.py` (case: `mortarcontact.cases.self_contact`; 8 load "
+                "steps of a pressure on the arms, tolerances 1e-6 relative). Automatic roles: the whole slot as one "
+                "contact part and an empty assume_master_slave; given roles: left inner face slave, right one master. "
+                "The last column compares with mortarcontact's given-roles run. Kratos' 2D and 3D runs with given "
+                "roles end step 2 with the arms' tips overlapping (no active node: its search at the step start finds "
+                "no pair); with tolerances 1e-14 in both codes the 2D answers still differ by 1.8e-4 (both tips 1.9e-5 "
+                f"further right in Kratos, the same gap between them).\n\nMachine load average {load:.1f} at the end "
+                f"of the run ({os.cpu_count()} cores): times are only indicative.\n\n" + "\n".join(lines) + "\n")
     return 0
 
 

@@ -40,7 +40,7 @@ RIGHT_ARM_GRADING = 0.8  # exponent of the right arm's row spacing
 
 
 def _axis(lo: float, hi: float, h: float) -> np.ndarray:
-    return np.linspace(lo, hi, int(round((hi - lo) / h)) + 1)
+    return np.linspace(lo, hi, round((hi - lo) / h) + 1)
 
 
 def mesh(dim: int, numbering: str = "columns"):
@@ -95,12 +95,14 @@ def boundary_faces(coords: np.ndarray, cells: np.ndarray, on: np.ndarray) -> np.
 
 
 def write_case(dim: int, out_dir: str, roles: str = "automatic", steps: int = STEPS,
-               numbering: str = "columns") -> str:
-    """Writes ``out_dir/self_contact_<dim>d_<roles>[_rows]/`` (gmsh mesh, materials,
-    ProjectParameters.json) and returns the folder; ``numbering`` as in ``mesh``."""
+               numbering: str = "columns", friction: float = 0.0) -> str:
+    """Writes ``out_dir/self_contact_<dim>d_<roles>[_rows][_fric]/`` (gmsh mesh, materials,
+    ProjectParameters.json) and returns the folder; ``numbering`` as in ``mesh``; a ``friction``
+    coefficient above 0 makes the contact Coulomb-frictional (ALMContactFrictional)."""
     if roles not in ("automatic", "given"):
         raise ValueError(f"roles: expected 'automatic' or 'given', got {roles!r}")
     name = f"self_contact_{dim}d_{roles}" + ("_rows" if numbering == "rows" else "")
+    name += "_fric" if friction else ""
     folder = os.path.join(out_dir, name)
     os.makedirs(folder, exist_ok=True)
     coords, cells = mesh(dim, numbering)
@@ -134,6 +136,8 @@ def write_case(dim: int, out_dir: str, roles: str = "automatic", steps: int = ST
                                    condition_blocks)
     law = "LinearElasticPlaneStrain2DLaw" if dim == 2 else "LinearElastic3DLaw"
     variables = {"YOUNG_MODULUS": YOUNG, "POISSON_RATIO": POISSON, "DENSITY": 1.0}
+    if friction:
+        variables["FRICTION_COEFFICIENT"] = friction
     if dim == 2:
         variables["THICKNESS"] = 1.0
     materials = {"properties": [{"model_part_name": "Structure.Parts_clamp", "properties_id": 1,
@@ -153,10 +157,10 @@ def write_case(dim: int, out_dir: str, roles: str = "automatic", steps: int = ST
                          "start_time": 0.0, "end_time": 1.0},
         "solver_settings": {
             "model_part_name": "Structure", "domain_size": dim, "solver_type": "Static", "echo_level": 0,
-            "analysis_type": "non_linear",
+            "analysis_type": "non_linear", "buffer_size": 3 if friction else 2,
             "model_import_settings": model_import,
             "material_import_settings": {"materials_filename": f"{name}_materials.json"},
-            "contact_settings": {"mortar_type": "ALMContactFrictionless"},
+            "contact_settings": {"mortar_type": "ALMContactFrictional" if friction else "ALMContactFrictionless"},
             "time_stepping": {"time_step": 1.0 / steps},
             "block_builder": True, "line_search": False, "compute_reactions": True,
             "convergence_criterion": "contact_residual_criterion",
@@ -171,7 +175,8 @@ def write_case(dim: int, out_dir: str, roles: str = "automatic", steps: int = ST
                 "python_module": "alm_contact_process",
                 "kratos_module": "KratosMultiphysics.ContactStructuralMechanicsApplication",
                 "process_name": "ALMContactProcess",
-                "Parameters": {"model_part_name": "Structure", "contact_type": "Frictionless", **contact}}]},
+                "Parameters": {"model_part_name": "Structure",
+                               "contact_type": "Frictional" if friction else "Frictionless", **contact}}]},
         "output_processes": {}}
     for file, content in ((f"{name}_materials.json", materials), ("ProjectParameters.json", parameters)):
         with open(os.path.join(folder, file), "w") as f:
