@@ -148,8 +148,10 @@ def main(argv=None) -> int:
                 "The last column compares with mortarcontact's given-roles run. Kratos' 2D and 3D runs with given "
                 "roles end step 2 with the arms' tips overlapping (no active node: its search at the step start finds "
                 "no pair); with tolerances 1e-14 in both codes the 2D answers still differ by 1.8e-4 (both tips 1.9e-5 "
-                f"further right in Kratos, the same gap between them).\n\nMachine load average {load:.1f} at the end "
-                f"of the run ({os.cpu_count()} cores): times are only indicative.\n\n" + "\n".join(lines) + "\n")
+                "further right in Kratos, the same gap between them).\n\nTimes: wall seconds of the analysis, all "
+                "cores; Kratos with libgomp's default (spinning) wait policy, which costs it most on a busy machine "
+                f"(benchmarks/hertz/results_wait_policy.md). Load average {load:.1f} at the end of the run "
+                f"({os.cpu_count()} cores).\n\n" + "\n".join(lines) + "\n")
     return 0
 
 
