@@ -302,11 +302,14 @@ void ContactSearchProcess::AssignAutomaticRoles(const std::vector<Condition*>& c
   }
   for (std::size_t i = 0; i < n; ++i) decided_role_[i] = group_role[groups.Find(i)];
 
-  // Within a group (self contact), each pair of facing faces is found from both sides. Orient all
-  // pairs between two sheets of the surface the same way: the sheets are the faces with a partner
-  // in their own group, joined through shared nodes where their normals agree; the sheet holding
-  // the lower condition id is slave. Per-face choices (e.g. the lower id of each pair) mix the
-  // sides within one contact zone wherever the ids interleave, constraining one gap twice.
+  // Within a group (self contact), each pair of facing faces is found from both sides, and all
+  // pairs of one contact zone must take the same side as slave: per-face choices (e.g. the lower
+  // id of each pair) mix the sides wherever the ids interleave, constraining one gap twice. The
+  // faces with a partner in their own group form sheets (joined through shared nodes where their
+  // normals agree); the sheets that face each other are coloured slave / master alternately, from
+  // the sheet that was slave at earlier searches, or else the one holding the lowest id. A zone
+  // can hold several sheets on one side (a face without a partner splits a sheet), which the
+  // colouring keeps on the same side.
   std::vector<char> self_paired(n, 0);
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t m : candidates[i])
@@ -318,13 +321,47 @@ void ContactSearchProcess::AssignAutomaticRoles(const std::vector<Condition*>& c
         if (self_paired[faces[a]] && self_paired[faces[b]] &&
             conditions[faces[a]]->GetValue(NORMAL).dot(conditions[faces[b]]->GetValue(NORMAL)) > 0.5)
           sheets.Join(faces[a], faces[b]);
+  if (self_side_.size() != n) self_side_.assign(n, kSideUnknown);
   std::vector<std::size_t> lowest(n, n);
-  for (std::size_t i = 0; i < n; ++i) lowest[sheets.Find(i)] = std::min(lowest[sheets.Find(i)], i);
-  // The slave side of the pair (i, m) of one group. Two faces of one sheet (a surface folded so
-  // tightly that the sheet turns to face itself) fall back to the lower id.
+  std::vector<long> memory(n, 0);  // per sheet: faces that were slave minus faces that were master
+  std::vector<std::vector<std::size_t>> facing(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t sheet = sheets.Find(i);
+    lowest[sheet] = std::min(lowest[sheet], i);
+    memory[sheet] += self_side_[i] == kSideSlave ? 1 : self_side_[i] == kSideMaster ? -1 : 0;
+    // Both ways: a face may find its partner without being found by it (search radii differ).
+    for (std::size_t m : candidates[i])
+      if (groups.Find(m) == groups.Find(i) && sheets.Find(m) != sheet) {
+        facing[sheet].push_back(sheets.Find(m));
+        facing[sheets.Find(m)].push_back(sheet);
+      }
+  }
+  // Breadth-first colouring of each zone of facing sheets, from its strongest former slave.
+  std::vector<std::size_t> order;
+  for (std::size_t sheet = 0; sheet < n; ++sheet)
+    if (sheets.Find(sheet) == sheet && !facing[sheet].empty()) order.push_back(sheet);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return memory[a] != memory[b] ? memory[a] > memory[b] : lowest[a] < lowest[b];
+  });
+  enum Colour : char { kUncoloured, kSlaveSheet, kMasterSheet };
+  std::vector<char> colour(n, kUncoloured);
+  for (std::size_t start : order) {
+    if (colour[start] != kUncoloured) continue;
+    colour[start] = kSlaveSheet;
+    std::vector<std::size_t> queue{start};
+    for (std::size_t q = 0; q < queue.size(); ++q)
+      for (std::size_t next : facing[queue[q]])
+        if (colour[next] == kUncoloured) {
+          colour[next] = colour[queue[q]] == kSlaveSheet ? kMasterSheet : kSlaveSheet;
+          queue.push_back(next);
+        }
+  }
+  // The slave side of the pair (i, m) of one group. Where the colouring does not separate them (a
+  // surface folded so tightly that a sheet faces itself, or an odd cycle of sheets), the lower id.
   auto slave_side = [&](std::size_t i, std::size_t m) {
-    const std::size_t si = lowest[sheets.Find(i)], sm = lowest[sheets.Find(m)];
-    return si != sm ? (si < sm ? i : m) : std::min(i, m);
+    const char ci = colour[sheets.Find(i)], cm = colour[sheets.Find(m)];
+    if (ci == cm) return std::min(i, m);
+    return ci == kSlaveSheet ? i : m;
   };
 
   for (std::size_t i = 0; i < n; ++i) {
@@ -337,6 +374,12 @@ void ContactSearchProcess::AssignAutomaticRoles(const std::vector<Condition*>& c
       }
     candidates[i] = std::move(kept);
   }
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t m : candidates[i])
+      if (groups.Find(m) == groups.Find(i)) {
+        self_side_[i] = kSideSlave;
+        self_side_[m] = kSideMaster;
+      }
   for (std::size_t i = 0; i < n; ++i) {
     const bool slave = group_role[groups.Find(i)] != kDecidedMaster;
     conditions[i]->Set(SLAVE, slave);

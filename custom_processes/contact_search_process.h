@@ -79,7 +79,8 @@ struct ContactSearchSlot {
 /// as master, then assigns the roles: the connected groups of interface conditions are visited
 /// in id order; the first that finds a partner in another group becomes slave and the partners'
 /// groups master, for the rest of the run. Within a group (self contact) the pairs are oriented
-/// at every search, one slave side per pair of facing sheets of the surface.
+/// at every search, one slave side per pair of facing sheets of the surface, kept from search to
+/// search.
 class ContactSearchProcess {
  public:
   /// The gap below which static_check_movement predicts a node at rest active (Kratos'
@@ -143,6 +144,9 @@ class ContactSearchProcess {
   /// that found the group a partner in another group.
   enum DecidedRole : char { kUndecided, kDecidedSlave, kDecidedMaster };
   std::vector<char> decided_role_;
+  /// Self contact: per interface condition, its side in the last pair of its group it was in.
+  enum SelfSide : char { kSideUnknown, kSideSlave, kSideMaster };
+  std::vector<char> self_side_;
   /// NORMAL_GAP of each slave node at the previous search (static_check_movement).
   std::unordered_map<const Node*, double> previous_gap_;
   std::unordered_map<const Node*, std::size_t> body_of_node_;

@@ -95,14 +95,17 @@ def boundary_faces(coords: np.ndarray, cells: np.ndarray, on: np.ndarray) -> np.
 
 
 def write_case(dim: int, out_dir: str, roles: str = "automatic", steps: int = STEPS,
-               numbering: str = "columns", friction: float = 0.0) -> str:
+               numbering: str = "columns", friction: float = 0.0, slave: str = "left") -> str:
     """Writes ``out_dir/self_contact_<dim>d_<roles>[_rows][_fric]/`` (gmsh mesh, materials,
     ProjectParameters.json) and returns the folder; ``numbering`` as in ``mesh``; a ``friction``
-    coefficient above 0 makes the contact Coulomb-frictional (ALMContactFrictional)."""
+    coefficient above 0 makes the contact Coulomb-frictional (ALMContactFrictional); ``slave``: the
+    inner face ("left" or "right") that is slave with the roles given."""
     if roles not in ("automatic", "given"):
         raise ValueError(f"roles: expected 'automatic' or 'given', got {roles!r}")
+    if slave not in ("left", "right"):
+        raise ValueError(f"slave: expected 'left' or 'right', got {slave!r}")
     name = f"self_contact_{dim}d_{roles}" + ("_rows" if numbering == "rows" else "")
-    name += "_fric" if friction else ""
+    name += ("_fric" if friction else "") + ("_right" if roles == "given" and slave == "right" else "")
     folder = os.path.join(out_dir, name)
     os.makedirs(folder, exist_ok=True)
     coords, cells = mesh(dim, numbering)
@@ -122,7 +125,7 @@ def write_case(dim: int, out_dir: str, roles: str = "automatic", steps: int = ST
         parts["Contact_left"] = {"nodes": np.flatnonzero(in_slot_wall & (x < 0.0))}
         parts["Contact_right"] = {"nodes": np.flatnonzero(in_slot_wall & (x > 0.0))}
         contact = {"contact_model_part": {"0": ["Contact_left", "Contact_right"]},
-                   "assume_master_slave": {"0": ["Contact_left"]}}
+                   "assume_master_slave": {"0": [f"Contact_{slave}"]}}
     load_faces = boundary_faces(coords, cells, loaded)
     stem = "LineLoadCondition2D2N" if dim == 2 else "SurfaceLoadCondition3D4N"
     condition_blocks = []

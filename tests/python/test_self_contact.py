@@ -45,8 +45,9 @@ class _Recorded(mc.Analysis):
 
 
 def _run(tmp_path, dim: int, roles: str, numbering: str = "columns", steps: int = self_contact.STEPS,
-         friction: float = 0.0):
-    folder = self_contact.write_case(dim, str(tmp_path), roles, steps=steps, numbering=numbering, friction=friction)
+         friction: float = 0.0, slave: str = "left"):
+    folder = self_contact.write_case(dim, str(tmp_path), roles, steps=steps, numbering=numbering, friction=friction,
+                                     slave=slave)
     analysis = _Recorded(mc.Model(), os.path.join(folder, "ProjectParameters.json"))
     analysis.Run()
     root = analysis.model["Structure"]
@@ -61,14 +62,16 @@ def test_automatic_roles_give_the_answer_of_given_roles(tmp_path, numbering, fri
     """Row numbering interleaves the two arms' faces, and the graded right arm makes every left face
     meet right faces of lower and higher ids: choosing the slave per pair by the lower id put slave
     faces on both sides of one contact zone (measured: 22 Newton iterations in step 2 instead of 4,
-    final displacements 9e-4 away from the given roles'). Also with Coulomb friction (mu 0.3)."""
-    given, u_given = _run(tmp_path / "given", 2, "given", friction=friction)
+    final displacements 9e-4 away from the given roles'). The automatic roles take one side, that
+    of the lowest id where the arms first touch, and give the answer of that side given by hand.
+    Also with Coulomb friction (mu 0.3)."""
     automatic, u_automatic = _run(tmp_path / "automatic", 2, "automatic", numbering, friction=friction)
-    iterations = [log[2] for log in automatic.step_log]
-    assert iterations == [log[2] for log in given.step_log]
+    assert len(automatic.slave_sides) == 1
+    side = "left" if automatic.slave_sides == {-1.0} else "right"
+    given, u_given = _run(tmp_path / "given", 2, "given", friction=friction, slave=side)
+    assert [log[2] for log in automatic.step_log] == [log[2] for log in given.step_log]
     assert all(log[3] for log in automatic.step_log)
-    assert automatic.slave_sides == {-1.0}  # one slave side: the sheet of lower id, the left face
-    # Within the convergence tolerances (relative 1e-6): the right arm's nodes are slave nodes too
+    # Within the convergence tolerances (relative 1e-6): the master face's nodes are slave nodes too
     # (inactive) with automatic roles, so the iterates differ in round-off.
     assert np.abs(u_automatic - u_given).max() < 1e-6 * np.abs(u_given).max()
 
@@ -118,10 +121,29 @@ def test_kratos_with_given_roles_agrees_after_first_contact(tmp_path):
 
 def test_3d_automatic_roles(tmp_path):
     """The same in 3D (hexahedra, faces interleaved by row numbering)."""
-    given, u_given = _run(tmp_path / "given", 3, "given", steps=4)
     automatic, u_automatic = _run(tmp_path / "automatic", 3, "automatic", "rows", steps=4)
+    assert len(automatic.slave_sides) == 1
+    side = "left" if automatic.slave_sides == {-1.0} else "right"
+    given, u_given = _run(tmp_path / "given", 3, "given", steps=4, slave=side)
     assert all(log[3] for log in automatic.step_log)
     assert [log[2] for log in automatic.step_log] == [log[2] for log in given.step_log]
-    assert automatic.slave_sides == {-1.0}
     assert np.abs(u_automatic - u_given).max() < 1e-6 * np.abs(u_given).max()
     assert np.all(np.abs(automatic.overlaps[1:]) < 1e-4)
+
+
+@pytest.mark.parametrize("case", ["fine_right_slave", "deep_left_slave"])
+@pytest.mark.xfail(strict=True, raises=(mc.SolutionError, AssertionError), reason=(
+    "issue 10: cases Kratos 10.4 converges on and we do not, with the roles given (no self contact "
+    "involved). fine_right_slave (element size 0.025, the graded right arm slave): Kratos 1,2,3,4,4,4,3,3 "
+    "iterations; ours cycles in step 3 (25 nodes switch at once after iteration 3; the union of the cycle "
+    "converges but the recheck rejects it, four times). deep_left_slave (3 x the load): Kratos "
+    "2,7,4,4,5,4,6,4; ours stops in step 4 with slave nodes kept active whose overlap the normals of the "
+    "new iterate no longer give them (multipliers without stiffness)."))
+def test_clamp_cases_kratos_converges_on(tmp_path, case, monkeypatch):
+    if case == "fine_right_slave":
+        monkeypatch.setitem(self_contact.SIZE, 2, 0.025)
+        analysis, _ = _run(tmp_path, 2, "given", slave="right")
+    else:
+        monkeypatch.setattr(self_contact, "PRESSURE", 3.0)
+        analysis, _ = _run(tmp_path, 2, "given")
+    assert all(log[3] for log in analysis.step_log)
