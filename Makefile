@@ -83,10 +83,12 @@ bench: install
 	$(PYTHON) benchmarks/run_benchmarks.py
 	$(PYTHON) benchmarks/hertz/compare.py --cases hertz2d_2k,hertz2d_8k,hertz2d_30k,hertz3d_15k,hertz3dgrid_15k
 	$(PYTHON) benchmarks/hertz/reuse_ab.py
+	$(PYTHON) benchmarks/hertz/wait_policy.py
 	$(PYTHON) benchmarks/hertz/linear_solvers.py
 	$(PYTHON) benchmarks/hertz/contact_scaling.py
 	$(PYTHON) benchmarks/structural_parity/run.py
 	$(PYTHON) benchmarks/kratos_cases/frictional_iterations.py
+	$(PYTHON) benchmarks/self_contact/compare.py
 
 # The large Hertz cases, one run each (Kratos needs about 25 minutes for hertz3d_50k alone); the
 # 3D cases past 50k DoFs with ours only, on the PETSc field split (algebraic multigrid): a direct

@@ -252,49 +252,136 @@ const PairedCondition& ContactSearchProcess::Prototype(const Geometry& slave, co
   return *prototype;
 }
 
+namespace {
+
+/// Union-find over indices 0..n-1.
+class DisjointSets {
+ public:
+  explicit DisjointSets(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
+  std::size_t Find(std::size_t i) {
+    while (parent_[i] != i) i = parent_[i] = parent_[parent_[i]];
+    return i;
+  }
+  void Join(std::size_t a, std::size_t b) { parent_[Find(a)] = Find(b); }
+
+ private:
+  std::vector<std::size_t> parent_;
+};
+
+}  // namespace
+
 void ContactSearchProcess::AssignAutomaticRoles(const std::vector<Condition*>& conditions,
                                                 std::vector<std::vector<std::size_t>>& candidates) {
   const std::size_t n = conditions.size();
-  // Groups of conditions connected through shared nodes (union-find).
-  std::vector<std::size_t> parent(n);
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](std::size_t i) {
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  };
-  std::unordered_map<const Node*, std::size_t> first_owner;
+  // Groups of conditions connected through shared nodes.
+  DisjointSets groups(n);
+  std::unordered_map<const Node*, std::vector<std::size_t>> faces_at_node;
   for (std::size_t i = 0; i < n; ++i)
     for (const Node* node : conditions[i]->GetGeometry().Nodes()) {
-      auto [it, inserted] = first_owner.try_emplace(node, i);
-      if (!inserted) parent[find(i)] = find(it->second);
+      std::vector<std::size_t>& faces = faces_at_node[node];
+      if (!faces.empty()) groups.Join(i, faces.front());
+      faces.push_back(i);
     }
-  enum Role : char { kUnknown, kSlave, kMaster };
-  std::vector<Role> group_role(n, kUnknown);
+  // The role of a group is decided by the first search that finds it a partner in another group,
+  // and kept: the group of lowest id with a partner becomes slave and its partners' groups master.
+  // Until then a group is slave, provisionally (every face may still meet any other).
+  if (decided_role_.size() != n) decided_role_.assign(n, kUndecided);
+  std::vector<char> group_role(n, kUndecided);
+  for (std::size_t i = 0; i < n; ++i)
+    if (decided_role_[i] != kUndecided) group_role[groups.Find(i)] = decided_role_[i];
   // Conditions are in id order, so visiting them visits the groups by their lowest id.
   for (std::size_t i = 0; i < n; ++i) {
-    const std::size_t g = find(i);
-    if (group_role[g] == kUnknown) group_role[g] = kSlave;
-    if (group_role[g] != kSlave) continue;
+    const std::size_t g = groups.Find(i);
+    if (group_role[g] == kDecidedMaster) continue;
     for (std::size_t m : candidates[i]) {
-      const std::size_t gm = find(m);
-      if (gm != g && group_role[gm] == kUnknown) group_role[gm] = kMaster;
+      const std::size_t gm = groups.Find(m);
+      if (gm == g || group_role[gm] == kDecidedSlave) continue;
+      group_role[g] = kDecidedSlave;
+      if (group_role[gm] == kUndecided) group_role[gm] = kDecidedMaster;
     }
   }
+  for (std::size_t i = 0; i < n; ++i) decided_role_[i] = group_role[groups.Find(i)];
+
+  // Within a group (self contact), each pair of facing faces is found from both sides, and all
+  // pairs of one contact zone must take the same side as slave: per-face choices (e.g. the lower
+  // id of each pair) mix the sides wherever the ids interleave, constraining one gap twice. The
+  // faces with a partner in their own group form sheets (joined through shared nodes where their
+  // normals agree); the sheets that face each other are coloured slave / master alternately, from
+  // the sheet that was slave at earlier searches, or else the one holding the lowest id. A zone
+  // can hold several sheets on one side (a face without a partner splits a sheet), which the
+  // colouring keeps on the same side.
+  std::vector<char> self_paired(n, 0);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t m : candidates[i])
+      if (groups.Find(m) == groups.Find(i)) self_paired[i] = self_paired[m] = 1;
+  DisjointSets sheets(n);
+  for (const auto& [node, faces] : faces_at_node)
+    for (std::size_t a = 0; a < faces.size(); ++a)
+      for (std::size_t b = a + 1; b < faces.size(); ++b)
+        if (self_paired[faces[a]] && self_paired[faces[b]] &&
+            conditions[faces[a]]->GetValue(NORMAL).dot(conditions[faces[b]]->GetValue(NORMAL)) > 0.5)
+          sheets.Join(faces[a], faces[b]);
+  if (self_side_.size() != n) self_side_.assign(n, kSideUnknown);
+  std::vector<std::size_t> lowest(n, n);
+  std::vector<long> memory(n, 0);  // per sheet: faces that were slave minus faces that were master
+  std::vector<std::vector<std::size_t>> facing(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const std::size_t g = find(i);
-    const bool slave = group_role[g] == kSlave;
-    // Keep masters of other groups, and within a self-contacting group only higher indices so
-    // that each pair is created once.
+    const std::size_t sheet = sheets.Find(i);
+    lowest[sheet] = std::min(lowest[sheet], i);
+    memory[sheet] += self_side_[i] == kSideSlave ? 1 : self_side_[i] == kSideMaster ? -1 : 0;
+    // Both ways: a face may find its partner without being found by it (search radii differ).
+    for (std::size_t m : candidates[i])
+      if (groups.Find(m) == groups.Find(i) && sheets.Find(m) != sheet) {
+        facing[sheet].push_back(sheets.Find(m));
+        facing[sheets.Find(m)].push_back(sheet);
+      }
+  }
+  // Breadth-first colouring of each zone of facing sheets, from its strongest former slave.
+  std::vector<std::size_t> order;
+  for (std::size_t sheet = 0; sheet < n; ++sheet)
+    if (sheets.Find(sheet) == sheet && !facing[sheet].empty()) order.push_back(sheet);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return memory[a] != memory[b] ? memory[a] > memory[b] : lowest[a] < lowest[b];
+  });
+  enum Colour : char { kUncoloured, kSlaveSheet, kMasterSheet };
+  std::vector<char> colour(n, kUncoloured);
+  for (std::size_t start : order) {
+    if (colour[start] != kUncoloured) continue;
+    colour[start] = kSlaveSheet;
+    std::vector<std::size_t> queue{start};
+    for (std::size_t q = 0; q < queue.size(); ++q)
+      for (std::size_t next : facing[queue[q]])
+        if (colour[next] == kUncoloured) {
+          colour[next] = colour[queue[q]] == kSlaveSheet ? kMasterSheet : kSlaveSheet;
+          queue.push_back(next);
+        }
+  }
+  // The slave side of the pair (i, m) of one group. Where the colouring does not separate them (a
+  // surface folded so tightly that a sheet faces itself, or an odd cycle of sheets), the lower id.
+  auto slave_side = [&](std::size_t i, std::size_t m) {
+    const char ci = colour[sheets.Find(i)], cm = colour[sheets.Find(m)];
+    if (ci == cm) return std::min(i, m);
+    return ci == kSlaveSheet ? i : m;
+  };
+
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t g = groups.Find(i);
     std::vector<std::size_t> kept;
-    if (slave)
+    if (group_role[g] != kDecidedMaster)
       for (std::size_t m : candidates[i]) {
-        const std::size_t gm = find(m);
-        if ((gm != g && group_role[gm] == kMaster) || (gm == g && m > i)) kept.push_back(m);
+        const std::size_t gm = groups.Find(m);
+        if ((gm != g && group_role[gm] == kDecidedMaster) || (gm == g && slave_side(i, m) == i)) kept.push_back(m);
       }
     candidates[i] = std::move(kept);
   }
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t m : candidates[i])
+      if (groups.Find(m) == groups.Find(i)) {
+        self_side_[i] = kSideSlave;
+        self_side_[m] = kSideMaster;
+      }
   for (std::size_t i = 0; i < n; ++i) {
-    const bool slave = group_role[find(i)] == kSlave;
+    const bool slave = group_role[groups.Find(i)] != kDecidedMaster;
     conditions[i]->Set(SLAVE, slave);
     conditions[i]->Set(MASTER, !slave);
   }
@@ -349,7 +436,7 @@ ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
   if (settings_["dynamic_search"].GetBool()) predicted.emplace(interface_);
   NormalCalculationUtilities::ComputeNodalNormals(interface_);
 
-  const bool automatic = !slot_.predefined_master_slave && !roles_assigned_;
+  const bool automatic = !slot_.predefined_master_slave;
   std::vector<Condition*> all(interface_.Conditions().begin(), interface_.Conditions().end());
   std::vector<std::size_t> slaves, masters;
   for (std::size_t i = 0; i < all.size(); ++i) {
@@ -481,7 +568,6 @@ ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
                            "; the extra ones were dropped"));
   if (automatic) {
     AssignAutomaticRoles(all, candidates);
-    roles_assigned_ = true;
     stats.slave_conditions = stats.master_conditions = 0;
     for (const Condition* condition : all) {
       stats.slave_conditions += condition->Is(SLAVE) ? 1 : 0;

@@ -75,10 +75,12 @@ struct ContactSearchSlot {
 /// "ALMFrictionlessMortarContactCondition" + "3D3N4N"; the prototype must be a
 /// PairedCondition registered in Registry<Condition>.
 ///
-/// Without predefined roles (no assume_master_slave) the first search assigns them: the
-/// connected groups of interface conditions are visited in id order; a group not yet master
-/// becomes slave and the groups of the masters it finds become master (a self-contacting
-/// group keeps both roles, pairing each condition only with higher ids).
+/// Without predefined roles (no assume_master_slave) every search treats every face as slave and
+/// as master, then assigns the roles: the connected groups of interface conditions are visited
+/// in id order; the first that finds a partner in another group becomes slave and the partners'
+/// groups master, for the rest of the run. Within a group (self contact) the pairs are oriented
+/// at every search, one slave side per pair of facing sheets of the surface, kept from search to
+/// search.
 class ContactSearchProcess {
  public:
   /// The gap below which static_check_movement predicts a node at rest active (Kratos'
@@ -138,7 +140,13 @@ class ContactSearchProcess {
   ContactSearchSlot slot_;
   std::string type_search_;
   std::string check_gap_;
-  bool roles_assigned_ = false;
+  /// Automatic roles: per interface condition, the role its group was given by the first search
+  /// that found the group a partner in another group.
+  enum DecidedRole : char { kUndecided, kDecidedSlave, kDecidedMaster };
+  std::vector<char> decided_role_;
+  /// Self contact: per interface condition, its side in the last pair of its group it was in.
+  enum SelfSide : char { kSideUnknown, kSideSlave, kSideMaster };
+  std::vector<char> self_side_;
   /// NORMAL_GAP of each slave node at the previous search (static_check_movement).
   std::unordered_map<const Node*, double> previous_gap_;
   std::unordered_map<const Node*, std::size_t> body_of_node_;

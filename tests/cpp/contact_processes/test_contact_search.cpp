@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <set>
 
 #include "contact_processes_test_utilities.h"
@@ -227,6 +228,90 @@ TEST(ContactSearch, NonMatchingFlatInterfacePairsOverlappingSegments) {
   ContactSearchProcess loose(sub.GetRootModelPart(), sub,
                              SearchSettings(R"("type_search": "in_radius", "check_gap": "no_check")"));
   EXPECT_GT(loose.UpdateMortarConditions().pairs, 6u);
+}
+
+TEST(ContactSearch, AutomaticRolesAreDecidedByTheFirstSearchThatFindsAPartner) {
+  // Two strips 10 apart: the first search finds nothing and decides nothing (every face stays a
+  // possible slave and master). Once the upper strip has come down, the next search pairs them,
+  // the group of lower ids (the lower strip) slave; that choice then holds.
+  Model model;
+  ModelPart& lower_slave = BuildStrips2D(model, 4, 3, 10.0);
+  ModelPart& root = lower_slave.GetRootModelPart();
+  ModelPart& sub = test::BuildInterface(root, {"Contact_Part"});
+  ContactSearchSlot automatic;
+  automatic.predefined_master_slave = false;
+  ContactSearchProcess search(root, sub, SearchSettings(), automatic);
+  test::WarningCapture warnings;
+  EXPECT_EQ(search.UpdateMortarConditions().pairs, 0u);
+  for (Node* node : root.GetSubModelPart("Upper").Nodes()) node->Coordinates().y() -= 10.0 - 0.001;
+  for (int search_number = 0; search_number < 2; ++search_number) {
+    const ContactSearchStatistics stats = search.UpdateMortarConditions();
+    EXPECT_EQ(stats.pairs, 6u);
+    EXPECT_EQ(stats.slave_conditions, 4u);
+    EXPECT_EQ(stats.master_conditions, 3u);
+    for (const Condition* pair : search.ComputingPart().Conditions())
+      EXPECT_LT(dynamic_cast<const PairedCondition&>(*pair).GetParentSlaveCondition()->GetGeometry().Center().y(),
+                0.0005);  // the lower strip's top, y = 0
+  }
+}
+
+TEST(ContactSearch, SelfContactPairsTakeOneSlaveSidePerPairOfFacingSheets) {
+  // One C-shaped body: the two strips joined at their left ends by a column of quads, the contact
+  // surface the inside of the C (lower strip top, column face, upper strip bottom), one group of
+  // faces. The strips' elements are created alternately, so their faces' ids interleave, and the
+  // meshes do not match (4 against 3): every lower face meets upper faces of lower and of higher
+  // id. All pairs must take the same side as slave, the sheet holding the lowest id.
+  test::RegisterTestPairs();
+  Model model;
+  ModelPart& root = model.CreateModelPart("Structure");
+  root.AddNodalSolutionStepVariable(NORMAL);
+  root.AddNodalSolutionStepVariable(NODAL_H);
+  const double gap = 0.001;
+  const int n_lower = 4, n_upper = 3;
+  IndexType id = 1;
+  auto row = [&](int n, double y) {
+    const IndexType first = id;
+    for (int i = 0; i <= n; ++i) root.CreateNewNode(id++, double(i) / n, y, 0);
+    return first;
+  };
+  const IndexType lower_bottom = row(n_lower, -1.0), lower_top = row(n_lower, 0.0);
+  const IndexType upper_bottom = row(n_upper, gap), upper_top = row(n_upper, 1.0 + gap);
+  const IndexType column = id;
+  for (double y : {-1.0, 0.0, gap, 1.0 + gap}) root.CreateNewNode(id++, -1.0, y, 0);
+  Properties* properties = &root.GetOrCreateProperties(1);
+  IndexType element = 1;
+  auto quad = [&](IndexType a, IndexType b, IndexType c, IndexType d) {
+    root.CreateNewElement("SmallDisplacementElement2D4N", element++, {a, b, c, d}, properties);
+  };
+  for (int i = 0; i < n_lower; ++i) {
+    quad(lower_bottom + i, lower_bottom + i + 1, lower_top + i + 1, lower_top + i);
+    if (i < n_upper) quad(upper_bottom + i, upper_bottom + i + 1, upper_top + i + 1, upper_top + i);
+  }
+  quad(column, lower_bottom, lower_top, column + 1);
+  quad(column + 1, lower_top, upper_bottom, column + 2);
+  quad(column + 2, upper_bottom, upper_top, column + 3);
+  std::vector<IndexType> inside;
+  for (int i = 0; i <= n_lower; ++i) inside.push_back(lower_top + i);
+  for (int i = 0; i <= n_upper; ++i) inside.push_back(upper_bottom + i);
+  root.CreateSubModelPart("Contact_Part").AddNodes(inside);
+  ModelPart& sub = test::BuildInterface(root, {"Contact_Part"});
+  ContactSearchSlot automatic;
+  automatic.predefined_master_slave = false;
+  ContactSearchProcess search(root, sub, SearchSettings(), automatic);
+  const ContactSearchStatistics stats = search.UpdateMortarConditions();
+  EXPECT_EQ(stats.pairs, 6u);  // as between two bodies: 1 + 2 + 2 + 1 overlaps
+  std::set<bool> slave_below;
+  IndexType lowest = std::numeric_limits<IndexType>::max();
+  bool lowest_below = false;
+  for (const Condition* face : sub.Conditions())
+    if (std::abs(face->GetGeometry().Center().y() - 0.5 * gap) > 0.25 * gap && face->Id() < lowest) {
+      lowest = face->Id();
+      lowest_below = face->GetGeometry().Center().y() < 0.25 * gap;
+    }
+  for (const Condition* pair : search.ComputingPart().Conditions())
+    slave_below.insert(
+        dynamic_cast<const PairedCondition&>(*pair).GetParentSlaveCondition()->GetGeometry().Center().y() < 0.25 * gap);
+  EXPECT_EQ(slave_below, std::set<bool>{lowest_below});
 }
 
 // The interface of the shared 2D Hertz case: hemisphere (slave) on a plate.
