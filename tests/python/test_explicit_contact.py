@@ -1,0 +1,132 @@
+"""Explicit penalty contact (issue 13, part 3): explicit_penalty_contact_process with the explicit
+solver, the critical time step with the penalty, the bar impact against 1D wave theory and the
+shared explicit case."""
+from __future__ import annotations
+
+import math
+import os
+
+import numpy as np
+import pytest
+
+import mortarcontact as mc
+from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
+from mortarcontact.cases import bar_impact
+from mortarcontact.project_parameters import read_project_parameters
+
+from csma_cases import CSMA_CASES
+
+V = mc.GetVariable
+
+
+class BarImpact(StructuralMechanicsAnalysis):
+    """Sets the bars' initial velocities (+v left, -v right) and records, after every step, the
+    time, the mean velocity (momentum / mass) and the kinetic energy of each bar, and the element
+    and contact critical time steps of the first step."""
+
+    def __init__(self, model, parameters):
+        super().__init__(model, parameters)
+        self.rows = []
+
+    def Initialize(self):
+        super().Initialize()
+        root = self.model["Structure"]
+        for bar, v in (("left", bar_impact.SPEED), ("right", -bar_impact.SPEED)):
+            for node in root.GetSubModelPart(bar).Nodes:
+                node.SetSolutionStepValue(V("VELOCITY"), [v, 0.0, 0.0])
+
+    def FinalizeSolutionStep(self):
+        super().FinalizeSolutionStep()
+        root = self.model["Structure"]
+        row = [root.ProcessInfo.GetValue(V("TIME")), float(root.Is(mc.CONTACT))]
+        for bar in ("left", "right"):
+            nodes = root.GetSubModelPart(bar).Nodes
+            m = np.array([n.GetValue(V("NODAL_MASS")) for n in nodes])
+            v = np.array([n.GetSolutionStepValue(V("VELOCITY"))[0] for n in nodes])
+            row += [float(m @ v) / m.sum(), 0.5 * float(m @ v ** 2), m.sum()]
+        self.rows.append(row)
+
+
+def _run_bar(folder, **kwargs):
+    path = bar_impact.write_case(str(folder), **kwargs)
+    cwd = os.getcwd()
+    os.chdir(folder)
+    try:
+        analysis = BarImpact(mc.Model(), read_project_parameters(os.path.basename(path)))
+        analysis.Run()
+    finally:
+        os.chdir(cwd)
+    return analysis, np.array(analysis.rows)
+
+
+def test_bar_impact_matches_wave_theory(tmp_path):
+    """Two equal bars (1D: nu = 0, lateral displacements fixed), each at speed v = 1 towards the
+    other: in contact for t_c = 2 L / c, force F = rho c A v (= rho c A V_rel / 2), velocities
+    exchanged. Measured (40 hexahedra per bar, penalty spring 20 times an element's nodal
+    stiffness, time_step a quarter of the critical one): t_c to 0.8 %, the velocity after the impact
+    to 1.7 %, the mean force (momentum change over the contact time) to 1 %."""
+    analysis, rows = _run_bar(tmp_path, time_step=bar_impact.critical_time_step() / 4)
+    c = bar_impact.wave_speed()
+    duration, force = 2.0 * bar_impact.LENGTH / c, bar_impact.DENSITY * c * bar_impact.SIDE ** 2 * bar_impact.SPEED
+    touching = rows[rows[:, 1] > 0.0, 0]
+    measured = touching[-1] - touching[0]
+    assert measured == pytest.approx(duration, rel=0.02)
+    left_after, right_after, mass = rows[-1, 2], rows[-1, 5], rows[-1, 4]
+    assert left_after == pytest.approx(-bar_impact.SPEED, rel=0.03)
+    assert right_after == pytest.approx(bar_impact.SPEED, rel=0.03)
+    assert left_after + right_after == pytest.approx(0.0, abs=1e-9)  # momentum
+    assert mass * (bar_impact.SPEED - left_after) / measured == pytest.approx(force, rel=0.03)
+    # Kinetic energy after the impact (the bars ring: part of it is strain energy). Not conserved
+    # to a few percent yet: 11 % gained here, 2.4 times at the critical time step (see README).
+    kinetic = (rows[-1, 3] + rows[-1, 6]) / (rows[0, 3] + rows[0, 6])
+    assert 0.9 < kinetic < 1.2
+
+
+def test_critical_time_step_of_the_bar(tmp_path, capfd):
+    """The element bound of a 1D bar is h / c exactly; the penalty springs lower it to
+    h / (c sqrt(1 + ratio)); a time_step above it warns, naming the key and both estimates."""
+    h, c = bar_impact.LENGTH / bar_impact.NX, bar_impact.wave_speed()
+    critical = bar_impact.critical_time_step() / 0.9
+    analysis, _ = _run_bar(tmp_path, time_step=1.5 * critical, end_time=5 * critical)
+    strategy = analysis.solver.strategy
+    assert strategy.ElementStableTimeStep() == pytest.approx(h / c, rel=1e-9)
+    assert strategy.ContactStableTimeStep(h / c) == pytest.approx(critical, rel=1e-9)
+    err = capfd.readouterr().err
+    assert "solver_settings.time_stepping.time_step = " in err and "exceeds the critical time step" in err
+    assert f"{critical:.3g}" in err and f"{h / c:.3g}" in err
+
+
+def _run_shared(steps=None):
+    case = "penalty_frictionless_contact_test_3D/explicit_3D_contact_simplest_patch_matching_test"
+    params = read_project_parameters(os.path.join(CSMA_CASES, f"{case}_parameters.json"))
+    if steps is not None:
+        params["problem_data"]["end_time"].SetDouble(steps * 2.0e-7)
+        params["processes"].RemoveValue("json_check_process")
+    rows = []
+
+    class Shared(StructuralMechanicsAnalysis):
+        def FinalizeSolutionStep(self):
+            super().FinalizeSolutionStep()
+            root = self.model["Structure"]
+            rows.append([root.ProcessInfo.GetValue(V("TIME"))] +
+                        [root.GetNode(n).GetSolutionStepValue(V("DISPLACEMENT_Z")) for n in (2, 5)])
+
+    Shared(mc.Model(), params).Run()  # the case's own json check (absolute tolerance 1e-3) raises
+    return np.array(rows)
+
+
+def test_shared_explicit_case(csma_cases, monkeypatch):
+    """The shared explicit case runs unchanged to t = 2e-3 and passes its own check. Kratos 10.4 does
+    not transmit contact there at all: once its first step finds every node open (the gap is 1e-5),
+    its explicit process stops updating the active set until the next search (database_step_update
+    10000), and the upper block passes through the lower one (node 2 at -1.99e-3, node 5 at -1.7e-9
+    at the end). Ours transmits it, with the automatic penalty E / h (2.1e11, Kratos' explicit rule) a
+    soft one on this one-element mesh: the penetration reaches 1.32e-3 (Kratos 10.4: 1.99e-3) and node
+    5 moves; the reference file (an older revision, whose penalty is not known) is 62 % away from ours
+    (1e13 and 1e14 as manual penalties: 4.3 % and 3.5 %)."""
+    monkeypatch.chdir(csma_cases)
+    rows = _run_shared()
+    assert rows[-1, 0] == pytest.approx(2.0e-3, rel=1e-3)
+    penetration = (rows[:, 2] - 1.0e-5) - rows[:, 1]  # z gap of 1e-5 between nodes 2 and 5
+    assert penetration.max() < 0.7 * 1.99e-3
+    assert rows[-1, 2] < -1.0e-4  # the lower block is pushed
