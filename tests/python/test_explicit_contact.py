@@ -44,7 +44,7 @@ class BarImpact(StructuralMechanicsAnalysis):
             m = np.array([n.GetValue(V("NODAL_MASS")) for n in nodes])
             v = np.array([n.GetSolutionStepValue(V("VELOCITY"))[0] for n in nodes])
             row += [float(m @ v) / m.sum(), 0.5 * float(m @ v ** 2), m.sum()]
-        self.rows.append(row)
+        self.rows.append(row + [root.ProcessInfo.GetValue(V("DELTA_TIME"))])
 
 
 def _run_bar(folder, **kwargs):
@@ -65,7 +65,12 @@ def test_bar_impact_matches_wave_theory(tmp_path):
     exchanged. Measured (40 hexahedra per bar, penalty spring 20 times an element's nodal
     stiffness, time_step a quarter of the critical one): t_c to 0.8 %, the velocity after the impact
     to 1.7 %, the mean force (momentum change over the contact time) to 1 %."""
-    analysis, rows = _run_bar(tmp_path, time_step=bar_impact.critical_time_step() / 4)
+    time_step = bar_impact.critical_time_step() / 4
+    analysis, rows = _run_bar(tmp_path, time_step=time_step)
+    # delta_time_factor_for_contact (0.5): the step after one that ends in contact is halved.
+    in_contact = rows[:-1, 1] > 0.0
+    assert in_contact.sum() > 100
+    assert np.allclose(rows[1:, 8][in_contact], 0.5 * time_step) and np.allclose(rows[1:, 8][~in_contact], time_step)
     c = bar_impact.wave_speed()
     duration, force = 2.0 * bar_impact.LENGTH / c, bar_impact.DENSITY * c * bar_impact.SIDE ** 2 * bar_impact.SPEED
     touching = rows[rows[:, 1] > 0.0, 0]
@@ -116,7 +121,8 @@ def _run_shared(steps=None):
 
 
 def test_shared_explicit_case(csma_cases, monkeypatch):
-    """The shared explicit case runs unchanged to t = 2e-3 and passes its own check. Kratos 10.4 does
+    """The shared explicit case (explicit_penalty_contact_process) runs unchanged to t = 2e-3 and
+    passes its own check. Kratos 10.4 does
     not transmit contact there at all: once its first step finds every node open (the gap is 1e-5),
     its explicit process stops updating the active set until the next search (database_step_update
     10000), and the upper block passes through the lower one (node 2 at -1.99e-3, node 5 at -1.7e-9
