@@ -62,11 +62,13 @@ def _run_bar(folder, **kwargs):
 def test_bar_impact_matches_wave_theory(tmp_path):
     """Two equal bars (1D: nu = 0, lateral displacements fixed), each at speed v = 1 towards the
     other: in contact for t_c = 2 L / c, force F = rho c A v (= rho c A V_rel / 2), velocities
-    exchanged. Measured (40 hexahedra per bar, penalty spring 20 times an element's nodal
-    stiffness, time_step a quarter of the critical one): t_c to 0.8 %, the velocity after the impact
-    to 1.7 %, the mean force (momentum change over the contact time) to 1 %."""
-    time_step = bar_impact.critical_time_step() / 4
-    analysis, rows = _run_bar(tmp_path, time_step=time_step)
+    exchanged, kinetic energy restored. 40 hexahedra per bar, penalty springs 20 times an element's
+    nodal stiffness, time_step half the critical one (at 0.9 of it the run stays bounded, as the
+    linear estimate says, but the contact switching on and off gains energy: 2.5 times the kinetic
+    energy after the impact). Measured: t_c to 0.9 %, the velocities after the impact to 0.6 %,
+    the mean force (momentum change over the contact time) to 0.7 %, the kinetic energy to 1.8 %."""
+    time_step = bar_impact.critical_time_step() / 2
+    _, rows = _run_bar(tmp_path, time_step=time_step)
     # delta_time_factor_for_contact (0.5): the step after one that ends in contact is halved.
     in_contact = rows[:-1, 1] > 0.0
     assert in_contact.sum() > 100
@@ -75,16 +77,15 @@ def test_bar_impact_matches_wave_theory(tmp_path):
     duration, force = 2.0 * bar_impact.LENGTH / c, bar_impact.DENSITY * c * bar_impact.SIDE ** 2 * bar_impact.SPEED
     touching = rows[rows[:, 1] > 0.0, 0]
     measured = touching[-1] - touching[0]
-    assert measured == pytest.approx(duration, rel=0.02)
+    assert measured == pytest.approx(duration, rel=0.015)
     left_after, right_after, mass = rows[-1, 2], rows[-1, 5], rows[-1, 4]
-    assert left_after == pytest.approx(-bar_impact.SPEED, rel=0.03)
-    assert right_after == pytest.approx(bar_impact.SPEED, rel=0.03)
+    assert left_after == pytest.approx(-bar_impact.SPEED, rel=0.01)
+    assert right_after == pytest.approx(bar_impact.SPEED, rel=0.01)
     assert left_after + right_after == pytest.approx(0.0, abs=1e-9)  # momentum
-    assert mass * (bar_impact.SPEED - left_after) / measured == pytest.approx(force, rel=0.03)
-    # Kinetic energy after the impact (the bars ring: part of it is strain energy). Not conserved
-    # to a few percent yet: 11 % gained here, 2.4 times at the critical time step (see README).
+    assert mass * (bar_impact.SPEED - left_after) / measured == pytest.approx(force, rel=0.015)
+    # After the impact the bars ring (part of the energy is strain energy): at most lost, never gained.
     kinetic = (rows[-1, 3] + rows[-1, 6]) / (rows[0, 3] + rows[0, 6])
-    assert 0.9 < kinetic < 1.2
+    assert kinetic == pytest.approx(1.0, abs=0.03)
 
 
 def test_critical_time_step_of_the_bar(tmp_path, capfd):
