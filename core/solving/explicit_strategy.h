@@ -38,7 +38,8 @@ class ExplicitStrategy : public SolvingStrategy {
   /// state and its lumped (row-sum) mass. The largest frequency of the assembled mesh never
   /// exceeds the largest element frequency (Irons' bound), so a time step below this one is
   /// stable for the elements; for a hexahedron of edge h it is about h / c with the dilatational
-  /// wave speed c. Infinity for a model without stiffness.
+  /// wave speed c. Elements without a mass of their own (a spring between mass elements) are not
+  /// bounded; infinity when none is.
   double ElementStableTimeStep() const;
 
  protected:

@@ -20,9 +20,10 @@ ModelPart* ContactPart(ModelPart& model_part) {
 }
 }  // namespace
 
-ExplicitPenaltyContactStrategy::ExplicitPenaltyContactStrategy(
-    ModelPart& model_part, std::shared_ptr<ExplicitCentralDifferencesScheme> scheme,
-    std::shared_ptr<MortarUpdater> updater, bool compute_reactions, bool move_mesh_flag)
+ExplicitPenaltyContactStrategy::ExplicitPenaltyContactStrategy(ModelPart& model_part,
+                                                               std::shared_ptr<ExplicitCentralDifferencesScheme> scheme,
+                                                               std::shared_ptr<MortarUpdater> updater,
+                                                               bool compute_reactions, bool move_mesh_flag)
     // Penalty contact adds no DoFs: the DoF set and the lumped mass stay those of the elements.
     : ExplicitStrategy(model_part, std::move(scheme), compute_reactions, false, move_mesh_flag),
       updater_(std::move(updater)) {
@@ -43,9 +44,9 @@ void ExplicitPenaltyContactStrategy::UpdateBeforeResidual() {
   for (Node* node : contact->Nodes()) node->FastGetSolutionStepValue(WEIGHTED_GAP) = 0.0;
   updater_->ComputeWeightedGap(model_part_);
   ActiveSetUtilities::ComputePenaltyFrictionlessActiveSet(*contact);
-  active_nodes_ = static_cast<std::size_t>(
-      std::count_if(contact->Nodes().begin(), contact->Nodes().end(),
-                    [](const Node* node) { return node->Is(SLAVE) && node->Is(ACTIVE); }));
+  active_nodes_ =
+      static_cast<std::size_t>(std::count_if(contact->Nodes().begin(), contact->Nodes().end(),
+                                             [](const Node* node) { return node->Is(SLAVE) && node->Is(ACTIVE); }));
   model_part_.GetRootModelPart().Set(CONTACT, active_nodes_ > 0);
 }
 
@@ -73,7 +74,8 @@ double ExplicitPenaltyContactStrategy::ContactStableTimeStep(double element_time
     const double paired = node->Has(NODAL_AREA) ? node->GetValue(NODAL_AREA) : 0.0;
     const auto found = share.find(node);
     const double area = paired > 0.0 ? paired : (found != share.end() ? found->second : 0.0);
-    const double inverse_mass = 1.0 / node->GetValue(NODAL_MASS) + (std::isfinite(master_mass) ? 1.0 / master_mass : 0.0);
+    const double inverse_mass =
+        1.0 / node->GetValue(NODAL_MASS) + (std::isfinite(master_mass) ? 1.0 / master_mass : 0.0);
     omega_c2 = std::max(omega_c2, eps * area * area * inverse_mass);
   }
   return 2.0 / std::sqrt(omega_e * omega_e + omega_c2);
