@@ -85,6 +85,9 @@ class ContactMechanicalSolver(MechanicalSolver):
         if not self.dynamic:
             without_effect[("", "compute_dynamic_factor")] = ("the problem is static: the dynamic factor (the share of "
                                                               "a step a node spends in contact) needs velocities")
+        elif self.explicit:
+            without_effect[("", "compute_dynamic_factor")] = ("the explicit contact applies the full penalty force at "
+                                                              "every step (the steps are short next to the impact)")
         warn_about_keys_without_effect(settings["contact_settings"], contact_settings_defaults(), without_effect)
 
     def AddVariables(self) -> None:
