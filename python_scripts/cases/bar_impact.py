@@ -125,6 +125,35 @@ def write_case(out_dir: str, nx: int = NX, time_step: float | None = None, end_t
     return path
 
 
+def set_initial_velocities(root) -> None:
+    """VELOCITY +SPEED on the left bar, -SPEED on the right one (historical, current step): call it
+    after the analysis' Initialize."""
+    velocity = _variable("VELOCITY")
+    for bar, v in (("left", SPEED), ("right", -SPEED)):
+        for node in root.GetSubModelPart(bar).Nodes:
+            node.SetSolutionStepValue(velocity, [v, 0.0, 0.0])
+
+
+def bar_state(root) -> list[float]:
+    """[mean velocity (momentum / mass), kinetic energy, mass] of the left bar, then the right one,
+    from the lumped masses (NODAL_MASS) and the half-step velocities."""
+    import numpy as np
+
+    state = []
+    for bar in ("left", "right"):
+        nodes = root.GetSubModelPart(bar).Nodes
+        m = np.array([n.GetValue(_variable("NODAL_MASS")) for n in nodes])
+        v = np.array([n.GetSolutionStepValue(_variable("VELOCITY"))[0] for n in nodes])
+        state += [float(m @ v) / m.sum(), 0.5 * float(m @ v ** 2), float(m.sum())]
+    return state
+
+
+def _variable(name: str):
+    from .. import _core
+
+    return _core.GetVariable(name)
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--out", required=True)

@@ -20,9 +20,8 @@ V = mc.GetVariable
 
 
 class BarImpact(StructuralMechanicsAnalysis):
-    """Sets the bars' initial velocities (+v left, -v right) and records, after every step, the
-    time, the mean velocity (momentum / mass) and the kinetic energy of each bar, and the element
-    and contact critical time steps of the first step."""
+    """The bars' initial velocities, and after every step: time, the root's CONTACT flag,
+    bar_impact.bar_state (mean velocity, kinetic energy, mass of each bar) and DELTA_TIME."""
 
     def __init__(self, model, parameters):
         super().__init__(model, parameters)
@@ -30,21 +29,13 @@ class BarImpact(StructuralMechanicsAnalysis):
 
     def Initialize(self):
         super().Initialize()
-        root = self.model["Structure"]
-        for bar, v in (("left", bar_impact.SPEED), ("right", -bar_impact.SPEED)):
-            for node in root.GetSubModelPart(bar).Nodes:
-                node.SetSolutionStepValue(V("VELOCITY"), [v, 0.0, 0.0])
+        bar_impact.set_initial_velocities(self.model["Structure"])
 
     def FinalizeSolutionStep(self):
         super().FinalizeSolutionStep()
         root = self.model["Structure"]
-        row = [root.ProcessInfo.GetValue(V("TIME")), float(root.Is(mc.CONTACT))]
-        for bar in ("left", "right"):
-            nodes = root.GetSubModelPart(bar).Nodes
-            m = np.array([n.GetValue(V("NODAL_MASS")) for n in nodes])
-            v = np.array([n.GetSolutionStepValue(V("VELOCITY"))[0] for n in nodes])
-            row += [float(m @ v) / m.sum(), 0.5 * float(m @ v ** 2), m.sum()]
-        self.rows.append(row + [root.ProcessInfo.GetValue(V("DELTA_TIME"))])
+        self.rows.append([root.ProcessInfo.GetValue(V("TIME")), float(root.Is(mc.CONTACT)),
+                          *bar_impact.bar_state(root), root.ProcessInfo.GetValue(V("DELTA_TIME"))])
 
 
 def _run_bar(folder, **kwargs):
@@ -123,17 +114,19 @@ def _run_shared(steps=None):
 
 def test_shared_explicit_case(csma_cases, monkeypatch):
     """The shared explicit case (explicit_penalty_contact_process) runs unchanged to t = 2e-3 and
-    passes its own check. Kratos 10.4 does
-    not transmit contact there at all: once its first step finds every node open (the gap is 1e-5),
-    its explicit process stops updating the active set until the next search (database_step_update
-    10000), and the upper block passes through the lower one (node 2 at -1.99e-3, node 5 at -1.7e-9
-    at the end). Ours transmits it, with the automatic penalty E / h (2.1e11, Kratos' explicit rule) a
-    soft one on this one-element mesh: the penetration reaches 1.32e-3 (Kratos 10.4: 1.99e-3) and node
-    5 moves; the reference file (an older revision, whose penalty is not known) is 62 % away from ours
-    (1e13 and 1e14 as manual penalties: 4.3 % and 3.5 %)."""
+    passes its own check. The blocks overlap by 1e-5 at the start (node 2 of the upper block at
+    z 0.99999, node 5 of the lower one at 1) and the upper one is pushed down at 1 m/s. Kratos 10.4
+    transmits no contact: its CONTACT flag is cleared from step 2 on, and its explicit process
+    updates the weighted gap and the active set only while some node is active, so it never finds
+    one again before the next search (database_step_update 10000): node 2 ends at -1.99e-3, node 5
+    at -1.7e-9, a penetration of 2.0e-3 (benchmarks/kratos_cases/explicit_contact.py). Ours
+    transmits it, with the automatic penalty E / h (2.1e11, Kratos' explicit rule) a soft one on
+    this one-element mesh: the penetration reaches 1.34e-3 and node 5 moves; the reference file (an
+    older revision, whose penalty is not known) is 62 % away from ours (manual penalties 1e13, 3e13
+    and 1e14: 4.3 %, 2.0 % and 3.5 %)."""
     monkeypatch.chdir(csma_cases)
     rows = _run_shared()
     assert rows[-1, 0] == pytest.approx(2.0e-3, rel=1e-3)
-    penetration = (rows[:, 2] - 1.0e-5) - rows[:, 1]  # z gap of 1e-5 between nodes 2 and 5
-    assert penetration.max() < 0.7 * 1.99e-3
+    penetration = 1.0e-5 + rows[:, 2] - rows[:, 1]
+    assert penetration.max() < 0.7 * 2.0e-3
     assert rows[-1, 2] < -1.0e-4  # the lower block is pushed
