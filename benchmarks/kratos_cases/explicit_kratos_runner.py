@@ -15,7 +15,7 @@ import sys
 import time
 
 import KratosMultiphysics as KM
-import KratosMultiphysics.ContactStructuralMechanicsApplication  # noqa: F401 (registers the contact classes)
+import KratosMultiphysics.ContactStructuralMechanicsApplication  # registers the contact classes
 import KratosMultiphysics.StructuralMechanicsApplication as SMA
 from KratosMultiphysics.StructuralMechanicsApplication.structural_mechanics_analysis import StructuralMechanicsAnalysis
 

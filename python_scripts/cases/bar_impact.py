@@ -84,7 +84,7 @@ def write_case(out_dir: str, nx: int = NX, time_step: float | None = None, end_t
     STIFFNESS_RATIO times that between two end-node masses); default end: 1.5 times the contact
     duration."""
     os.makedirs(out_dir, exist_ok=True)
-    h, c = LENGTH / nx, wave_speed()
+    c = wave_speed()
     with open(os.path.join(out_dir, "bar_impact.mdpa"), "w") as f:
         f.write(_mdpa(nx))
     law = {"name": "LinearElastic3DLaw"}

@@ -89,7 +89,8 @@ class ALMContactProcess(SearchBaseProcess):
         self.normal_update = name.endswith(NORMAL_UPDATE)
         base = name[:-len(NORMAL_UPDATE)] if self.normal_update else name
         self.formulation = _core.ContactFormulation.OfProcess(
-            self.formulation_process or self.python_module, base, f"{self.python_module}: {contact_type.Where()} '{name}'")
+            self.formulation_process or self.python_module, base,
+            f"{self.python_module}: {contact_type.Where()} '{name}'")
         self.frictional = self.formulation.frictional
         if self.frictional and not self.settings["not_normal_update_frictional"].GetBool():
             self.normal_update = True

@@ -180,7 +180,8 @@ class ContactMechanicalSolver(MechanicalSolver):
         penalty = self.main_model_part.ProcessInfo.GetValue(_core.INITIAL_PENALTY)
         # Not divided by delta_time_factor_for_contact: the factor acts from the step after the
         # first contact, and the step on which a node closes is taken at the full time_step.
-        return min(dt, with_contact), f"{what}; with the contact penalty (INITIAL_PENALTY {penalty:.3g}) {with_contact:.3g}"
+        return (min(dt, with_contact),
+                f"{what}; with the contact penalty (INITIAL_PENALTY {penalty:.3g}) {with_contact:.3g}")
 
     def Initialize(self) -> None:
         super().Initialize()

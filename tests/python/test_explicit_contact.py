@@ -3,7 +3,6 @@ solver, the critical time step with the penalty, the bar impact against 1D wave 
 shared explicit case."""
 from __future__ import annotations
 
-import math
 import os
 
 import numpy as np
