@@ -111,6 +111,7 @@ class ContactMechanicalSolver(MechanicalSolver):
         s = self.settings
         part = self.GetComputingModelPart()
         if self.explicit:
+            self._check_explicit_on_one_process()
             self.mortar_updater = _core.ContactMortarUpdater()
             return _core.ExplicitPenaltyContactStrategy(part, _core.ExplicitCentralDifferencesScheme(),
                                                         self.mortar_updater,

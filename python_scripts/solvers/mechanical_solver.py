@@ -287,10 +287,7 @@ class MechanicalSolver:
     def _create_strategy(self):
         s = self.settings
         part = self.GetComputingModelPart()
-        if self.explicit and _core.LaunchedProcesses() > 1:
-            raise _core.NotImplementedFeatureError(
-                f"{s.Where()}.time_integration_method: explicit dynamics on {_core.LaunchedProcesses()} processes "
-                "(mpirun): it has no linear system to distribute; run it on one process")
+        self._check_explicit_on_one_process()
         linear_solver = _core.CreateLinearSolver(s["linear_solver_settings"])
         if self.explicit:
             return _core.ExplicitStrategy(part, _core.ExplicitCentralDifferencesScheme(),
@@ -321,6 +318,12 @@ class MechanicalSolver:
         strategy.SetStepSplitting(s["step_splitting"])
         strategy.SetSubStepCallbacks(*self.sub_step_callbacks)
         return strategy
+
+    def _check_explicit_on_one_process(self) -> None:
+        if self.explicit and _core.LaunchedProcesses() > 1:
+            raise _core.NotImplementedFeatureError(
+                f"{self.settings.Where()}.time_integration_method: explicit dynamics on {_core.LaunchedProcesses()} "
+                "processes (mpirun): it has no linear system to distribute; run it on one process")
 
     def _create_scheme(self, part):
         s = self.settings

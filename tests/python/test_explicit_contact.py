@@ -92,6 +92,14 @@ def test_critical_time_step_of_the_bar(tmp_path, capfd):
     assert f"{critical:.3g}" in err and f"{h / c:.3g}" in err
 
 
+def test_frictional_explicit_contact_is_not_implemented():
+    """Frictional explicit contact stops early, naming contact_type and the value given."""
+    from mortarcontact.contact_processes import ExplicitPenaltyContactProcess
+
+    with pytest.raises(mc.NotImplementedFeatureError, match=r"contact_type 'Frictional'.*frictional explicit"):
+        ExplicitPenaltyContactProcess(mc.Model(), mc.Parameters('{"contact_type": "Frictional"}'))
+
+
 def _run_shared(steps=None):
     case = "penalty_frictionless_contact_test_3D/explicit_3D_contact_simplest_patch_matching_test"
     params = read_project_parameters(os.path.join(CSMA_CASES, f"{case}_parameters.json"))
