@@ -16,6 +16,7 @@
 #include "custom_strategies/custom_convergencecriterias/penalty_frictional_mortar_criteria.h"
 #include "custom_strategies/custom_convergencecriterias/penalty_frictionless_mortar_criteria.h"
 #include "custom_strategies/custom_strategies/contact_mortar_updater.h"
+#include "custom_strategies/custom_strategies/explicit_penalty_contact_strategy.h"
 #include "custom_strategies/custom_strategies/line_search_contact_strategy.h"
 #include "custom_strategies/custom_strategies/residualbased_newton_raphson_contact_strategy.h"
 
@@ -188,6 +189,26 @@ void AddContactStrategiesToPython(py::module_& m) {
       .def("TableHeader", &MortarAndConvergenceCriteria::TableHeader,
            "Column titles of the convergence table for the current DoF set.")
       .def("LastTableRow", &MortarAndConvergenceCriteria::LastTableRow, "Cells of the last row of the table.");
+
+  py::class_<ExplicitPenaltyContactStrategy, ExplicitStrategy, std::shared_ptr<ExplicitPenaltyContactStrategy>>(
+      m, "ExplicitPenaltyContactStrategy",
+      "Explicit central differences with frictionless penalty mortar contact: normals, weighted gaps and the "
+      "penalty active set updated before every residual.")
+      .def(py::init([](ModelPart& part, std::shared_ptr<ExplicitCentralDifferencesScheme> scheme,
+                       std::shared_ptr<MortarUpdater> updater, bool compute_reactions, bool move_mesh, int echo_level) {
+             auto s = std::make_shared<ExplicitPenaltyContactStrategy>(part, std::move(scheme), std::move(updater),
+                                                                       compute_reactions, move_mesh);
+             s->SetEchoLevel(echo_level);
+             return s;
+           }),
+           py::arg("model_part"), py::arg("scheme"), py::arg("mortar_updater"), py::arg("compute_reactions") = true,
+           py::arg("move_mesh") = true, py::arg("echo_level") = 0, py::keep_alive<1, 2>(),
+           "Kratos' solver_settings of the same names (move_mesh: move_mesh_flag).")
+      .def("ContactStableTimeStep", &ExplicitPenaltyContactStrategy::ContactStableTimeStep,
+           py::arg("element_time_step"),
+           "Critical time step with the penalty springs of the slave nodes: 2 / sqrt(omega_e^2 + max_j eps_j A_j^2 "
+           "(1/m_j + 1/m_master)).")
+      .def("ActiveNodes", &ExplicitPenaltyContactStrategy::ActiveNodes, "Slave nodes ACTIVE after the last update.");
 
   using ContactNewton = ResidualBasedNewtonRaphsonContactStrategy;
   py::class_<ContactNewton, NewtonRaphsonStrategy, std::shared_ptr<ContactNewton>>(

@@ -304,7 +304,10 @@ void AddSolvingToPython(py::module_& m) {
            }),
            py::arg("model_part"), py::arg("scheme"), py::arg("compute_reactions") = true,
            py::arg("reform_dofs_at_each_step") = false, py::arg("move_mesh") = true, py::arg("echo_level") = 0,
-           py::keep_alive<1, 2>(), "Kratos' solver_settings of the same names (move_mesh: move_mesh_flag).");
+           py::keep_alive<1, 2>(), "Kratos' solver_settings of the same names (move_mesh: move_mesh_flag).")
+      .def("ElementStableTimeStep", &ExplicitStrategy::ElementStableTimeStep,
+           "Critical time step of central differences bounded element by element: 2 / omega_e, omega_e^2 the "
+           "largest eigenvalue of M_e^-1 K_e (lumped mass); infinity without stiffness.");
 }
 
 }  // namespace mc::python

@@ -37,7 +37,10 @@ void ExplicitCentralDifferencesScheme::Advance(ModelPart& model_part, const Dofs
   const double dt = model_part.GetProcessInfo().GetValue(DELTA_TIME);
   if (!(dt > 0.0))
     throw InputError(Concat(Name(), " scheme: DELTA_TIME = ", dt, " must be positive (check time_stepping)"));
-  const double velocity_step = started_ ? dt : 0.5 * dt;
+  // v_{n+1/2} = v_{n-1/2} + (dt_{n-1/2} + dt_{n+1/2}) / 2 a_n: the time between the two half-step
+  // velocities. Taking dt_{n+1/2} alone gains energy wherever the step changes (the explicit contact
+  // halves it while in contact: 11 % more kinetic energy after the bar impact).
+  const double velocity_step = started_ ? 0.5 * (previous_dt_ + dt) : 0.5 * dt;
   const long n = static_cast<long>(dofs.size());
   std::exception_ptr error;
 #pragma omp parallel for schedule(static) if (n >= kMinParallelDofs)
@@ -65,6 +68,7 @@ void ExplicitCentralDifferencesScheme::Advance(ModelPart& model_part, const Dofs
   }
   if (error) std::rethrow_exception(error);
   started_ = true;
+  previous_dt_ = dt;
 }
 
 }  // namespace mc

@@ -7,7 +7,7 @@ namespace mc {
 
 /// Explicit central differences with a lumped mass (half-step velocities): at each step
 ///   acc_n = (f_ext - f_int)(u_n) / m - alpha v_{n-1/2},
-///   v_{n+1/2} = v_{n-1/2} + dt acc_n   (first step: v_{1/2} = v_0 + dt/2 acc_0),
+///   v_{n+1/2} = v_{n-1/2} + (dt_{n-1/2} + dt_{n+1/2}) / 2 acc_n   (first step: v_{1/2} = v_0 + dt/2 acc_0),
 ///   u_{n+1} = u_n + dt v_{n+1/2}.
 /// VELOCITY holds the half-step velocity v_{n+1/2}, ACCELERATION acc_n. The mass-proportional
 /// Rayleigh coefficient alpha is lagged by half a step; stiffness-proportional damping (beta)
@@ -31,6 +31,7 @@ class ExplicitCentralDifferencesScheme : public Scheme {
  private:
   double rayleigh_alpha_;
   bool started_ = false;
+  double previous_dt_ = 0.0;  ///< dt_{n-1/2}, the step that produced v_{n-1/2}
 };
 
 }  // namespace mc

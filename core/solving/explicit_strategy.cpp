@@ -1,6 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "core/solving/explicit_strategy.h"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <Eigen/Eigenvalues>
+
 #include "core/model/model_part.h"
 #include "core/model/parallel_utilities.h"
 #include "core/variables/kernel_variables.h"
@@ -64,6 +70,7 @@ void ExplicitStrategy::InitializeSolutionStep() {
 
 bool ExplicitStrategy::SolveSolutionStep() {
   scheme_->InitializeNonLinIteration(model_part_);
+  UpdateBeforeResidual();
   builder_.BuildRHS(*scheme_, model_part_);
   scheme_->Advance(model_part_, builder_.GetDofSet(), builder_.Residual(), mass_);
   if (move_mesh_) MoveMesh();
@@ -80,6 +87,25 @@ void ExplicitStrategy::FinalizeSolutionStep() {
 void ExplicitStrategy::Clear() {
   builder_.Clear();
   dofs_ready_ = false;
+}
+
+double ExplicitStrategy::ElementStableTimeStep() const {
+  const ProcessInfo& info = model_part_.GetProcessInfo();
+  double omega2 = 0.0;
+  for (Element* e : model_part_.Elements()) {
+    if (!e->IsActive()) continue;
+    Matrix stiffness, mass;
+    e->CalculateLeftHandSide(stiffness, info);
+    e->CalculateMassMatrix(mass, info);
+    if (stiffness.size() == 0 || mass.rows() != stiffness.rows()) continue;
+    const Vector lumped = mass.rowwise().sum();
+    if (!(lumped.minCoeff() > 0.0)) continue;
+    const Vector scale = lumped.cwiseSqrt().cwiseInverse();
+    const Matrix scaled = scale.asDiagonal() * (0.5 * (stiffness + stiffness.transpose())) * scale.asDiagonal();
+    const Eigen::SelfAdjointEigenSolver<Matrix> eigen(scaled, Eigen::EigenvaluesOnly);
+    omega2 = std::max(omega2, eigen.eigenvalues().maxCoeff());
+  }
+  return omega2 > 0.0 ? 2.0 / std::sqrt(omega2) : std::numeric_limits<double>::infinity();
 }
 
 void ExplicitStrategy::Check() const { scheme_->Check(model_part_); }

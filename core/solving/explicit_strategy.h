@@ -33,6 +33,20 @@ class ExplicitStrategy : public SolvingStrategy {
   const Vector& LumpedMass() const noexcept { return mass_; }
   const BuilderAndSolver& GetBuilderAndSolver() const noexcept { return builder_; }
 
+  /// The critical time step of central differences bounded element by element: 2 / omega_e,
+  /// omega_e^2 the largest eigenvalue of M_e^-1 K_e with each element's stiffness at the current
+  /// state and its lumped (row-sum) mass. The largest frequency of the assembled mesh never
+  /// exceeds the largest element frequency (Irons' bound), so a time step below this one is
+  /// stable for the elements; for a hexahedron of edge h it is about h / c with the dilatational
+  /// wave speed c. Elements without a mass of their own (a spring between mass elements) are not
+  /// bounded; infinity when none is.
+  double ElementStableTimeStep() const;
+
+ protected:
+  /// Called at the start of every step's residual, at u_n (after the boundary conditions of the
+  /// step are imposed): the explicit contact strategy updates the contact state here.
+  virtual void UpdateBeforeResidual() {}
+
  private:
   void SetUpDofsAndMass();
 

@@ -3,8 +3,9 @@ under their module by the process factory."""
 from __future__ import annotations
 
 from .alm_contact_process import ALMContactProcess
+from .explicit_penalty_contact_process import ExplicitPenaltyContactProcess
 from .mesh_tying_process import MeshTyingProcess
-from .not_implemented_processes import ExplicitPenaltyContactProcess, MPCContactProcess
+from .not_implemented_processes import MPCContactProcess
 from .penalty_contact_process import PenaltyContactProcess
 
 CONTACT_MODULE = "ContactStructuralMechanicsApplication"

@@ -28,7 +28,8 @@ ELEMENTAL_DERIVATIVES_RUN_AS_NODAL = (
     "tangent of a residual built on the averaged nodal normals; the exact derivative of those costs the same and "
     "keeps Newton quadratic")
 _FRICTIONAL = "only the frictional formulations (contact_type Frictional*) read it"
-_EXPLICIT = "only the explicit penalty process reads it, and it is not implemented"
+_EXPLICIT = ("Kratos' explicit process feeds it (MAX_GAP_THRESHOLD) to its dynamic factor only; the explicit "
+             "contact here applies the full penalty force at every step")
 #: Read by the frictional formulations only: without effect on the frictionless ones.
 FRICTIONAL_KEYS_WITHOUT_EFFECT = {
     ("", "friction_coefficients"): "FRICTION_COEFFICIENT goes to the pair properties, but " + _FRICTIONAL,
@@ -72,6 +73,8 @@ class ALMContactProcess(SearchBaseProcess):
     and runs the search each ``database_step_update`` steps inside ``interval``."""
 
     python_module = "alm_contact_process"
+    #: the process the formulations are registered under, when not python_module
+    formulation_process = None
     penalty_multiplier = 1.0
     penalty_floor = 1.0
     pure_slip = False  # decided at ExecuteInitialize, once the interface coefficients are known
@@ -86,7 +89,8 @@ class ALMContactProcess(SearchBaseProcess):
         self.normal_update = name.endswith(NORMAL_UPDATE)
         base = name[:-len(NORMAL_UPDATE)] if self.normal_update else name
         self.formulation = _core.ContactFormulation.OfProcess(
-            self.python_module, base, f"{self.python_module}: {contact_type.Where()} '{name}'")
+            self.formulation_process or self.python_module, base,
+            f"{self.python_module}: {contact_type.Where()} '{name}'")
         self.frictional = self.formulation.frictional
         if self.frictional and not self.settings["not_normal_update_frictional"].GetBool():
             self.normal_update = True

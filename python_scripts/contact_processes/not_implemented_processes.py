@@ -1,29 +1,10 @@
-"""Contact processes whose settings are validated with their exact defaults (spec 4.6-4.8) but
-whose formulation arrives with later issues: explicit penalty, MPC contact."""
+"""Contact processes whose settings are validated with their exact defaults (spec 4.7) but whose
+formulation arrives with later issues: MPC contact."""
 from __future__ import annotations
 
 from .. import _core
 from . import _settings
 from .search_base_process import NotImplementedContactProcess
-
-
-class ExplicitPenaltyContactProcess(NotImplementedContactProcess):
-    python_module = "explicit_penalty_contact_process"
-    feature = "explicit penalty contact (solver_type explicit)"
-
-    @classmethod
-    def GetDefaultParameters(cls) -> _core.Parameters:
-        defaults = _settings.alm_defaults()
-        defaults["tangent_factor"] = 1.0e-4
-        defaults["search_parameters"]["type_search"] = "octree_with_obb"
-        defaults["advance_ALM_parameters"]["penalty"] = 1.0e16
-        defaults["advance_ALM_parameters"]["max_gap_factor"] = 1.0e-3
-        return _settings.to_parameters(defaults)
-
-    def __init__(self, model, settings=None):
-        settings = self._normalised(settings)
-        settings.RecursivelyValidateAndAssignDefaults(self.GetDefaultParameters())
-        raise _core.NotImplementedFeatureError(f"{self.python_module}: {self.feature} is not implemented yet")
 
 
 class MPCContactProcess(NotImplementedContactProcess):

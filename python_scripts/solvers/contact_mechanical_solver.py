@@ -43,7 +43,6 @@ KEYS_WITHOUT_EFFECT = {
     ("", "inner_loop_adaptive"): "the time step is not divided by the inner-loop count (INNER_LOOP_ITERATION)",
     ("", "fallback_if_dual_lm_not_valid"): "no fallback from the dual multipliers is implemented (the key comes "
                                            "from a secondary reference only)",
-    ("", "delta_time_factor_for_contact"): "only the explicit contact solver reads it, and it is not implemented",
     **{("mixed_ulm_solver_parameters", key): "the condensed system is solved by the solver of "
                                              "linear_solver_settings, with its own settings"
        for key in ("tolerance", "max_iteration_number", "echo_level")},
@@ -68,16 +67,27 @@ class ContactMechanicalSolver(MechanicalSolver):
     def __init__(self, model, settings, **kwargs):
         mortar_type = settings["contact_settings"]["mortar_type"]
         self.formulation = _core.ContactFormulation.Get(mortar_type.GetString(), mortar_type.Where())
-        # The DoF set follows the contact pairs, which change from step to step.
+        # The DoF set follows the contact pairs, which change from step to step (the explicit penalty
+        # strategy keeps the elements' DoFs and lumped mass: penalty contact adds no DoFs).
         settings["clear_storage"].SetBool(True)
         settings["reform_dofs_at_each_step"].SetBool(True)
         super().__init__(model, settings, **kwargs)
+        if self.explicit and (self.formulation.multiplier_blocks != 0 or self.formulation.frictional):
+            mortar_type = settings["contact_settings"]["mortar_type"]
+            raise _core.NotImplementedFeatureError(
+                f"{mortar_type.Where()}: explicit contact with \"{mortar_type.GetString()}\" is not implemented; the "
+                "explicit solver runs \"PenaltyContactFrictionless\" (explicit_penalty_contact_process)")
         without_effect = dict(KEYS_WITHOUT_EFFECT)
         if self.formulation.multiplier_blocks != 3:
             without_effect.update(FRICTIONAL_KEYS_WITHOUT_EFFECT)
+        if not self.explicit:
+            without_effect[("", "delta_time_factor_for_contact")] = "only the explicit contact solver reads it"
         if not self.dynamic:
             without_effect[("", "compute_dynamic_factor")] = ("the problem is static: the dynamic factor (the share of "
                                                               "a step a node spends in contact) needs velocities")
+        elif self.explicit:
+            without_effect[("", "compute_dynamic_factor")] = ("the explicit contact applies the full penalty force at "
+                                                              "every step (the steps are short next to the impact)")
         warn_about_keys_without_effect(settings["contact_settings"], contact_settings_defaults(), without_effect)
 
     def AddVariables(self) -> None:
@@ -101,8 +111,13 @@ class ContactMechanicalSolver(MechanicalSolver):
         s = self.settings
         part = self.GetComputingModelPart()
         if self.explicit:
-            raise _core.NotImplementedFeatureError(
-                f"{s.Where()}: explicit contact solvers are not implemented yet")
+            self._check_explicit_on_one_process()
+            self.mortar_updater = _core.ContactMortarUpdater()
+            return _core.ExplicitPenaltyContactStrategy(part, _core.ExplicitCentralDifferencesScheme(),
+                                                        self.mortar_updater,
+                                                        compute_reactions=s["compute_reactions"].GetBool(),
+                                                        move_mesh=s["move_mesh_flag"].GetBool(),
+                                                        echo_level=self.echo_level)
         if s["step_splitting"].size() > 0:
             raise _core.InputError(f"{s.Where()}.step_splitting: the contact solvers split steps with Kratos' "
                                    "contact_settings keys adaptative_strategy, split_factor and max_number_splits")
@@ -151,6 +166,23 @@ class ContactMechanicalSolver(MechanicalSolver):
             warn(f"{mixed.Where()}.solver_type: \"{mixed['solver_type'].GetString()}\" is not "
                  "\"mixed_ulm_linear_solver\": the contact system is solved without condensation")
         return linear_solver
+
+    def ComputeDeltaTime(self, time: float) -> float:
+        """Explicit: the time step times delta_time_factor_for_contact while the last step had a
+        node in contact (the model part's CONTACT flag, set by the explicit strategy), as Kratos."""
+        dt = super().ComputeDeltaTime(time)
+        if self.explicit and self.main_model_part.Is(_core.CONTACT):
+            dt *= self.settings["contact_settings"]["delta_time_factor_for_contact"].GetDouble()
+        return dt
+
+    def critical_time_step(self) -> tuple[float, str]:
+        dt, what = super().critical_time_step()
+        with_contact = self.strategy.ContactStableTimeStep(dt)
+        penalty = self.main_model_part.ProcessInfo.GetValue(_core.INITIAL_PENALTY)
+        # Not divided by delta_time_factor_for_contact: the factor acts from the step after the
+        # first contact, and the step on which a node closes is taken at the full time_step.
+        return (min(dt, with_contact),
+                f"{what}; with the contact penalty (INITIAL_PENALTY {penalty:.3g}) {with_contact:.3g}")
 
     def Initialize(self) -> None:
         super().Initialize()

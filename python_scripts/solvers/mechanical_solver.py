@@ -9,7 +9,7 @@ import os
 from .. import _core
 from ..processes.model_part_resolution import resolve_model_part
 from ..restart import Checkpoint, mesh_record, restart_file_name, restart_folder
-from ..utilities import nearest
+from ..utilities import nearest, warn
 from .convergence_history import ConvergenceHistory
 from .mesh_checks import check_imported_mesh
 from .meshio_import import GROUP_KEYS as MESHIO_KEYS
@@ -50,6 +50,7 @@ class MechanicalSolver:
         self.mesh_record = None  # the mesh file and its import settings, for checkpoints
         self.mesh_path = None  # the mesh file read, named in errors about its entities
         self.sub_step_callbacks = (None, None)
+        self._time_step_checked = False
         self.convergence_history = ConvergenceHistory.from_settings(settings["convergence_history"])
         self.AddVariables()
 
@@ -286,10 +287,7 @@ class MechanicalSolver:
     def _create_strategy(self):
         s = self.settings
         part = self.GetComputingModelPart()
-        if self.explicit and _core.LaunchedProcesses() > 1:
-            raise _core.NotImplementedFeatureError(
-                f"{s.Where()}.time_integration_method: explicit dynamics on {_core.LaunchedProcesses()} processes "
-                "(mpirun): it has no linear system to distribute; run it on one process")
+        self._check_explicit_on_one_process()
         linear_solver = _core.CreateLinearSolver(s["linear_solver_settings"])
         if self.explicit:
             return _core.ExplicitStrategy(part, _core.ExplicitCentralDifferencesScheme(),
@@ -320,6 +318,12 @@ class MechanicalSolver:
         strategy.SetStepSplitting(s["step_splitting"])
         strategy.SetSubStepCallbacks(*self.sub_step_callbacks)
         return strategy
+
+    def _check_explicit_on_one_process(self) -> None:
+        if self.explicit and _core.LaunchedProcesses() > 1:
+            raise _core.NotImplementedFeatureError(
+                f"{self.settings.Where()}.time_integration_method: explicit dynamics on {_core.LaunchedProcesses()} "
+                "processes (mpirun): it has no linear system to distribute; run it on one process")
 
     def _create_scheme(self, part):
         s = self.settings
@@ -397,6 +401,25 @@ class MechanicalSolver:
 
     def InitializeSolutionStep(self) -> None:
         self.strategy.InitializeSolutionStep()
+        if self.explicit and not self._time_step_checked:
+            self._time_step_checked = True  # once the lumped masses exist
+            self._check_time_step()
+
+    def critical_time_step(self) -> tuple[float, str]:
+        """Explicit: the largest stable time step and how it was estimated (the elements' bound)."""
+        dt = self.strategy.ElementStableTimeStep()
+        return dt, f"elements (2 / omega_max, element by element) {dt:.3g}"
+
+    def _check_time_step(self) -> None:
+        """Central differences diverge above 2 / omega_max: say so before the run blows up."""
+        stepping = self.settings["time_stepping"]
+        if not stepping.Has("time_step"):
+            return
+        time_step = stepping["time_step"].GetDouble()
+        critical, how = self.critical_time_step()
+        if time_step > critical:
+            warn(f"{stepping.Where()}.time_step = {time_step:g} exceeds the critical time step of central differences "
+                 f"{critical:.3g} ({how}): the explicit solution will diverge")
 
     def Predict(self) -> None:
         self.strategy.Predict()

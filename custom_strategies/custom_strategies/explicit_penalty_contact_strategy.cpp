@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "custom_strategies/custom_strategies/explicit_penalty_contact_strategy.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <unordered_map>
+
+#include "core/model/model_part.h"
+#include "core/variables/kernel_variables.h"
+#include "custom_utilities/active_set_utilities.h"
+#include "custom_utilities/contact_variables.h"
+
+namespace mc {
+
+namespace {
+ModelPart* ContactPart(ModelPart& model_part) {
+  ModelPart& root = model_part.GetRootModelPart();
+  return root.HasSubModelPart("Contact") ? &root.GetSubModelPart("Contact") : nullptr;
+}
+}  // namespace
+
+ExplicitPenaltyContactStrategy::ExplicitPenaltyContactStrategy(ModelPart& model_part,
+                                                               std::shared_ptr<ExplicitCentralDifferencesScheme> scheme,
+                                                               std::shared_ptr<MortarUpdater> updater,
+                                                               bool compute_reactions, bool move_mesh_flag)
+    // Penalty contact adds no DoFs: the DoF set and the lumped mass stay those of the elements.
+    : ExplicitStrategy(model_part, std::move(scheme), compute_reactions, false, move_mesh_flag),
+      updater_(std::move(updater)) {
+  if (!updater_) throw Error("the explicit penalty contact strategy needs a mortar updater");
+}
+
+void ExplicitPenaltyContactStrategy::Initialize() {
+  ExplicitStrategy::Initialize();
+  // The contact processes set CONTACT when they build the interface; Kratos then takes its first
+  // step with delta_time_factor_for_contact although nothing touches yet.
+  model_part_.GetRootModelPart().Set(CONTACT, false);
+}
+
+void ExplicitPenaltyContactStrategy::UpdateBeforeResidual() {
+  ModelPart* contact = ContactPart(model_part_);
+  if (!contact) return;
+  updater_->UpdateNormals(model_part_);
+  for (Node* node : contact->Nodes()) node->FastGetSolutionStepValue(WEIGHTED_GAP) = 0.0;
+  updater_->ComputeWeightedGap(model_part_);
+  ActiveSetUtilities::ComputePenaltyFrictionlessActiveSet(*contact);
+  active_nodes_ =
+      static_cast<std::size_t>(std::count_if(contact->Nodes().begin(), contact->Nodes().end(),
+                                             [](const Node* node) { return node->Is(SLAVE) && node->Is(ACTIVE); }));
+  model_part_.GetRootModelPart().Set(CONTACT, active_nodes_ > 0);
+}
+
+double ExplicitPenaltyContactStrategy::ContactStableTimeStep(double element_time_step) const {
+  ModelPart* contact = ContactPart(const_cast<ModelPart&>(model_part_));
+  const double omega_e = 2.0 / element_time_step;
+  if (!contact) return element_time_step;
+  const ProcessInfo& info = model_part_.GetProcessInfo();
+  // Each slave node's share of the slave faces, for nodes not paired yet.
+  std::unordered_map<const Node*, double> share;
+  for (Condition* face : contact->Conditions()) {
+    if (!face->Is(SLAVE)) continue;
+    const Geometry& geometry = face->GetGeometry();
+    const double part = geometry.DomainSize() / static_cast<double>(geometry.PointsNumber());
+    for (const Node* node : geometry.Nodes()) share[node] += part;
+  }
+  double master_mass = std::numeric_limits<double>::infinity();
+  for (const Node* node : contact->Nodes())
+    if (node->Is(MASTER) && node->Has(NODAL_MASS) && node->GetValue(NODAL_MASS) > 0.0)
+      master_mass = std::min(master_mass, node->GetValue(NODAL_MASS));
+  double omega_c2 = 0.0;
+  for (const Node* node : contact->Nodes()) {
+    if (!node->Is(SLAVE) || !node->Has(NODAL_MASS) || !(node->GetValue(NODAL_MASS) > 0.0)) continue;
+    const double eps = node->Has(INITIAL_PENALTY) ? node->GetValue(INITIAL_PENALTY) : info.GetValue(INITIAL_PENALTY);
+    const double paired = node->Has(NODAL_AREA) ? node->GetValue(NODAL_AREA) : 0.0;
+    const auto found = share.find(node);
+    const double area = paired > 0.0 ? paired : (found != share.end() ? found->second : 0.0);
+    const double inverse_mass =
+        1.0 / node->GetValue(NODAL_MASS) + (std::isfinite(master_mass) ? 1.0 / master_mass : 0.0);
+    omega_c2 = std::max(omega_c2, eps * area * area * inverse_mass);
+  }
+  return 2.0 / std::sqrt(omega_e * omega_e + omega_c2);
+}
+
+}  // namespace mc
