@@ -275,7 +275,14 @@ bool ExactMortarIntegrationUtility<TDim, TNumNodes, TNumNodesMaster>::Compute(co
         const bool in_prev = inside(prev);
         if (in_cur != in_prev) {
           assert(n_next < kCapacity);
-          const T s = dist[prev] / (dist[prev] - dist[k]);
+          // The tolerance can call inside a vertex just outside the edge's line: then both lie on
+          // its outer side and the line's crossing is beyond the segment (s < 0 or s > 1; a
+          // master edge nearly along the slave edge put it 100 element lengths away and doubled
+          // the overlap of the friction block's edge element). The crossing is then the vertex in
+          // the tolerance band itself.
+          T s = dist[prev] / (dist[prev] - dist[k]);
+          if (ValueOf(s) < 0.0) s = T(0.0);
+          if (ValueOf(s) > 1.0) s = T(1.0);
           next[n_next++] = poly[prev] + s * (poly[k] - poly[prev]);
         }
         if (in_cur) {

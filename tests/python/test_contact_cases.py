@@ -224,17 +224,52 @@ def test_frictional_case(csma_cases, monkeypatch, case):
 #   bottom reaction is (+594, 576276, 0) N with mu = 0.1 and (-3.2, 577530, 0) N with mu = 0, where
 #   every slave node slides and Coulomb alone gives 0.1 x 576 kN = 58 kN along x; it stops at t =
 #   0.19 (a structurally singular matrix). Our mu = 0 run matches its mu = 0 run to 1.3e-3 of the
-#   largest value of each component (node 4: REACTION_X -61.3 in both), although its first step
-#   stops at max_iteration (10; Kratos 5), to investigate.
+#   largest value of each component (node 4: REACTION_X -61.3 in both). Its first step took 10
+#   iterations (max_iteration; Kratos 5), and with mu = 0.01 it did not converge: the slave's edge
+#   at z = 0.125 lies on the master's to 1e-13, and an iterate in which they crossed at a tiny
+#   angle clipped the edge element's overlap to twice its area (test_exact_integration.cpp,
+#   NearlyCoincidentCrossingEdges). Now 6 and 5 iterations (test_friction_block_first_step).
 # - The reference file (an older revision) transmits some: -22.7 kN (node 4: -74.0); ours -54.6 kN
 #   (node 4: -123.7), 0.089 of the normal reaction, the rest being the lower block's inertia.
 # So the test runs the case to its first check (t = 0.1) and holds ours to Coulomb's law, which
 # has a closed form at every slipping node: |k lambda_t| = mu |lbar_n|.
-# Not checked: the direction of the tangential multiplier. With slip_augmentation_coefficient 0
-# (the default) the slip constraint k lambda_t = b lbar_t / |lbar_t| only fixes its magnitude in
-# 3D; at the edge nodes it leans up to 71 degrees out of the sliding direction x (symmetrically,
-# so that the total is along x), and the Jacobian is singular in that direction.
+# The direction of the tangential multiplier is not right yet (test_friction_block_traction_opposes_slip).
 FRICTION_BLOCK = "ALM_frictional_contact_test_3D/friction_block_test"
+
+
+def friction_block(end_time: float, friction: float | None = None, folder: str = "") -> StructuralMechanicsAnalysis:
+    """The friction block run to end_time (its json check left out), with FRICTION_COEFFICIENT
+    `friction` in both materials (a copy of the materials file in `folder`) when given."""
+    params = read_project_parameters(os.path.join(CSMA_CASES, f"{FRICTION_BLOCK}_parameters.json"))
+    params["problem_data"]["end_time"].SetDouble(end_time)
+    params["processes"].RemoveValue("json_check_process")  # checks the reference file at t = 0.1
+    if friction is not None:
+        materials_setting = params["solver_settings"]["material_import_settings"]["materials_filename"]
+        with open(os.path.join(CSMA_CASES, materials_setting.GetString())) as f:
+            materials = json.load(f)
+        for entry in materials["properties"]:
+            entry["Material"]["Variables"]["FRICTION_COEFFICIENT"] = friction
+        materials_setting.SetString(os.path.join(folder, "materials.json"))
+        with open(materials_setting.GetString(), "w") as f:
+            json.dump(materials, f)
+    analysis = StructuralMechanicsAnalysis(mc.Model(), params, progress=False)
+    analysis.Run()
+    return analysis
+
+
+def tangential_tractions(analysis) -> list[tuple[int, np.ndarray, np.ndarray]]:
+    """(id, k lambda_t, weighted slip) of every slave node."""
+    part = analysis.model["Structure"]
+    k = part.ProcessInfo.GetValue(mc.GetVariable("SCALE_FACTOR"))
+    rows = []
+    for node in part.Nodes:
+        if not node.Is(mc.SLAVE):
+            continue
+        normal = np.array(node.GetSolutionStepValue(mc.GetVariable("NORMAL")))
+        lm = np.array(node.GetSolutionStepValue(mc.GetVariable("VECTOR_LAGRANGE_MULTIPLIER")))
+        slip = np.array(node.GetSolutionStepValue(mc.GetVariable("WEIGHTED_SLIP")))
+        rows.append((node.Id, k * (lm - normal.dot(lm) * normal), slip))
+    return rows
 
 
 def test_friction_block(csma_cases, monkeypatch):
@@ -242,11 +277,7 @@ def test_friction_block(csma_cases, monkeypatch):
     iterations (Kratos 10.4: 3 to 5), every slave node slides, and its tangential multiplier is at
     the Coulomb limit mu |lbar_n| to 1e-5 and opposes the sliding."""
     monkeypatch.chdir(csma_cases)
-    params = read_project_parameters(os.path.join(CSMA_CASES, f"{FRICTION_BLOCK}_parameters.json"))
-    params["problem_data"]["end_time"].SetDouble(0.1)
-    params["processes"].RemoveValue("json_check_process")  # checks the reference file at t = 0.1
-    analysis = StructuralMechanicsAnalysis(mc.Model(), params, progress=False)
-    analysis.Run()
+    analysis = friction_block(0.1)
     iterations = [it for _, _, it, _, _ in analysis.step_log]
     assert len(iterations) == 20 and all(converged for _, _, _, converged, _ in analysis.step_log)
     assert max(iterations) <= 4
@@ -261,6 +292,32 @@ def test_friction_block(csma_cases, monkeypatch):
         limit = 0.1 * abs(node.GetValue(mc.GetVariable("AUGMENTED_NORMAL_CONTACT_PRESSURE")))
         assert np.linalg.norm(tangential) == pytest.approx(limit, rel=1e-5), node.Id
         assert tangential[0] < -0.3 * limit, node.Id  # the master drags the slave back along -x
+
+
+@pytest.mark.parametrize("friction, most", [(0.0, 6), (0.01, 5)])
+def test_friction_block_first_step(csma_cases, monkeypatch, tmp_path, friction, most):
+    """The friction block's first step (t = 0.005) with little or no friction converges in a
+    handful of iterations (Kratos 10.4, mu = 0: 5); before the clipping of nearly coincident
+    crossing edges was fixed, 10 (max_iteration) and not converged."""
+    monkeypatch.chdir(csma_cases)
+    analysis = friction_block(0.005, friction, str(tmp_path))
+    (_, _, iterations, converged, _), = analysis.step_log
+    assert converged and iterations <= most
+
+
+@pytest.mark.xfail(strict=True, reason="the slip direction is not tied to the slip (issue 12): with "
+                   "slip_augmentation_coefficient 0 the slip constraint fixes only |k lambda_t|, and the "
+                   "converged first step has a node whose tangential multiplier points along its slip (180 "
+                   "degrees from opposing it; 71 degrees at t = 0.1)")
+def test_friction_block_traction_opposes_slip(csma_cases, monkeypatch):
+    """Coulomb's law in direction: at every sliding node of the first step the tangential
+    multiplier lies within 10 degrees of the weighted slip s (s = -D a for a slave sliding by a, so
+    k lambda_t along s is the friction opposing the sliding)."""
+    monkeypatch.chdir(csma_cases)
+    analysis = friction_block(0.005)
+    for node_id, traction, slip in tangential_tractions(analysis):
+        cosine = traction.dot(slip) / (np.linalg.norm(traction) * np.linalg.norm(slip))
+        assert cosine >= math.cos(math.radians(10.0)), node_id
 
 
 def run_hertz(kind: str, size: str, folder: str) -> dict:

@@ -349,6 +349,49 @@ TEST(ExactMortarIntegration, AlignedSharedAndCoincidentQuadrilaterals) {
 // (3d_hex_flat_r0.5_overhang-none_gap_disp_4steps_fric_mu0.3_shift, step 7, third iteration, after a
 // Newton step of |r_u|^2/|r_u0|^2 = 6e20): its master face, 1 in size where it was 0.2, is folded
 // seen along the slave normal. The error says so instead of integrating a wrong area.
+// The friction block's edge element (ALM_frictional_contact_test_3D/friction_block_test, step 1):
+// the slave edge 1-4 lies on the master edge 1-4 (z = 0.125) to 1e-13 and, in one Newton
+// iterate, crosses it at a tiny angle. A vertex within the clipping tolerance of the slave edge
+// counted as inside while its neighbour did not, both on the outer side of the edge's line, and
+// their "crossing" was extrapolated far beyond them: the overlap came out 1.48e-2 (twice the
+// element), with a negative nodal area. Now the same as for the iterate before (the edges do not
+// cross there) and as the covered rectangle.
+TEST(ExactMortarIntegration, NearlyCoincidentCrossingEdges) {
+  const auto before = Rows<K44::SlaveMatrix>({-2.817465125852273e-04, 2.499693943279183e-01, 1.250000000000586e-01,
+                                              -2.630061137091091e-04, 2.499699878096750e-01, -1.542024951517003e-04,
+                                              5.605053944673730e-02, 2.499723725580025e-01, -1.450441754659543e-04,
+                                              5.603936222432041e-02, 2.499716596749598e-01, 1.250000000003177e-01});
+  const auto crossing = Rows<K44::SlaveMatrix>({-2.817465135257619e-04, 2.499693943279395e-01, 1.249999999999033e-01,
+                                                -2.630061143427401e-04, 2.499699878096754e-01, -1.542024951187964e-04,
+                                                5.605053944613806e-02, 2.499723725580116e-01, -1.450441754555893e-04,
+                                                5.603936222344305e-02, 2.499716596749339e-01, 1.250000000001807e-01});
+  const auto master_before = Rows<K44::MasterMatrix>(
+      {-1.708552352690099e-05, 2.499694047566575e-01, 1.250000000000000e-01, -1.693713127056040e-05,
+       2.499699972767907e-01, 0.000000000000000e+00, 8.887625398904693e-02, 2.499736787279011e-01,
+       0.000000000000000e+00, 8.887622339930927e-02, 2.499729053698445e-01, 1.250000000000000e-01});
+  const auto master = Rows<K44::MasterMatrix>({-1.708552350238575e-05, 2.499694047566788e-01, 1.250000000000000e-01,
+                                               -1.693713126678115e-05, 2.499699972767911e-01, 0.000000000000000e+00,
+                                               8.887625398905492e-02, 2.499736787279142e-01, 0.000000000000000e+00,
+                                               8.887622339932208e-02, 2.499729053698506e-01, 1.250000000000000e-01});
+  const auto master_above = Rows<K44::MasterMatrix>(
+      {-1.693713127012413e-05, 2.499699972767421e-01, 2.500000000000000e-01, -1.708552350238575e-05,
+       2.499694047566788e-01, 1.250000000000000e-01, 8.887622339932208e-02, 2.499729053698506e-01,
+       1.250000000000000e-01, 8.887625398902968e-02, 2.499736787275874e-01, 2.500000000000000e-01});
+  K44 reference, k, above;
+  ASSERT_TRUE(reference.Compute(before, master_before, ConditionNormals<K44>(before), Order(2)));
+  ASSERT_TRUE(k.Compute(crossing, master, ConditionNormals<K44>(crossing), Order(2)));
+  EXPECT_NEAR(k.area, reference.area, 1e-9 * reference.area);  // the iterates differ by 1e-12
+  // Covered: x from the master's edge (-1.7e-5) to the slave's (0.05604), z from 0 to 0.125.
+  EXPECT_NEAR(k.area, (0.05604 + 1.7e-5) * 0.125, 1e-3 * k.area);
+  for (int j = 0; j < 4; ++j) {
+    EXPECT_GT(k.nodal_area(j), 0.0) << j;
+    EXPECT_NEAR(k.nodal_area(j), reference.nodal_area(j), 1e-9 * reference.area) << j;
+  }
+  EXPECT_NEAR(k.nodal_area.sum(), k.area, 1e-12 * k.area);
+  // The master element beyond the shared edge overlaps by a sliver of 1e-13 at most: nothing.
+  EXPECT_FALSE(above.Compute(crossing, master_above, ConditionNormals<K44>(crossing), Order(2)));
+}
+
 TEST(ExactMortarIntegration, FoldedMasterFaceOfADivergedIterateIsAnError) {
   const auto x1 =
       Rows<K44::SlaveMatrix>({0.35786855178134835, -0.22733297504675262, -0.08438905766806408, 0.44918066344109708,
