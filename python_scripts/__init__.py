@@ -10,22 +10,23 @@ from __future__ import annotations
 import atexit
 import os as _os
 
-# libgomp (our OpenMP loops, and OpenBLAS inside UMFPACK / CHOLMOD) by default spins at every
-# barrier before it sleeps. When the cores also run other work, the spinning thread burns the
-# time slices its descheduled partner needs: on 2 busy cores (load 6) a 4k-DoF 3D contact case
-# spent 77 s in 7 factorizations, against 0.71 s with passive waiting
-# (benchmarks/hertz/results_wait_policy.md). The policy is read once, when libgomp loads with
-# _core; it is set only for that moment, so that child processes (Kratos in the benchmarks)
-# keep their own default. A user's OMP_WAIT_POLICY or GOMP_SPINCOUNT wins.
-_passive_wait = "OMP_WAIT_POLICY" not in _os.environ and "GOMP_SPINCOUNT" not in _os.environ
-if _passive_wait:
-    _os.environ["OMP_WAIT_POLICY"] = "PASSIVE"
+# libgomp (our OpenMP loops, and OpenBLAS inside UMFPACK / CHOLMOD) spins at a barrier for about
+# 300,000 rounds before it sleeps. When the cores also run other work, the spinning thread burns
+# the time slices its descheduled partner needs. Measured (benchmarks/hertz/results_wait_policy.md,
+# 2 cores, one busy loop per core beside the run): hertz3d_15k takes 121 s spinning, 14.7 s with
+# passive waiting and 11.5 s spinning 1000 rounds first; on the idle machine 4.33 s, 5.49 s and
+# 4.40 s. So GOMP_SPINCOUNT=1000, unless the user chose OMP_WAIT_POLICY or GOMP_SPINCOUNT. libgomp
+# reads it once, when it loads with _core; it is set only for that moment, so that child
+# processes (Kratos in the benchmarks) keep their own default.
+_short_spin = "OMP_WAIT_POLICY" not in _os.environ and "GOMP_SPINCOUNT" not in _os.environ
+if _short_spin:
+    _os.environ["GOMP_SPINCOUNT"] = "1000"
 from . import _core  # noqa: E402
 from ._core import *  # noqa: E402, F403  (kernel classes, variables and flags)
 from ._core import Error, InputError, NotImplementedFeatureError, SolutionError  # noqa: E402, F401
 
-if _passive_wait:
-    del _os.environ["OMP_WAIT_POLICY"]
+if _short_spin:
+    del _os.environ["GOMP_SPINCOUNT"]
 
 __version__ = "0.1.0"
 
