@@ -46,7 +46,6 @@ from __future__ import annotations
 
 import argparse
 import dataclasses
-import json
 import math
 import os
 import re
@@ -55,7 +54,7 @@ import sys
 import numpy as np
 
 from mortarcontact.cases import hertz  # gmsh meshing, Kuhn tetrahedra
-from mortarcontact.cases.mesh_files import write_case_mesh
+from mortarcontact.cases.mesh_files import write_case_mesh, write_json_files
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -468,10 +467,7 @@ def write_case(v: Variant, out_dir: str = DEFAULT_OUT) -> str:
                                    condition_blocks)
     files = {f"{name}_materials.json": materials(dim, law, v.mu),
              "ProjectParameters.json": project_parameters(v, len(top), bodies["upper"]["area"], model_import)}
-    for file, content in files.items():
-        with open(os.path.join(folder, file), "w") as f:
-            json.dump(content, f, indent=2)
-            f.write("\n")
+    write_json_files(folder, files)
     return folder
 
 

@@ -15,10 +15,13 @@ times the axial stiffness of an element's nodal share, E A / (4 h).
 from __future__ import annotations
 
 import argparse
-import json
 import math
 import os
 import sys
+
+import numpy as np
+
+from .mesh_files import write_case_mesh, write_json_files
 
 LENGTH, SIDE, NX = 1.0, 0.1, 40
 YOUNG, DENSITY = 2.1e11, 7850.0
@@ -42,66 +45,52 @@ def critical_time_step(nx: int = NX) -> float:
     return 0.9 * (LENGTH / nx) / (wave_speed() * math.sqrt(1.0 + STIFFNESS_RATIO))
 
 
-def _mdpa(nx: int) -> str:
+def mesh(nx: int = NX):
+    """(coordinates (n, 3), hexahedra of the left bar, hexahedra of the right bar, the left bar's
+    end nodes at the interface, the right bar's), 0-based."""
     h = LENGTH / nx
-    nodes, elements = [], []
-    parts = {"left": ([], []), "right": ([], [])}
-    node_id = 0
-    layers = {}
-    for bar, x0 in (("left", -LENGTH - GAP / 2.0), ("right", GAP / 2.0)):
+    section = np.array([(0.0, 0.0), (SIDE, 0.0), (SIDE, SIDE), (0.0, SIDE)])
+    coords, cells, ends = [], [], []
+    for x0, end in ((-LENGTH - GAP / 2.0, nx), (GAP / 2.0, 0)):
+        first = len(coords)
         for i in range(nx + 1):
-            layer = []
-            for y, z in ((0.0, 0.0), (SIDE, 0.0), (SIDE, SIDE), (0.0, SIDE)):
-                node_id += 1
-                nodes.append(f"{node_id} {x0 + i * h:.16g} {y:.16g} {z:.16g}")
-                layer.append(node_id)
-                parts[bar][0].append(node_id)
-            layers[bar, i] = layer
-        for i in range(nx):
-            a, b = layers[bar, i], layers[bar, i + 1]
-            elements.append((bar, len(elements) + 1, [a[0], b[0], b[1], a[1], a[3], b[3], b[2], a[2]]))
-            parts[bar][1].append(len(elements))
-    lines = ["Begin Properties 0", "End Properties", "Begin Nodes", *nodes, "End Nodes",
-             "Begin Elements SmallDisplacementElement3D8N"]
-    lines += [f"{eid} 0 {' '.join(map(str, conn))}" for _, eid, conn in elements]
-    lines.append("End Elements")
-
-    def sub(name, node_ids, element_ids=()):
-        return ([f"Begin SubModelPart {name}", "Begin SubModelPartNodes", *map(str, node_ids), "End SubModelPartNodes",
-                 "Begin SubModelPartElements", *map(str, element_ids), "End SubModelPartElements",
-                 "End SubModelPart"])
-
-    lines += sub("left", *parts["left"]) + sub("right", *parts["right"])
-    lines += sub("contact_left", layers["left", nx]) + sub("contact_right", layers["right", 0])
-    lines += sub("all_nodes", list(range(1, node_id + 1)))
-    return "\n".join(lines) + "\n"
+            coords += [(x0 + i * h, y, z) for y, z in section]
+        layer = first + 4 * np.arange(nx)[:, None] + np.arange(4)
+        cells.append(np.hstack([layer[:, [0]], layer[:, [0]] + 4, layer[:, [1]] + 4, layer[:, [1]],
+                                layer[:, [3]], layer[:, [3]] + 4, layer[:, [2]] + 4, layer[:, [2]]]))
+        ends.append(first + 4 * end + np.arange(4))
+    return np.array(coords), cells[0], cells[1], ends[0], ends[1]
 
 
 def write_case(out_dir: str, nx: int = NX, time_step: float | None = None, end_time: float | None = None) -> str:
-    """Writes bar_impact.mdpa, its materials and ProjectParameters.json into `out_dir`; returns
+    """Writes bar_impact.msh, its materials and ProjectParameters.json into `out_dir`; returns
     the parameters' path. Default time step: 0.9 of the critical one with the penalty springs,
     h / (c sqrt(1 + STIFFNESS_RATIO)) (omega^2 = 4 c^2 / h^2 of the end element plus the spring's
     STIFFNESS_RATIO times that between two end-node masses); default end: 1.5 times the contact
     duration."""
     os.makedirs(out_dir, exist_ok=True)
     c = wave_speed()
-    with open(os.path.join(out_dir, "bar_impact.mdpa"), "w") as f:
-        f.write(_mdpa(nx))
+    coords, left, right, left_end, right_end = mesh(nx)
+    element = "SmallDisplacementElement3D8N"
+    model_import = write_case_mesh(
+        os.path.join(out_dir, "bar_impact.msh"), coords, [(element, 1, left), (element, 1 + nx, right)],
+        {"left": {"nodes": np.unique(left), "elements": 1 + np.arange(nx)},
+         "right": {"nodes": np.unique(right), "elements": 1 + nx + np.arange(nx)},
+         "contact_left": {"nodes": left_end}, "contact_right": {"nodes": right_end},
+         "all_nodes": {"nodes": np.arange(len(coords))}})
     law = {"name": "LinearElastic3DLaw"}
     materials = {"properties": [
         {"model_part_name": f"Structure.{bar}", "properties_id": i + 1,
          "Material": {"constitutive_law": law, "Variables": {"YOUNG_MODULUS": YOUNG, "POISSON_RATIO": 0.0,
                                                               "DENSITY": DENSITY}}}
         for i, bar in enumerate(("left", "right"))]}
-    with open(os.path.join(out_dir, "bar_impact_materials.json"), "w") as f:
-        json.dump(materials, f, indent=1)
     parameters = {
         "problem_data": {"problem_name": "bar_impact", "parallel_type": "OpenMP", "start_time": 0.0,
                          "end_time": end_time if end_time is not None else 1.5 * 2.0 * LENGTH / c, "echo_level": 0},
         "solver_settings": {
             "model_part_name": "Structure", "solver_type": "Dynamic", "time_integration_method": "explicit",
             "domain_size": 3, "echo_level": 0, "analysis_type": "non_linear",
-            "model_import_settings": {"input_type": "mdpa", "input_filename": "bar_impact"},
+            "model_import_settings": model_import,
             "material_import_settings": {"materials_filename": "bar_impact_materials.json"},
             "contact_settings": {"mortar_type": "PenaltyContactFrictionless"},
             "time_stepping": {"time_step": time_step if time_step is not None else critical_time_step(nx)}},
@@ -119,10 +108,8 @@ def write_case(out_dir: str, nx: int = NX, time_step: float | None = None, end_t
                                "assume_master_slave": {"0": ["contact_left"]},
                                "advance_ALM_parameters": {"manual_ALM": True, "penalty": penalty(nx)}}}]},
     }
-    path = os.path.join(out_dir, "ProjectParameters.json")
-    with open(path, "w") as f:
-        json.dump(parameters, f, indent=1)
-    return path
+    write_json_files(out_dir, {"bar_impact_materials.json": materials, "ProjectParameters.json": parameters})
+    return os.path.join(out_dir, "ProjectParameters.json")
 
 
 def set_initial_velocities(root) -> None:
@@ -137,8 +124,6 @@ def set_initial_velocities(root) -> None:
 def bar_state(root) -> list[float]:
     """[mean velocity (momentum / mass), kinetic energy, mass] of the left bar, then the right one,
     from the lumped masses (NODAL_MASS) and the half-step velocities."""
-    import numpy as np
-
     state = []
     for bar in ("left", "right"):
         nodes = root.GetSubModelPart(bar).Nodes

@@ -39,6 +39,7 @@ import sys
 import numpy as np
 
 from . import hertz
+from .mesh_files import write_json_files
 
 FRICTION_COEFFICIENT = 0.3
 NORMAL_STEPS = 8
@@ -93,11 +94,8 @@ def write_case(dim: int, label: str, out_dir: str, friction: float = FRICTION_CO
     reference.update(friction_coefficient=friction, normal_steps=NORMAL_STEPS, tangential_steps=TANGENTIAL_STEPS,
                      relations=reference["relations"] + ("; c = a sqrt(1 - Q/(mu P))" if dim == 2 else
                                                          "; c = a (1 - Q/(mu P))^(1/3)"))
-    for file, content in ((materials_file, materials), (parameters_file, parameters),
-                          (os.path.join(folder, "hertz.json"), reference)):
-        with open(file, "w") as f:
-            json.dump(content, f, indent=2)
-            f.write("\n")
+    write_json_files(folder, {os.path.basename(materials_file): materials, "ProjectParameters.json": parameters,
+                              "hertz.json": reference})
     return folder
 
 

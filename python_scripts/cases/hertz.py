@@ -61,7 +61,7 @@ import sys
 
 import numpy as np
 
-from .mesh_files import write_case_mesh
+from .mesh_files import write_case_mesh, write_json_files
 
 RADIUS = 1.0
 YOUNG = 1000.0
@@ -658,13 +658,10 @@ def write_case(family: str, label: str, out_dir: str,
     dim = case["dim"]
     delta = applied_displacement(dim, RADIUS, GEOMETRY[dim]["block_height"])
     model_import = write_mesh(os.path.join(folder, f"{name}.msh"), case)
-    for file, content in ((f"{name}_materials.json", materials(dim)),
-                          ("ProjectParameters.json",
-                           project_parameters(name, dim, delta, linear_solver, model_import, case["half"])),
-                          ("hertz.json", hertz_reference(case, delta))):
-        with open(os.path.join(folder, file), "w") as f:
-            json.dump(content, f, indent=2)
-            f.write("\n")
+    write_json_files(folder, {
+        f"{name}_materials.json": materials(dim),
+        "ProjectParameters.json": project_parameters(name, dim, delta, linear_solver, model_import, case["half"]),
+        "hertz.json": hertz_reference(case, delta)})
     return folder
 
 

@@ -20,7 +20,6 @@ contact force, mu.
 from __future__ import annotations
 
 import argparse
-import json
 import math
 import os
 import sys
@@ -28,7 +27,7 @@ import sys
 import numpy as np
 
 from . import hertz
-from .mesh_files import write_case_mesh
+from .mesh_files import write_case_mesh, write_json_files
 
 RADIUS = 3.0
 DIE_HEIGHT = 1.0
@@ -125,10 +124,7 @@ def write_case(out_dir: str, friction: float = FRICTION, slip_augmentation: floa
                                "assume_master_slave": {"0": ["Contact_slave"]},
                                "slip_augmentation_coefficient": slip_augmentation}}]},
         "output_processes": {}}
-    for file, content in ((f"{name}_materials.json", materials), ("ProjectParameters.json", parameters)):
-        with open(os.path.join(folder, file), "w") as f:
-            json.dump(content, f, indent=2)
-            f.write("\n")
+    write_json_files(folder, {f"{name}_materials.json": materials, "ProjectParameters.json": parameters})
     return folder
 
 

@@ -93,6 +93,15 @@ def write_case_mesh(path: str, coords: np.ndarray, element_blocks, parts: dict, 
     return settings
 
 
+def write_json_files(folder: str, files: dict) -> None:
+    """Writes each ``{file name: JSON content}`` of ``files`` into ``folder`` (indent 2, newline at
+    the end): a case's materials and ProjectParameters.json."""
+    for name, content in files.items():
+        with open(os.path.join(folder, name), "w") as f:
+            json.dump(content, f, indent=2)
+            f.write("\n")
+
+
 def write_kratos_mdpa(case_dir: str) -> str:
     """Writes the mdpa Kratos reads for the case in ``case_dir`` (its ProjectParameters.json reads a
     gmsh / meshio file): the mesh file's name with ``.mdpa`` in place of its extension, next to it.

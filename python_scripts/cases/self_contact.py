@@ -21,14 +21,13 @@ the answer of the given roles.
 from __future__ import annotations
 
 import argparse
-import json
 import os
 import sys
 
 import numpy as np
 
 from . import hertz
-from .mesh_files import write_case_mesh
+from .mesh_files import write_case_mesh, write_json_files
 
 HALF_WIDTH, GAP, BASE, ARM = 0.5, 0.1, 0.5, 2.0
 DEPTH = 0.4  # 3D: thickness along z
@@ -181,10 +180,7 @@ def write_case(dim: int, out_dir: str, roles: str = "automatic", steps: int = ST
                 "Parameters": {"model_part_name": "Structure",
                                "contact_type": "Frictional" if friction else "Frictionless", **contact}}]},
         "output_processes": {}}
-    for file, content in ((f"{name}_materials.json", materials), ("ProjectParameters.json", parameters)):
-        with open(os.path.join(folder, file), "w") as f:
-            json.dump(content, f, indent=2)
-            f.write("\n")
+    write_json_files(folder, {f"{name}_materials.json": materials, "ProjectParameters.json": parameters})
     return folder
 
 
