@@ -305,12 +305,13 @@ bool ExactMortarIntegrationUtility<TDim, TNumNodes, TNumNodesMaster>::Compute(co
     // Two convex polygons clip to at most n + m vertices, also with aligned or coincident edges
     // (merged above): more means a face that is not convex seen along the slave normal, folded or
     // self-intersecting. The robustness sweep met it only in the iterate after a diverging Newton
-    // step (issue 12), where a fan over it would integrate a wrong area.
+    // step (issue 12), where a fan over it would integrate a wrong area. A SolutionError: the
+    // command line reports it without a traceback, and step splitting takes it as a failed attempt.
     if (n_clean > TNumNodes + TNumNodesMaster)
-      throw Error(Concat("mortar integration: clipped polygon with ", n_clean, " vertices (at most ",
-                         TNumNodes + TNumNodesMaster,
-                         " for convex faces): a slave or master face is folded or self-intersecting seen along "
-                         "the slave normal, e.g. in the iterate after a diverging Newton step"));
+      throw SolutionError(Concat("mortar integration: clipped polygon with ", n_clean, " vertices (at most ",
+                                 TNumNodes + TNumNodesMaster,
+                                 " for convex faces): a slave or master face is folded or self-intersecting seen along "
+                                 "the slave normal, e.g. in the iterate after a diverging Newton step"));
     std::copy(next.begin(), next.begin() + n_clean, poly.begin());
     n_poly = n_clean;
     if (!(ValueOf(signed_area(poly, n_poly)) > eps * area_scale)) return false;

@@ -392,7 +392,7 @@ TEST(ExactMortarIntegration, NearlyCoincidentCrossingEdges) {
   EXPECT_FALSE(above.Compute(crossing, master_above, ConditionNormals<K44>(crossing), Order(2)));
 }
 
-TEST(ExactMortarIntegration, FoldedMasterFaceOfADivergedIterateIsAnError) {
+TEST(ExactMortarIntegration, FoldedMasterFaceOfADivergedIterateIsASolutionError) {
   const auto x1 =
       Rows<K44::SlaveMatrix>({0.35786855178134835, -0.22733297504675262, -0.08438905766806408, 0.44918066344109708,
                               -0.23138547302904547, 0.057306946730948993, 0.35801866758089473, -0.29472682400676603,
@@ -405,7 +405,7 @@ TEST(ExactMortarIntegration, FoldedMasterFaceOfADivergedIterateIsAnError) {
   try {
     ExactMortarIntegrationUtility<3, 4, 4>::Compute(x1, x2, ConditionNormals<K44>(x1), Order(2), points);
     FAIL() << "no error";
-  } catch (const Error& e) {
+  } catch (const SolutionError& e) {
     const std::string message = e.what();
     EXPECT_NE(message.find("clipped polygon with 9 vertices (at most 8 for convex faces)"), std::string::npos)
         << message;
