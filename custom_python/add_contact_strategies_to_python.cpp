@@ -207,8 +207,7 @@ void AddContactStrategiesToPython(py::module_& m) {
       .def("ContactStableTimeStep", &ExplicitPenaltyContactStrategy::ContactStableTimeStep,
            py::arg("element_time_step"),
            "Critical time step with the penalty springs of the slave nodes: 2 / sqrt(omega_e^2 + max_j eps_j A_j^2 "
-           "(1/m_j + 1/m_master)).")
-      .def("ActiveNodes", &ExplicitPenaltyContactStrategy::ActiveNodes, "Slave nodes ACTIVE after the last update.");
+           "(1/m_j + 1/m_master)).");
 
   using ContactNewton = ResidualBasedNewtonRaphsonContactStrategy;
   py::class_<ContactNewton, NewtonRaphsonStrategy, std::shared_ptr<ContactNewton>>(

@@ -10,22 +10,6 @@
 
 namespace mc {
 
-namespace {
-
-/// Zeroes the weighted gap (and slip) of the contact nodes and asks the updater to integrate
-/// them again at the current coordinates.
-void RecomputeWeightedGap(ModelPart& model_part, ModelPart& contact_part, MortarUpdater& updater) {
-  const bool has_slip = contact_part.HasNodalSolutionStepVariable(WEIGHTED_SLIP);
-  for (Node* p_node : contact_part.Nodes()) {
-    Node& node = *p_node;
-    node.FastGetSolutionStepValue(WEIGHTED_GAP) = 0.0;
-    if (has_slip) node.FastGetSolutionStepValue(WEIGHTED_SLIP).setZero();
-  }
-  updater.ComputeWeightedGap(model_part);
-}
-
-}  // namespace
-
 Parameters BaseMortarConvergenceCriteria::GetDefaultParameters() {
   return Parameters(R"({
       "compute_dynamic_factor"      : false,

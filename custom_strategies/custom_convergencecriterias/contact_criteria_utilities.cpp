@@ -6,6 +6,7 @@
 #include "core/model/model_part.h"
 #include "core/variables/kernel_variables.h"
 #include "custom_utilities/contact_variables.h"
+#include "custom_utilities/mortar_updater.h"
 
 namespace mc {
 
@@ -81,6 +82,16 @@ ModelPart* FindContactModelPart(ModelPart& model_part) noexcept {
   ModelPart& root = model_part.GetRootModelPart();
   if (root.HasSubModelPart("Contact")) return &root.GetSubModelPart("Contact");
   return nullptr;
+}
+
+void RecomputeWeightedGap(ModelPart& model_part, ModelPart& contact_part, MortarUpdater& updater) {
+  const bool has_slip = contact_part.HasNodalSolutionStepVariable(WEIGHTED_SLIP);
+  for (Node* p_node : contact_part.Nodes()) {
+    Node& node = *p_node;
+    node.FastGetSolutionStepValue(WEIGHTED_GAP) = 0.0;
+    if (has_slip) node.FastGetSolutionStepValue(WEIGHTED_SLIP).setZero();
+  }
+  updater.ComputeWeightedGap(model_part);
 }
 
 }  // namespace mc

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// What the contact criteria share: the split of the DoF set into families by DoF variable, the
-// per-family norms, and the lookup of the contact sub-model-part.
+// What the contact criteria and strategies share: the split of the DoF set into families by DoF
+// variable, the per-family norms, the lookup of the contact sub-model-part and the refresh of its
+// weighted gaps.
 #pragma once
 
 #include <array>
@@ -12,6 +13,7 @@
 namespace mc {
 
 class ModelPart;
+class MortarUpdater;
 
 /// DoF families measured separately: their magnitudes differ by orders (metres, radians,
 /// pascals), so one global norm would hide the slowest of them. The frictional criteria split
@@ -49,5 +51,9 @@ FamilySumsArray SumByFamily(const std::vector<Dof*>& dofs, const Vector& dx, con
 /// The "Contact" sub-model-part of `model_part` or, failing that, of its root; null when there
 /// is none (no contact defined yet: the active set is empty and trivially converged).
 ModelPart* FindContactModelPart(ModelPart& model_part) noexcept;
+
+/// Zeroes WEIGHTED_GAP (and WEIGHTED_SLIP where the part has it) of the nodes of `contact_part`
+/// and asks `updater` to integrate them again at the current coordinates of `model_part`.
+void RecomputeWeightedGap(ModelPart& model_part, ModelPart& contact_part, MortarUpdater& updater);
 
 }  // namespace mc

@@ -8,17 +8,11 @@
 
 #include "core/model/model_part.h"
 #include "core/variables/kernel_variables.h"
+#include "custom_strategies/custom_convergencecriterias/contact_criteria_utilities.h"
 #include "custom_utilities/active_set_utilities.h"
 #include "custom_utilities/contact_variables.h"
 
 namespace mc {
-
-namespace {
-ModelPart* ContactPart(ModelPart& model_part) {
-  ModelPart& root = model_part.GetRootModelPart();
-  return root.HasSubModelPart("Contact") ? &root.GetSubModelPart("Contact") : nullptr;
-}
-}  // namespace
 
 ExplicitPenaltyContactStrategy::ExplicitPenaltyContactStrategy(ModelPart& model_part,
                                                                std::shared_ptr<ExplicitCentralDifferencesScheme> scheme,
@@ -38,20 +32,18 @@ void ExplicitPenaltyContactStrategy::Initialize() {
 }
 
 void ExplicitPenaltyContactStrategy::UpdateBeforeResidual() {
-  ModelPart* contact = ContactPart(model_part_);
+  ModelPart* contact = FindContactModelPart(model_part_);
   if (!contact) return;
   updater_->UpdateNormals(model_part_);
-  for (Node* node : contact->Nodes()) node->FastGetSolutionStepValue(WEIGHTED_GAP) = 0.0;
-  updater_->ComputeWeightedGap(model_part_);
+  RecomputeWeightedGap(model_part_, *contact, *updater_);
   ActiveSetUtilities::ComputePenaltyFrictionlessActiveSet(*contact);
-  active_nodes_ =
-      static_cast<std::size_t>(std::count_if(contact->Nodes().begin(), contact->Nodes().end(),
-                                             [](const Node* node) { return node->Is(SLAVE) && node->Is(ACTIVE); }));
-  model_part_.GetRootModelPart().Set(CONTACT, active_nodes_ > 0);
+  model_part_.GetRootModelPart().Set(CONTACT,
+                                     std::any_of(contact->Nodes().begin(), contact->Nodes().end(),
+                                                 [](const Node* node) { return node->Is(SLAVE) && node->Is(ACTIVE); }));
 }
 
 double ExplicitPenaltyContactStrategy::ContactStableTimeStep(double element_time_step) const {
-  ModelPart* contact = ContactPart(const_cast<ModelPart&>(model_part_));
+  ModelPart* contact = FindContactModelPart(const_cast<ModelPart&>(model_part_));
   const double omega_e = 2.0 / element_time_step;
   if (!contact) return element_time_step;
   const ProcessInfo& info = model_part_.GetProcessInfo();

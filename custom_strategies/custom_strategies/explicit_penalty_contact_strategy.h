@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 
-#include <cstddef>
 #include <memory>
 
 #include "core/solving/explicit_strategy.h"
@@ -38,15 +37,12 @@ class ExplicitPenaltyContactStrategy : public ExplicitStrategy {
   /// slave nodes share master nodes). A_j is the slave node's share of its interface faces when
   /// it has no NODAL_AREA yet. Call once the lumped masses exist (after InitializeSolutionStep).
   double ContactStableTimeStep(double element_time_step) const;
-  /// Slave nodes ACTIVE after the last update.
-  std::size_t ActiveNodes() const noexcept { return active_nodes_; }
 
  protected:
   void UpdateBeforeResidual() override;
 
  private:
   std::shared_ptr<MortarUpdater> updater_;
-  std::size_t active_nodes_ = 0;
 };
 
 }  // namespace mc
