@@ -26,6 +26,11 @@ void FrictionalMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::StorePr
 template <int TDim, int TNumNodes, int TNumNodesMaster>
 void FrictionalMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::InitializeSolutionStep(
     const ProcessInfo& info) {
+  if (info.GetValue(ACCUMULATED_WEIGHTED_SLIP)) {
+    // Computed at first use from the previous step's coordinates (EnsurePreviousOperators).
+    has_previous_ = false;
+    return;
+  }
   typename Kinematics::SlaveMatrix x1;
   typename Kinematics::MasterMatrix x2;
   this->GatherCoordinates(x1, x2);
@@ -36,9 +41,12 @@ template <int TDim, int TNumNodes, int TNumNodesMaster>
 void FrictionalMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::EnsurePreviousOperators(
     const ProcessInfo& info) {
   if (has_previous_) return;
-  auto previous_coordinates = [](const Node& node) -> Array3 {
-    if (node.BufferSize() < 2) return node.Coordinates();
-    return node.X0() + node.FastGetSolutionStepValue(DISPLACEMENT, 1);
+  // An explicit step is evaluated at the coordinates of its start, which buffer position 1 also
+  // holds then: the previous step's are one further back.
+  const std::size_t back = info.GetValue(ACCUMULATED_WEIGHTED_SLIP) ? 2 : 1;
+  auto previous_coordinates = [back](const Node& node) -> Array3 {
+    if (node.BufferSize() <= back) return node.Coordinates();
+    return node.X0() + node.FastGetSolutionStepValue(DISPLACEMENT, back);
   };
   typename Kinematics::SlaveMatrix x1;
   typename Kinematics::MasterMatrix x2;
@@ -47,6 +55,18 @@ void FrictionalMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::EnsureP
   for (int l = 0; l < TNumNodesMaster; ++l)
     x2.row(l) = previous_coordinates(this->GetPairedGeometry()[l]).template head<TDim>().transpose();
   StorePreviousOperators(x1, x2, info);
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
+void FrictionalMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::AccumulatedWeightedSlip(Data& data) const {
+  // The pair's share of node j is its part of the nodal area, as for the weighted gap.
+  const Geometry& slave = this->GetGeometry();
+  for (int j = 0; j < TNumNodes; ++j) {
+    const Node& node = slave[j];
+    const double area = node.Has(NODAL_AREA) ? node.GetValue(NODAL_AREA) : 0.0;
+    const double share = area > 0.0 && !data.kinematics->sliver ? data.kinematics->nodal_area(j) / area : 0.0;
+    data.weighted_slip.row(j) = share * node.FastGetSolutionStepValue(WEIGHTED_SLIP).template head<TDim>().transpose();
+  }
 }
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
@@ -75,6 +95,7 @@ void FrictionalMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::Complet
   data.previous_D = previous_D_;
   data.previous_M = previous_M_;
   ComputeWeightedSlip(data);
+  if (info.GetValue(ACCUMULATED_WEIGHTED_SLIP)) AccumulatedWeightedSlip(data);
   data.tangent_factor = TangentFactor(info);
   data.slip_augmentation = info.Has(SLIP_AUGMENTATION_COEFFICIENT) ? info.GetValue(SLIP_AUGMENTATION_COEFFICIENT) : 0.0;
   const Geometry& slave = this->GetGeometry();

@@ -23,6 +23,12 @@ namespace mc {
 ///  - the per-node branch: an ACTIVE node is slip if it is SLIP and its augmented tangent pressure
 ///    (the slip direction) is non-zero, else stick; an inactive node is inactive.
 ///
+/// With ProcessInfo[ACCUMULATED_WEIGHTED_SLIP] (explicit contact) a step is too short for its slip
+/// increment to carry the stick traction: the kernels take the pair's share of the nodal
+/// WEIGHTED_SLIP, which the explicit strategy accumulates while the node sticks, and D_n, M_n are
+/// those of the previous step's coordinates (the residual of an explicit step is evaluated at the
+/// configuration of InitializeSolutionStep, where the increment would vanish).
+///
 /// Parameters: mu_j = the slave node's FRICTION_COEFFICIENT if it has one, else the pair's
 /// properties' (an error if neither); c_tau = ProcessInfo[TANGENT_FACTOR] (required, positive);
 /// c_slip = ProcessInfo[SLIP_AUGMENTATION_COEFFICIENT] (0 when absent).
@@ -34,7 +40,8 @@ class FrictionalMortarContactCondition : public MortarContactCondition<TDim, TNu
   using Kinematics = typename Base::Kinematics;
   using Base::Base;
 
-  /// Stores D_n, M_n from the current (last converged) configuration.
+  /// Stores D_n, M_n from the current (last converged) configuration; with
+  /// ACCUMULATED_WEIGHTED_SLIP, marks them for recomputation from the previous step's coordinates.
   void InitializeSolutionStep(const ProcessInfo& info) override;
   /// The base checks; slave nodes carry WEIGHTED_SLIP and a friction coefficient, c_tau > 0.
   void Check(const ProcessInfo& info) const override;
@@ -53,6 +60,8 @@ class FrictionalMortarContactCondition : public MortarContactCondition<TDim, TNu
                               const ProcessInfo& info);
   /// Computes D_n, M_n from the previous step's coordinates if the pair has none yet.
   void EnsurePreviousOperators(const ProcessInfo& info);
+  /// ACCUMULATED_WEIGHTED_SLIP: the pair's share of each slave node's nodal WEIGHTED_SLIP.
+  void AccumulatedWeightedSlip(Data& data) const;
   double FrictionCoefficient(const Node& node) const;
   double TangentFactor(const ProcessInfo& info) const;
 

@@ -192,18 +192,20 @@ void AddContactStrategiesToPython(py::module_& m) {
 
   py::class_<ExplicitPenaltyContactStrategy, ExplicitStrategy, std::shared_ptr<ExplicitPenaltyContactStrategy>>(
       m, "ExplicitPenaltyContactStrategy",
-      "Explicit central differences with frictionless penalty mortar contact: normals, weighted gaps and the "
-      "penalty active set updated before every residual.")
+      "Explicit central differences with penalty mortar contact, frictionless or Coulomb (the slip accumulated "
+      "while sticking): normals, weighted gaps and the penalty active set updated before every residual.")
       .def(py::init([](ModelPart& part, std::shared_ptr<ExplicitCentralDifferencesScheme> scheme,
-                       std::shared_ptr<MortarUpdater> updater, bool compute_reactions, bool move_mesh, int echo_level) {
+                       std::shared_ptr<MortarUpdater> updater, bool compute_reactions, bool move_mesh, int echo_level,
+                       bool pure_slip) {
              auto s = std::make_shared<ExplicitPenaltyContactStrategy>(part, std::move(scheme), std::move(updater),
-                                                                       compute_reactions, move_mesh);
+                                                                       compute_reactions, move_mesh, pure_slip);
              s->SetEchoLevel(echo_level);
              return s;
            }),
            py::arg("model_part"), py::arg("scheme"), py::arg("mortar_updater"), py::arg("compute_reactions") = true,
-           py::arg("move_mesh") = true, py::arg("echo_level") = 0, py::keep_alive<1, 2>(),
-           "Kratos' solver_settings of the same names (move_mesh: move_mesh_flag).")
+           py::arg("move_mesh") = true, py::arg("echo_level") = 0, py::arg("pure_slip") = false, py::keep_alive<1, 2>(),
+           "Kratos' solver_settings of the same names (move_mesh: move_mesh_flag); pure_slip: every active node "
+           "slips (the PureSlip formulations).")
       .def("ContactStableTimeStep", &ExplicitPenaltyContactStrategy::ContactStableTimeStep,
            py::arg("element_time_step"),
            "Critical time step with the penalty springs of the slave nodes: 2 / sqrt(omega_e^2 + max_j eps_j A_j^2 "

@@ -50,6 +50,9 @@ MC_DECLARE_VARIABLE(bool, ACTIVE_SET_CONVERGED);
 MC_DECLARE_VARIABLE(bool, SLIP_SET_CONVERGED);
 MC_DECLARE_VARIABLE(bool, ACTIVE_SET_COMPUTED);
 MC_DECLARE_VARIABLE(bool, ADAPT_PENALTY);
+/// ProcessInfo (ours), set by the explicit contact strategy: WEIGHTED_SLIP is the elastic slip a
+/// node has accumulated while sticking (return-mapped when it slips), not the step's increment.
+MC_DECLARE_VARIABLE(bool, ACCUMULATED_WEIGHTED_SLIP);
 MC_DECLARE_VARIABLE(double, MAX_GAP_FACTOR);
 MC_DECLARE_VARIABLE(double, MAX_GAP_THRESHOLD);
 MC_DECLARE_VARIABLE(int, INNER_LOOP_ITERATION);

@@ -17,10 +17,12 @@ namespace mc {
 ExplicitPenaltyContactStrategy::ExplicitPenaltyContactStrategy(ModelPart& model_part,
                                                                std::shared_ptr<ExplicitCentralDifferencesScheme> scheme,
                                                                std::shared_ptr<MortarUpdater> updater,
-                                                               bool compute_reactions, bool move_mesh_flag)
+                                                               bool compute_reactions, bool move_mesh_flag,
+                                                               bool pure_slip)
     // Penalty contact adds no DoFs: the DoF set and the lumped mass stay those of the elements.
     : ExplicitStrategy(model_part, std::move(scheme), compute_reactions, false, move_mesh_flag),
-      updater_(std::move(updater)) {
+      updater_(std::move(updater)),
+      pure_slip_(pure_slip) {
   if (!updater_) throw Error("the explicit penalty contact strategy needs a mortar updater");
 }
 
@@ -29,6 +31,13 @@ void ExplicitPenaltyContactStrategy::Initialize() {
   // The contact processes set CONTACT when they build the interface; Kratos then takes its first
   // step with delta_time_factor_for_contact although nothing touches yet.
   model_part_.GetRootModelPart().Set(CONTACT, false);
+  frictional_ = model_part_.GetRootModelPart().Is(SLIP);
+  if (frictional_ && model_part_.GetBufferSize() < 3)
+    throw InputError(
+        Concat("explicit frictional contact reads the slip of the previous step and the coordinates of "
+               "the one before from the buffer: solver_settings.buffer_size must be at least 3, got ",
+               model_part_.GetBufferSize()));
+  model_part_.GetProcessInfo().SetValue(ACCUMULATED_WEIGHTED_SLIP, frictional_);
 }
 
 void ExplicitPenaltyContactStrategy::UpdateBeforeResidual() {
@@ -36,10 +45,32 @@ void ExplicitPenaltyContactStrategy::UpdateBeforeResidual() {
   if (!contact) return;
   updater_->UpdateNormals(model_part_);
   RecomputeWeightedGap(model_part_, *contact, *updater_);
-  ActiveSetUtilities::ComputePenaltyFrictionlessActiveSet(*contact);
+  if (frictional_)
+    UpdateFrictionalState(*contact);
+  else
+    ActiveSetUtilities::ComputePenaltyFrictionlessActiveSet(*contact);
   model_part_.GetRootModelPart().Set(CONTACT,
                                      std::any_of(contact->Nodes().begin(), contact->Nodes().end(),
                                                  [](const Node* node) { return node->Is(SLAVE) && node->Is(ACTIVE); }));
+}
+
+void ExplicitPenaltyContactStrategy::UpdateFrictionalState(ModelPart& contact) const {
+  // RecomputeWeightedGap left this step's increment in WEIGHTED_SLIP.
+  for (Node* node : contact.Nodes()) {
+    if (!node->Is(SLAVE)) continue;
+    const Array3 normal = node->FastGetSolutionStepValue(NORMAL);
+    node->FastGetSolutionStepValue(WEIGHTED_SLIP) +=
+        ActiveSetUtilities::TangentialPart(node->FastGetSolutionStepValue(WEIGHTED_SLIP, 1), normal);
+  }
+  ActiveSetUtilities::ComputePenaltyFrictionalActiveSet(contact, pure_slip_);
+  const ProcessInfo& info = contact.GetProcessInfo();
+  const double tangent_factor = info.GetValue(TANGENT_FACTOR);
+  for (Node* node : contact.Nodes()) {
+    if (!node->Is(SLAVE) || !node->Is(ACTIVE) || !node->Is(SLIP)) continue;
+    const double eps = node->Has(INITIAL_PENALTY) ? node->GetValue(INITIAL_PENALTY) : info.GetValue(INITIAL_PENALTY);
+    node->FastGetSolutionStepValue(WEIGHTED_SLIP) =
+        node->GetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE) / (tangent_factor * eps);
+  }
 }
 
 double ExplicitPenaltyContactStrategy::ContactStableTimeStep(double element_time_step) const {
@@ -59,6 +90,7 @@ double ExplicitPenaltyContactStrategy::ContactStableTimeStep(double element_time
   for (const Node* node : contact->Nodes())
     if (node->Is(MASTER) && node->Has(NODAL_MASS) && node->GetValue(NODAL_MASS) > 0.0)
       master_mass = std::min(master_mass, node->GetValue(NODAL_MASS));
+  const double stiffness_factor = frictional_ ? std::max(1.0, info.GetValue(TANGENT_FACTOR)) : 1.0;
   double omega_c2 = 0.0;
   for (const Node* node : contact->Nodes()) {
     if (!node->Is(SLAVE) || !node->Has(NODAL_MASS) || !(node->GetValue(NODAL_MASS) > 0.0)) continue;
@@ -68,7 +100,7 @@ double ExplicitPenaltyContactStrategy::ContactStableTimeStep(double element_time
     const double area = paired > 0.0 ? paired : (found != share.end() ? found->second : 0.0);
     const double inverse_mass =
         1.0 / node->GetValue(NODAL_MASS) + (std::isfinite(master_mass) ? 1.0 / master_mass : 0.0);
-    omega_c2 = std::max(omega_c2, eps * area * area * inverse_mass);
+    omega_c2 = std::max(omega_c2, stiffness_factor * eps * area * area * inverse_mass);
   }
   return 2.0 / std::sqrt(omega_e * omega_e + omega_c2);
 }

@@ -72,11 +72,11 @@ class ContactMechanicalSolver(MechanicalSolver):
         settings["clear_storage"].SetBool(True)
         settings["reform_dofs_at_each_step"].SetBool(True)
         super().__init__(model, settings, **kwargs)
-        if self.explicit and (self.formulation.multiplier_blocks != 0 or self.formulation.frictional):
+        if self.explicit and self.formulation.multiplier_blocks != 0:
             mortar_type = settings["contact_settings"]["mortar_type"]
             raise _core.NotImplementedFeatureError(
                 f"{mortar_type.Where()}: explicit contact with \"{mortar_type.GetString()}\" is not implemented; the "
-                "explicit solver runs \"PenaltyContactFrictionless\" (explicit_penalty_contact_process)")
+                "explicit solver runs the penalty formulations (explicit_penalty_contact_process)")
         without_effect = dict(KEYS_WITHOUT_EFFECT)
         if self.formulation.multiplier_blocks != 3:
             without_effect.update(FRICTIONAL_KEYS_WITHOUT_EFFECT)
@@ -117,7 +117,8 @@ class ContactMechanicalSolver(MechanicalSolver):
                                                         self.mortar_updater,
                                                         compute_reactions=s["compute_reactions"].GetBool(),
                                                         move_mesh=s["move_mesh_flag"].GetBool(),
-                                                        echo_level=self.echo_level)
+                                                        echo_level=self.echo_level,
+                                                        pure_slip=self._formulation_of_run().pure_slip)
         if s["step_splitting"].size() > 0:
             raise _core.InputError(f"{s.Where()}.step_splitting: the contact solvers split steps with Kratos' "
                                    "contact_settings keys adaptative_strategy, split_factor and max_number_splits")

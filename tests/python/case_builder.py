@@ -121,3 +121,62 @@ def write_case(folder, name: str, parameters: dict, materials_data: dict) -> str
     with open(os.path.join(folder, f"{name}_materials.json"), "w") as f:
         json.dump(materials_data, f, indent=2)
     return path
+
+
+def write_block_on_base(folder, name: str, *, block: tuple, base: tuple, cells: tuple, friction: float,
+                        gravity: tuple, solver: dict, contact: dict, end_time: float, time_step: float,
+                        ramp: float = 0.0) -> str:
+    """A block (nx, ny cells) resting on the top of a base clamped at its bottom (bx, by cells),
+    plane strain, linear quadrilaterals, both E = 1e6, nu = 0.3, rho = 1, FRICTION_COEFFICIENT
+    `friction`; the block's bottom is the slave. `gravity` = (modulus, direction) on the block,
+    raised linearly from 0 over the time `ramp` when it is positive; `contact` = (python_module,
+    extra Parameters) of the contact process; `solver` updates the solver settings."""
+    nx, ny, bx, by = cells
+    block_xy, block_cells = structured_quads(nx, ny, *block)
+    block_xy = block_xy - [block[0] / 2, 0.0]
+    base_xy, base_cells = structured_quads(bx, by, *base)
+    base_xy = base_xy - [base[0] / 2, base[1]]
+    nb = len(block_xy)
+    coords = np.vstack([block_xy, base_xy])
+    ids = np.arange(1, len(coords) + 1)
+    on_block_bottom = np.abs(block_xy[:, 1]) < 1e-12
+    on_base_top = np.abs(base_xy[:, 1]) < 1e-12
+    on_base_bottom = np.abs(base_xy[:, 1] + base[1]) < 1e-12
+    n_block_cells = len(block_cells)
+    write_mdpa(f"{folder}/{name}.mdpa", coords,
+               {"SmallDisplacementElement2D4N": list(block_cells) + [tuple(int(i) + nb for i in c)
+                                                                      for c in base_cells]},
+               sub_parts={"Parts_block": {"nodes": ids[:nb], "elements": range(1, n_block_cells + 1)},
+                          "Parts_base": {"nodes": ids[nb:],
+                                         "elements": range(n_block_cells + 1, n_block_cells + len(base_cells) + 1)},
+                          "Contact_slave": {"nodes": ids[:nb][on_block_bottom]},
+                          "Contact_master": {"nodes": ids[nb:][on_base_top]},
+                          "DISPLACEMENT_bottom": {"nodes": ids[nb:][on_base_bottom]}})
+    variables = {"YOUNG_MODULUS": 1.0e6, "POISSON_RATIO": 0.3, "DENSITY": 1.0, "THICKNESS": 1.0,
+                 "FRICTION_COEFFICIENT": friction}
+    materials_data = {"properties": [
+        {"model_part_name": f"Structure.{part}", "properties_id": pid,
+         "Material": {"constitutive_law": {"name": "LinearElasticPlaneStrain2DLaw"}, "Variables": dict(variables),
+                      "Tables": {}}}
+        for pid, part in ((1, "Parts_block"), (2, "Parts_base"))]}
+    modulus, direction = gravity
+
+    def gravity_process(interval, value):
+        return {"python_module": "assign_vector_by_direction_process", "kratos_module": "KratosMultiphysics",
+                "process_name": "AssignVectorByDirectionProcess",
+                "Parameters": {"model_part_name": "Structure.Parts_block", "variable_name": "VOLUME_ACCELERATION",
+                               "interval": interval, "constrained": False, "modulus": value,
+                               "direction": list(direction)}}
+
+    loads = [gravity_process([ramp, "End"], modulus)]
+    if ramp > 0.0:
+        loads.insert(0, gravity_process([0.0, ramp], f"{modulus} * t / {ramp}"))
+    parameters = project_parameters(
+        name, 2, constraints=[fix_process("Structure.DISPLACEMENT_bottom", [0.0, 0.0, 0.0])],
+        loads=loads, end_time=end_time, time_step=time_step, solver=solver)
+    module, extra = contact
+    parameters["processes"]["contact_process_list"] = [{
+        "python_module": module, "kratos_module": "KratosMultiphysics.ContactStructuralMechanicsApplication",
+        "Parameters": {"model_part_name": "Structure", "contact_model_part": {"0": ["Contact_slave", "Contact_master"]},
+                       "assume_master_slave": {"0": ["Contact_slave"]}, **extra}}]
+    return write_case(folder, name, parameters, materials_data)

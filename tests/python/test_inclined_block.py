@@ -19,64 +19,25 @@ import mortarcontact as mc
 from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
 from mortarcontact.project_parameters import read_project_parameters
 
-from case_builder import fix_process, project_parameters, structured_quads, write_case, write_mdpa
+from case_builder import write_block_on_base
 
 GRAVITY = 10.0
 SLOPE = math.atan(0.5)  # tan theta = 0.5
 BLOCK = (0.5, 0.25)  # width, height
 BASE = (2.0, 0.25)
 TIME_STEP, END_TIME = 0.01, 0.5
-LAW = "LinearElasticPlaneStrain2DLaw"
 
 
 def write_inclined_block(folder, friction: float, slip_augmentation: float) -> str:
-    block_xy, block_cells = structured_quads(8, 4, *BLOCK)
-    block_xy = block_xy - [BLOCK[0] / 2, 0.0]
-    base_xy, base_cells = structured_quads(24, 3, *BASE)
-    base_xy = base_xy - [BASE[0] / 2, BASE[1]]
-    nb = len(block_xy)
-    coords = np.vstack([block_xy, base_xy])
-    ids = np.arange(1, len(coords) + 1)
-    on_block_bottom = np.abs(block_xy[:, 1]) < 1e-12
-    on_base_top = np.abs(base_xy[:, 1]) < 1e-12
-    on_base_bottom = np.abs(base_xy[:, 1] + BASE[1]) < 1e-12
-    n_block_cells = len(block_cells)
-    write_mdpa(f"{folder}/inclined_block.mdpa", coords,
-               {"SmallDisplacementElement2D4N": list(block_cells) + [tuple(int(i) + nb for i in c)
-                                                                      for c in base_cells]},
-               sub_parts={"Parts_block": {"nodes": ids[:nb], "elements": range(1, n_block_cells + 1)},
-                          "Parts_base": {"nodes": ids[nb:],
-                                         "elements": range(n_block_cells + 1, n_block_cells + len(base_cells) + 1)},
-                          "Contact_slave": {"nodes": ids[:nb][on_block_bottom]},
-                          "Contact_master": {"nodes": ids[nb:][on_base_top]},
-                          "DISPLACEMENT_bottom": {"nodes": ids[nb:][on_base_bottom]}})
-    variables = {"YOUNG_MODULUS": 1.0e6, "POISSON_RATIO": 0.3, "DENSITY": 1.0, "THICKNESS": 1.0,
-                 "FRICTION_COEFFICIENT": friction}
-    materials = {"properties": [
-        {"model_part_name": f"Structure.{part}", "properties_id": pid,
-         "Material": {"constitutive_law": {"name": LAW}, "Variables": dict(variables), "Tables": {}}}
-        for pid, part in ((1, "Parts_block"), (2, "Parts_base"))]}
-    gravity = {"python_module": "assign_vector_by_direction_process", "kratos_module": "KratosMultiphysics",
-               "process_name": "AssignVectorByDirectionProcess",
-               "Parameters": {"model_part_name": "Structure.Parts_block", "variable_name": "VOLUME_ACCELERATION",
-                              "interval": [0.0, "End"], "constrained": False, "modulus": GRAVITY,
-                              "direction": [math.sin(SLOPE), -math.cos(SLOPE), 0.0]}}
-    parameters = project_parameters(
-        "inclined_block", 2, constraints=[fix_process("Structure.DISPLACEMENT_bottom", [0.0, 0.0, 0.0])],
-        loads=[gravity], end_time=END_TIME, time_step=TIME_STEP,
+    return write_block_on_base(
+        folder, "inclined_block", block=BLOCK, base=BASE, cells=(8, 4, 24, 3), friction=friction,
+        gravity=(GRAVITY, (math.sin(SLOPE), -math.cos(SLOPE), 0.0)), end_time=END_TIME, time_step=TIME_STEP,
         solver={"solver_type": "Dynamic", "time_integration_method": "implicit", "scheme_type": "bossak",
                 "buffer_size": 3, "contact_settings": {"mortar_type": "ALMContactFrictional"},
                 "convergence_criterion": "contact_residual_criterion", "max_iteration": 15,
-                "residual_relative_tolerance": 1e-8, "residual_absolute_tolerance": 1e-12})
-    parameters["processes"]["contact_process_list"] = [{
-        "python_module": "alm_contact_process",
-        "kratos_module": "KratosMultiphysics.ContactStructuralMechanicsApplication",
-        "process_name": "ALMContactProcess",
-        "Parameters": {"model_part_name": "Structure", "contact_type": "Frictional",
-                       "contact_model_part": {"0": ["Contact_slave", "Contact_master"]},
-                       "assume_master_slave": {"0": ["Contact_slave"]},
-                       "slip_augmentation_coefficient": slip_augmentation}}]
-    return write_case(folder, "inclined_block", parameters, materials)
+                "residual_relative_tolerance": 1e-8, "residual_absolute_tolerance": 1e-12},
+        contact=("alm_contact_process", {"contact_type": "Frictional",
+                                         "slip_augmentation_coefficient": slip_augmentation}))
 
 
 class BlockHistory(StructuralMechanicsAnalysis):
