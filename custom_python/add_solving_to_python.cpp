@@ -307,7 +307,9 @@ void AddSolvingToPython(py::module_& m) {
            py::keep_alive<1, 2>(), "Kratos' solver_settings of the same names (move_mesh: move_mesh_flag).")
       .def("ElementStableTimeStep", &ExplicitStrategy::ElementStableTimeStep,
            "Critical time step of central differences bounded element by element: 2 / omega_e, omega_e^2 the "
-           "largest eigenvalue of M_e^-1 K_e (lumped mass); infinity without stiffness.");
+           "largest eigenvalue of M_e^-1 K_e (lumped mass); infinity without stiffness.")
+      .def("SetUpDofsAndMass", &ExplicitStrategy::SetUpDofsAndMass,
+           "The DoF set and the lumped mass (NODAL_MASS), before the first step (the first step does it too).");
 }
 
 }  // namespace mc::python

@@ -14,17 +14,12 @@
 namespace mc {
 
 ExplicitStrategy::ExplicitStrategy(ModelPart& model_part, std::shared_ptr<ExplicitCentralDifferencesScheme> scheme,
-                                   bool compute_reactions, bool reform_dofs_at_each_step, bool move_mesh_flag,
-                                   int time_step_prediction_level)
+                                   bool compute_reactions, bool reform_dofs_at_each_step, bool move_mesh_flag)
     : SolvingStrategy(model_part, move_mesh_flag),
       scheme_(std::move(scheme)),
       compute_reactions_(compute_reactions),
       reform_dofs_(reform_dofs_at_each_step) {
   if (!scheme_) throw Error("the explicit strategy needs a scheme");
-  if (time_step_prediction_level > 0)
-    throw NotImplementedError(Concat("time_step_prediction_level = ", time_step_prediction_level,
-                                     ": the automatic critical time step is not implemented; set it to 0 and give "
-                                     "time_stepping.time_step"));
 }
 
 void ExplicitStrategy::Initialize() {

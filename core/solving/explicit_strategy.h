@@ -12,14 +12,12 @@ namespace mc {
 /// Explicit dynamics: per step one residual assembly and a nodal update with the lumped mass,
 /// no linear system. The lumped mass of every DoF is assembled once (and again when the DoFs
 /// are reformed) from the entities' mass matrices with COMPUTE_LUMPED_MASS_MATRIX set; each
-/// node's mass is written to its NODAL_MASS value. The time step comes from `time_stepping`:
-/// the automatic critical time step (`time_step_prediction_level` > 0) is not implemented.
+/// node's mass is written to its NODAL_MASS value. The time step is the solver's (its
+/// `time_stepping`, or its prediction from ElementStableTimeStep).
 class ExplicitStrategy : public SolvingStrategy {
  public:
-  /// Throws NotImplementedError for `time_step_prediction_level` > 0.
   ExplicitStrategy(ModelPart& model_part, std::shared_ptr<ExplicitCentralDifferencesScheme> scheme,
-                   bool compute_reactions = true, bool reform_dofs_at_each_step = false, bool move_mesh_flag = true,
-                   int time_step_prediction_level = 0);
+                   bool compute_reactions = true, bool reform_dofs_at_each_step = false, bool move_mesh_flag = true);
 
   std::string Name() const override { return "explicit"; }
   void Initialize() override;
@@ -42,14 +40,17 @@ class ExplicitStrategy : public SolvingStrategy {
   /// bounded; infinity when none is.
   double ElementStableTimeStep() const;
 
+  /// The DoF set and the lumped mass (and NODAL_MASS). InitializeSolutionStep calls it at the first
+  /// step, and at every step when the DoFs are reformed; a time-step prediction needs the masses
+  /// before the first step.
+  void SetUpDofsAndMass();
+
  protected:
   /// Called at the start of every step's residual, at u_n (after the boundary conditions of the
   /// step are imposed): the explicit contact strategy updates the contact state here.
   virtual void UpdateBeforeResidual() {}
 
  private:
-  void SetUpDofsAndMass();
-
   std::shared_ptr<ExplicitCentralDifferencesScheme> scheme_;
   BlockBuilderAndSolver builder_{nullptr};  ///< DoF numbering and residual assembly only
   bool compute_reactions_;

@@ -51,6 +51,7 @@ class MechanicalSolver:
         self.mesh_path = None  # the mesh file read, named in errors about its entities
         self.sub_step_callbacks = (None, None)
         self._time_step_checked = False
+        self._predicted_time_step = None  # (time step, steps since it was predicted)
         self.convergence_history = ConvergenceHistory.from_settings(settings["convergence_history"])
         self.AddVariables()
 
@@ -62,10 +63,6 @@ class MechanicalSolver:
             if scheme != "central_differences":
                 raise _core.InputError(f"{self.settings.Where()}.scheme_type: the explicit solver supports "
                                        f"\"central_differences\", got \"{scheme}\"")
-            if self.settings["time_step_prediction_level"].GetInt() > 0:
-                raise _core.NotImplementedFeatureError(
-                    f"{self.settings.Where()}.time_step_prediction_level: automatic time-step prediction is not "
-                    "implemented; set it to 0 and give time_stepping.time_step")
             return scheme
         if not self.dynamic:
             return "static"
@@ -369,6 +366,8 @@ class MechanicalSolver:
 
     # -- time loop ----------------------------------------------------------------------------
     def ComputeDeltaTime(self, time: float) -> float:
+        if self.explicit and self.settings["time_step_prediction_level"].GetInt() > 0:
+            return self._predict_time_step()
         stepping = self.settings["time_stepping"]
         where = stepping.Where()
         if stepping.Has("time_step"):
@@ -405,6 +404,28 @@ class MechanicalSolver:
             self._time_step_checked = True  # once the lumped masses exist
             self._check_time_step()
 
+    def _predict_time_step(self) -> float:
+        """time_step_prediction_level 1: fraction_delta_time x the critical time step (bounded by
+        max_delta_time), once, before the first step; 2 and above: again every delta_time_refresh
+        steps (the critical step follows the penalty springs of the contact nodes and the
+        stiffness of the current state). time_stepping is not read then."""
+        s = self.settings
+        if self._predicted_time_step is not None:
+            dt, steps = self._predicted_time_step
+            if s["time_step_prediction_level"].GetInt() < 2 or steps < s["delta_time_refresh"].GetInt():
+                self._predicted_time_step = (dt, steps + 1)
+                return dt
+        else:
+            self.strategy.SetUpDofsAndMass()  # the masses of the estimates
+        critical, how = self.critical_time_step()
+        dt = min(s["max_delta_time"].GetDouble(), s["fraction_delta_time"].GetDouble() * critical)
+        if self._predicted_time_step is None and self.echo_level >= 1:
+            print(f"{s.Where()}.time_step_prediction_level {s['time_step_prediction_level'].GetInt()}: time step "
+                  f"{dt:.4g} (fraction_delta_time {s['fraction_delta_time'].GetDouble():.3g} of the critical "
+                  f"time step: {how}; max_delta_time {s['max_delta_time'].GetDouble():g})")
+        self._predicted_time_step = (dt, 1)
+        return dt
+
     def critical_time_step(self) -> tuple[float, str]:
         """Explicit: the largest stable time step and how it was estimated (the elements' bound)."""
         dt = self.strategy.ElementStableTimeStep()
@@ -413,7 +434,7 @@ class MechanicalSolver:
     def _check_time_step(self) -> None:
         """Central differences diverge above 2 / omega_max: say so before the run blows up."""
         stepping = self.settings["time_stepping"]
-        if not stepping.Has("time_step"):
+        if not stepping.Has("time_step") or self.settings["time_step_prediction_level"].GetInt() > 0:
             return
         time_step = stepping["time_step"].GetDouble()
         critical, how = self.critical_time_step()

@@ -98,8 +98,7 @@ LEGACY_FRICTION_KEYS = {
     for kind in ("displacement", "residual") for which in ("relative", "absolute")}
 
 
-_PREDICTION = ("only the automatic time-step prediction (time_step_prediction_level > 0) reads it, which is not "
-               "implemented")
+_PREDICTION = "only the explicit solver's time-step prediction (time_step_prediction_level > 0) reads it"
 #: Keys of STRUCTURAL_DEFAULTS accepted without effect (issue 18): (sub-block or "", key) -> why;
 #: warned when given a value other than the default (NoEffectWarnings).
 KEYS_WITHOUT_EFFECT = {
@@ -109,10 +108,9 @@ KEYS_WITHOUT_EFFECT = {
     ("model_import_settings", "serializer_trace"): "restart checkpoints are HDF5 files, not Kratos' serializer's",
     ("", "multi_point_constraints_used"): "both builders eliminate the model part's master-slave constraints "
                                           "whenever it has some",
-    ("", "delta_time_refresh"): _PREDICTION,
-    ("", "max_delta_time"): _PREDICTION,
-    ("", "fraction_delta_time"): _PREDICTION,
 }
+#: Keys the explicit solver's time-step prediction reads, and from which time_step_prediction_level.
+PREDICTION_KEYS = {"max_delta_time": 1, "fraction_delta_time": 1, "delta_time_refresh": 2}
 #: The structural solver keeps its storage between steps; the contact solver clears it, as Kratos.
 CLEAR_STORAGE_WITHOUT_EFFECT = "the strategy keeps its storage between steps (the results are the same)"
 #: Only the static scheme reads it (the dynamic schemes predict from the velocity and acceleration).
@@ -194,6 +192,12 @@ def validate_solver_settings(settings: _core.Parameters) -> None:
 def _warn_about_keys_without_effect(settings: _core.Parameters) -> None:
     defaults = _core.Parameters(STRUCTURAL_DEFAULTS)
     warn_about_keys_without_effect(settings, defaults, KEYS_WITHOUT_EFFECT)
+    explicit = settings["solver_type"].GetString() == "Dynamic" and \
+        settings["time_integration_method"].GetString() == "explicit"
+    level = settings["time_step_prediction_level"].GetInt() if explicit else 0
+    for key, needed in PREDICTION_KEYS.items():
+        if level < needed:
+            _core.NoEffectWarnings.IfGiven(settings, defaults, key, _PREDICTION.replace("> 0", f">= {needed}"))
     if settings["solver_type"].GetString() != "Static" or settings["analysis_type"].GetString() != "non_linear":
         _core.NoEffectWarnings.IfGiven(settings, defaults, "displacement_extrapolation", EXTRAPOLATION_WITHOUT_EFFECT)
     contact = settings["contact_settings"]

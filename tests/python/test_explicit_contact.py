@@ -3,6 +3,7 @@ solver, the critical time step with the penalty, the bar impact against 1D wave 
 friction on a block against its rigid-body closed forms, and the shared explicit case."""
 from __future__ import annotations
 
+import json
 import os
 
 import numpy as np
@@ -38,12 +39,16 @@ class BarImpact(StructuralMechanicsAnalysis):
                           *bar_impact.bar_state(root), root.ProcessInfo.GetValue(V("DELTA_TIME"))])
 
 
-def _run_bar(folder, **kwargs):
+def _run_bar(folder, solver=None, **kwargs):
+    """The bar impact written by bar_impact.write_case(**kwargs), its solver_settings updated by `solver`."""
     path = bar_impact.write_case(str(folder), **kwargs)
     cwd = os.getcwd()
     os.chdir(folder)
     try:
-        analysis = BarImpact(mc.Model(), read_project_parameters(os.path.basename(path)))
+        parameters = read_project_parameters(os.path.basename(path))
+        for key, value in (solver or {}).items():
+            parameters["solver_settings"].AddValue(key, mc.Parameters(json.dumps(value)))
+        analysis = BarImpact(mc.Model(), parameters)
         analysis.Run()
     finally:
         os.chdir(cwd)
@@ -181,6 +186,18 @@ def test_explicit_block_sticks_below_the_friction_angle(tmp_path):
     rows = _run_block(tmp_path, 0.6, np.arctan(0.5), 0.0)
     assert np.abs(rows[:, 3]).max() < 1e-5 * 0.5
     assert rows[-1, 4] > 0 and rows[-1, 5] == 0
+
+
+def test_predicted_time_step_of_the_bar(tmp_path):
+    """time_step_prediction_level 1 with the contact solver: fraction_delta_time (1/3) of the
+    critical step with the penalty springs, h / (c sqrt(1 + ratio)), and half that after a step
+    that ended in contact (delta_time_factor_for_contact)."""
+    critical = bar_impact.critical_time_step() / 0.9
+    _, rows = _run_bar(tmp_path, solver={"time_step_prediction_level": 1}, end_time=20 * critical)
+    assert rows[0, 8] == pytest.approx(critical / 3.0, rel=1e-9)
+    first = int(np.argmax(rows[:, 1] > 0.0))  # the first step that ends in contact
+    assert rows[first, 8] == pytest.approx(critical / 3.0, rel=1e-9)
+    assert rows[first + 1, 8] == pytest.approx(critical / 6.0, rel=1e-9)
 
 
 def _run_shared(steps=None):

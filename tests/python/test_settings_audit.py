@@ -409,15 +409,43 @@ def test_buffer_size_sets_the_history_depth(tmp_path):
 
 def test_explicit_time_integration_is_reported(tmp_path):
     """time_integration_method picks the dynamic solver: implicit runs (the square), explicit contact
-    is not implemented, nor its automatic time-step prediction (time_step_prediction_level)."""
+    with a multiplier formulation is not implemented."""
     error = _run(tmp_path / "explicit", edit=_solver(solver_type="Dynamic", time_integration_method="explicit"))
     assert isinstance(error, mc.NotImplementedFeatureError) and "explicit contact" in str(error), error
     implicit = _run(tmp_path / "implicit", base=_dense_square, edit=_solver(solver_type="Dynamic",
                                                                           time_integration_method="implicit"))
     assert implicit.model.GetModelPart("Structure").HasNodalSolutionStepVariable(mc.ACCELERATION)
-    predicted = _run(tmp_path / "predicted", base=_dense_square, edit=_solver(
-        solver_type="Dynamic", time_integration_method="explicit", time_step_prediction_level=1))
-    assert isinstance(predicted, mc.NotImplementedFeatureError) and "time_step_prediction_level" in str(predicted)
+
+
+@pytest.mark.parametrize("level", [1, 2])
+def test_explicit_time_step_prediction(tmp_path, capfd, monkeypatch, level):
+    """time_step_prediction_level 1: the explicit step is fraction_delta_time x the critical one
+    (ElementStableTimeStep), bounded by max_delta_time, time_stepping unread; 2: predicted again
+    every delta_time_refresh steps. Without the prediction its keys warn that they have no effect."""
+    from mortarcontact.solvers.mechanical_solver import MechanicalSolver
+
+    predictions = []
+    critical_time_step = MechanicalSolver.critical_time_step
+    monkeypatch.setattr(MechanicalSolver, "critical_time_step",
+                        lambda solver: predictions.append(1) or critical_time_step(solver))
+    explicit = {"solver_type": "Dynamic", "time_integration_method": "explicit", "time_stepping": {"time_step": 1.0}}
+    refresh = {"delta_time_refresh": 2} if level > 1 else {}
+    analysis = _run(tmp_path / "predicted", base=_dense_square, edit=_solver(
+        **explicit, time_step_prediction_level=level, fraction_delta_time=0.25, **refresh))
+    assert not isinstance(analysis, Exception), analysis
+    root = analysis.model.GetModelPart("Structure")
+    critical = analysis.solver.strategy.ElementStableTimeStep()
+    assert root.ProcessInfo.GetValue(mc.DELTA_TIME) == pytest.approx(0.25 * critical, rel=1e-12)
+    steps = root.ProcessInfo.GetValue(mc.STEP)
+    assert len(predictions) == (1 if level == 1 else (steps + 1) // 2)
+    assert "has no effect" not in capfd.readouterr().err
+    capped = _run(tmp_path / "capped", base=_dense_square, edit=_solver(
+        **explicit, time_step_prediction_level=level, max_delta_time=0.1 * critical))
+    assert capped.model.GetModelPart("Structure").ProcessInfo.GetValue(mc.DELTA_TIME) == pytest.approx(0.1 * critical)
+    _run(tmp_path / "unread", base=_dense_square, edit=_solver(
+        **{**explicit, "time_stepping": {"time_step": 0.1 * critical}}, max_delta_time=0.5, delta_time_refresh=10))
+    err = capfd.readouterr().err
+    assert "'max_delta_time' = 0.5" in err and "'delta_time_refresh' = 10" in err
 
 
 def test_ignore_variables_not_in_solution_step_data(tmp_path):

@@ -210,14 +210,7 @@ TEST(ExplicitCentralDifferences, ChangingTimeStepKeepsTheAmplitude) {
   EXPECT_NEAR(amplitude, 1.0, 2e-3);
 }
 
-TEST(ExplicitStrategy, TimeStepPredictionIsNotImplemented) {
-  Oscillator o;
-  try {
-    ExplicitStrategy strategy(o.mp, std::make_shared<ExplicitCentralDifferencesScheme>(), true, false, false, 1);
-    FAIL();
-  } catch (const NotImplementedError& e) {
-    EXPECT_NE(std::string(e.what()).find("time_step_prediction_level"), std::string::npos) << e.what();
-  }
+TEST(ExplicitCentralDifferencesScheme, StiffnessProportionalDampingIsNotImplemented) {
   EXPECT_THROW(ExplicitCentralDifferencesScheme(0.0, 1e-3), NotImplementedError);
 }
 
