@@ -9,7 +9,7 @@ install(TARGETS mortarcontact_core mc_build_settings mc_dependencies
   RUNTIME DESTINATION ${MC_INSTALL_LIBDIR}
   INCLUDES DESTINATION ${MC_INSTALL_INCLUDEDIR})
 
-foreach(layer core structural custom_utilities custom_conditions custom_linear_solvers custom_processes
+foreach(layer core structural thermal custom_utilities custom_conditions custom_linear_solvers custom_processes
               custom_strategies custom_formulations)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${layer}/
     DESTINATION ${MC_INSTALL_INCLUDEDIR}/${layer}

@@ -97,6 +97,7 @@ PYBIND11_MODULE(_core, m) {
        &AddSolvingToPython},
       {"structural", "Registration of the structural elements, conditions and laws (structural/).",
        &AddStructuralToPython},
+      {"thermal", "Registration of the heat conduction elements (thermal/).", &AddThermalToPython},
       {"utilities", "Function expressions, nodal assignments and the log sink (core/utilities, core/processes).",
        &AddUtilitiesToPython},
       {"contact_utilities", "Normals of contact interfaces and the MortarUpdater hook (custom_utilities).",

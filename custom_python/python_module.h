@@ -25,6 +25,7 @@ void AddIoToPython(py::module_& m);
 void AddLinearSolversToPython(py::module_& m);
 void AddSolvingToPython(py::module_& m);
 void AddStructuralToPython(py::module_& m);
+void AddThermalToPython(py::module_& m);
 void AddUtilitiesToPython(py::module_& m);
 void AddContactUtilitiesToPython(py::module_& m);
 void AddContactProcessesToPython(py::module_& m);

@@ -31,6 +31,7 @@ if _short_spin:
 __version__ = "0.1.0"
 
 _core.RegisterStructuralMechanics()
+_core.RegisterThermal()
 _core.RegisterContactConditions()
 _core.ExportRegisteredNames()
 globals().update({name: getattr(_core, name) for name in _core.VariableNames() + _core.FlagNames()})

@@ -6,7 +6,8 @@
   a uniform stress state is transmitted exactly (every nodal displacement is the exact linear field
   and the multipliers are the exact traction, to 1e-10);
 - a cantilever cut in two non-matching meshes deflects as the same cantilever meshed in one piece
-  and as Timoshenko beam theory.
+  and as Timoshenko beam theory;
+- ScalarMeshTying of TEMPERATURE between heat conduction blocks: the tied thermal patch test.
 """
 from __future__ import annotations
 
@@ -173,6 +174,71 @@ def test_tied_patch_2d_transmits_a_constant_stress_exactly(tmp_path):
                     {"constraints": [fix]})
     # the two interior slave nodes in both components, the two end ones in none
     assert _check_patch(analysis, gradient, [0.0, 1.0], 2) == 4
+
+
+def _run_thermal(folder, name, coords, elements, parts, gradient, dim, fixed):
+    """The blocks as steady heat conduction (LaplacianElement, CONDUCTIVITY 2) tied by
+    ScalarMeshTying on TEMPERATURE, with T = gradient . x fixed at the nodes `fixed`."""
+    thermal = {name.replace("SmallDisplacementElement", "LaplacianElement"): cells for name, cells in elements.items()}
+    parts["Outer"] = {"nodes": fixed}
+    expression = " + ".join(f"({g!r})*{'XYZ'[i]}" for i, g in enumerate(gradient))
+    fix = {"python_module": "assign_scalar_variable_process", "kratos_module": "KratosMultiphysics",
+           "Parameters": {"model_part_name": "Structure.Outer", "variable_name": "TEMPERATURE",
+                          "value": expression, "interval": [0.0, "End"]}}
+    cb.write_mdpa(os.path.join(folder, f"{name}.mdpa"), coords, thermal, None, parts)
+    params = cb.project_parameters(name, dim, constraints=[fix], solver={
+        "convergence_criterion": "contact_residual_criterion", "auxiliary_dofs_list": ["TEMPERATURE"],
+        "auxiliary_reaction_list": ["REACTION_FLUX"], "contact_settings": {"mortar_type": "ScalarMeshTying"}})
+    tying = _tying_process()
+    tying["Parameters"]["variable_name"] = "TEMPERATURE"
+    params["processes"]["contact_process_list"] = [tying]
+    materials = {"properties": [{"model_part_name": "Structure", "properties_id": 1,
+                                 "Material": {"Variables": {"CONDUCTIVITY": CONDUCTIVITY}, "Tables": {}}}]}
+    path = cb.write_case(folder, name, params, materials)
+    cwd = os.getcwd()
+    os.chdir(folder)
+    try:
+        analysis = StructuralMechanicsAnalysis(mc.Model(), read_project_parameters(path), progress=False)
+        analysis.Run()
+    finally:
+        os.chdir(cwd)
+    return analysis
+
+
+CONDUCTIVITY = 2.0
+
+
+@pytest.mark.parametrize("dim", [2, 3])
+def test_tied_thermal_patch_transmits_a_constant_flux_exactly(tmp_path, dim):
+    """ScalarMeshTying of TEMPERATURE between steady heat conduction blocks (LaplacianElement) on
+    a non-matching interface (2D: 3 slave segments against 2; 3D: 2 x 2 slave faces against
+    3 x 3): with T = a . x on the boundary (2D: all of it; 3D: the bottom and top faces, a along
+    z, the sides insulated, since T fixed on both sides all around the interface's edge would tie
+    more slave rows than it leaves free DoFs: a singular system) every node takes the exact
+    linear field, and the multiplier of every free slave node is the exact flux through the
+    interface, k lambda =
+    CONDUCTIVITY a . n = -q . n (q = -CONDUCTIVITY grad T: the heat the master side puts into the
+    slave side per unit area, as k lambda is the traction in the displacement tie)."""
+    gradient = [0.7, -1.3] if dim == 2 else [0.0, 0.0, -1.1]
+    coords, elements, parts = _two_blocks_2d() if dim == 2 else _two_blocks_3d()
+    if dim == 2:
+        fixed = _outer_nodes(coords, ([0.0, 0.0], [1.0, 2.0]))
+    else:
+        fixed = np.flatnonzero(np.isclose(coords[:, 2], 0.0) | np.isclose(coords[:, 2], 2.0)) + 1
+    analysis = _run_thermal(str(tmp_path), f"thermal{dim}d", coords, elements, parts, gradient, dim, fixed)
+    root = analysis.model["Structure"]
+    assert all(converged for _, _, _, converged, _ in analysis.step_log)
+    x0 = np.array([[n.X0, n.Y0, n.Z0] for n in root.Nodes])[:, :dim]
+    temperature = root.GetNodalValues(mc.TEMPERATURE)
+    exact = x0 @ np.array(gradient)
+    assert np.abs(temperature - exact).max() <= 1e-10 * np.abs(exact).max()
+    k = root.ProcessInfo.GetValue(mc.SCALE_FACTOR)
+    flux = CONDUCTIVITY * gradient[-1]  # the slave (lower) side's outward normal is +e_dim
+    free = [n for n in root.GetSubModelPart("Contact").Nodes
+            if n.Is(mc.SLAVE) and not n.IsFixed(mc.SCALAR_LAGRANGE_MULTIPLIER)]
+    assert len(free) == (2 if dim == 2 else 9)
+    for node in free:
+        assert k * node.GetSolutionStepValue(mc.SCALAR_LAGRANGE_MULTIPLIER) == pytest.approx(flux, rel=1e-10), node.Id
 
 
 def _tetrahedra(hexahedra):
