@@ -1,6 +1,7 @@
 """Writes small Kratos-format cases (mdpa + ProjectParameters.json + materials.json) for tests."""
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 
@@ -180,3 +181,17 @@ def write_block_on_base(folder, name: str, *, block: tuple, base: tuple, cells: 
         "Parameters": {"model_part_name": "Structure", "contact_model_part": {"0": ["Contact_slave", "Contact_master"]},
                        "assume_master_slave": {"0": ["Contact_slave"]}, **extra}}]
     return write_case(folder, name, parameters, materials_data)
+
+
+def run_analysis(folder, path: str, analysis_class=None, **kwargs):
+    """Runs the case `path` from inside `folder` (its relative file names are read there) with
+    `analysis_class` (StructuralMechanicsAnalysis by default, without progress bar); returns it."""
+    import mortarcontact as mc
+    from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
+    from mortarcontact.project_parameters import read_project_parameters
+
+    with contextlib.chdir(folder):
+        analysis = (analysis_class or StructuralMechanicsAnalysis)(mc.Model(), read_project_parameters(path),
+                                                                   **{"progress": False, **kwargs})
+        analysis.Run()
+    return analysis

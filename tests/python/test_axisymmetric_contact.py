@@ -16,7 +16,15 @@ import mortarcontact as mc
 from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
 from mortarcontact.project_parameters import read_project_parameters
 
-from case_builder import fix_process, materials, project_parameters, structured_quads, write_case, write_mdpa
+from case_builder import (
+    fix_process,
+    materials,
+    project_parameters,
+    run_analysis,
+    structured_quads,
+    write_case,
+    write_mdpa,
+)
 from csma_cases import use_penalty
 
 A, B = 0.5, 1.5          # inner and outer radius
@@ -70,13 +78,7 @@ def write_rings(folder: str, axisymmetric: bool) -> str:
 
 def contact_pressures(folder: str, axisymmetric: bool):
     path = write_rings(folder, axisymmetric)
-    cwd = os.getcwd()
-    os.chdir(folder)
-    try:
-        analysis = StructuralMechanicsAnalysis(mc.Model(), read_project_parameters(path), progress=False)
-        analysis.Run()
-    finally:
-        os.chdir(cwd)
+    analysis = run_analysis(folder, path)
     root = analysis.model["Structure"]
     slave = root.GetSubModelPart("contact_slave")
     scale = root.ProcessInfo.GetValue(mc.SCALE_FACTOR)

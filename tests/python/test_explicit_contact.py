@@ -14,7 +14,7 @@ from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
 from mortarcontact.cases import bar_impact
 from mortarcontact.project_parameters import read_project_parameters
 
-from case_builder import write_block_on_base
+from case_builder import run_analysis, write_block_on_base
 from csma_cases import CSMA_CASES
 
 V = mc.GetVariable
@@ -138,12 +138,7 @@ def _run_block(folder, friction: float, slope: float, speed: float, end_time: fl
             rows.append([root.ProcessInfo.GetValue(V("TIME")), m @ v[:, 0] / m.sum(), m @ v[:, 1] / m.sum(),
                          u[:, 0].mean(), len(slave), sum(n.Is(mc.SLIP) for n in slave)])
 
-    cwd = os.getcwd()
-    os.chdir(folder)
-    try:
-        Block(mc.Model(), read_project_parameters(os.path.basename(path)), progress=False).Run()
-    finally:
-        os.chdir(cwd)
+    run_analysis(folder, path, Block)
     return np.array(rows)
 
 

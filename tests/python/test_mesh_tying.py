@@ -19,8 +19,6 @@ import pytest
 from test_contact_cases import run_csma_case
 
 import mortarcontact as mc
-from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
-from mortarcontact.project_parameters import read_project_parameters
 
 import case_builder as cb
 from csma_cases import CSMA_CASES, KRATOS_SNAPSHOTS, MESH_TYING_CASES, check_blocks
@@ -114,14 +112,7 @@ def _run(folder, name, coords, elements, parts, law, processes, conditions=None,
     if contact:
         params["processes"]["contact_process_list"] = [_tying_process()]
     path = cb.write_case(folder, name, params, cb.materials("Structure", law, E, NU))
-    cwd = os.getcwd()
-    os.chdir(folder)
-    try:
-        analysis = StructuralMechanicsAnalysis(mc.Model(), read_project_parameters(path), progress=False)
-        analysis.Run()
-    finally:
-        os.chdir(cwd)
-    return analysis
+    return cb.run_analysis(folder, path)
 
 
 def _linear_field(gradient):
@@ -195,14 +186,7 @@ def _run_thermal(folder, name, coords, elements, parts, gradient, dim, fixed):
     materials = {"properties": [{"model_part_name": "Structure", "properties_id": 1,
                                  "Material": {"Variables": {"CONDUCTIVITY": CONDUCTIVITY}, "Tables": {}}}]}
     path = cb.write_case(folder, name, params, materials)
-    cwd = os.getcwd()
-    os.chdir(folder)
-    try:
-        analysis = StructuralMechanicsAnalysis(mc.Model(), read_project_parameters(path), progress=False)
-        analysis.Run()
-    finally:
-        os.chdir(cwd)
-    return analysis
+    return cb.run_analysis(folder, path)
 
 
 CONDUCTIVITY = 2.0
@@ -360,13 +344,7 @@ def _cantilever(folder, name, tied, length=10.0, height=1.0, load=-10.0):
         params["processes"]["contact_process_list"] = [process]
     path = cb.write_case(folder, name, params, cb.materials("Structure", "LinearElasticPlaneStress2DLaw", E, NU,
                                                             THICKNESS=1.0))
-    cwd = os.getcwd()
-    os.chdir(folder)
-    try:
-        analysis = StructuralMechanicsAnalysis(mc.Model(), read_project_parameters(path), progress=False)
-        analysis.Run()
-    finally:
-        os.chdir(cwd)
+    analysis = cb.run_analysis(folder, path)
     root = analysis.model["Structure"]
     tip = [root.GetNode(int(i)) for i in end]
     return np.mean([n.GetSolutionStepValue(mc.DISPLACEMENT)[1] for n in tip])

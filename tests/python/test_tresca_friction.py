@@ -14,10 +14,16 @@ import numpy as np
 import pytest
 
 import mortarcontact as mc
-from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
-from mortarcontact.project_parameters import read_project_parameters
 
-from case_builder import fix_process, materials, project_parameters, structured_quads, write_case, write_mdpa
+from case_builder import (
+    fix_process,
+    materials,
+    project_parameters,
+    run_analysis,
+    structured_quads,
+    write_case,
+    write_mdpa,
+)
 
 E, NU = 2.0e5, 0.3
 BASE_E = 1e4 * E
@@ -80,13 +86,7 @@ def drag_force(folder: str, push: float, mortar_type: str, law: str = "Tresca",
     over its nodes of the part of their nodal force normal to NORMAL, from the pairs' right-hand
     sides), the support reaction of the base along x, and the current length of the slave face."""
     path = write_blocks(folder, push, mortar_type, law, base_young)
-    cwd = os.getcwd()
-    os.chdir(folder)
-    try:
-        analysis = StructuralMechanicsAnalysis(mc.Model(), read_project_parameters(path), progress=False)
-        analysis.Run()
-    finally:
-        os.chdir(cwd)
+    analysis = run_analysis(folder, path)
     assert all(converged for _, _, _, converged, _ in analysis.step_log)
     root = analysis.model["Structure"]
     slave = root.GetSubModelPart("contact_slave")

@@ -11,9 +11,8 @@ namespace mc {
 void RegisterThermal() {
   static std::once_flag once;
   std::call_once(once, [] {
-    for (const GeometryType type :
-         {GeometryType::Triangle2D3, GeometryType::Quadrilateral2D4, GeometryType::Tetrahedra3D4,
-          GeometryType::Hexahedra3D8}) {
+    for (const GeometryType type : {GeometryType::Triangle2D3, GeometryType::Quadrilateral2D4,
+                                    GeometryType::Tetrahedra3D4, GeometryType::Hexahedra3D8}) {
       auto prototype = std::make_shared<const LaplacianElement>(0, Geometry(type, {}), nullptr);
       Registry<Element>::Instance().Add(prototype->Info(), prototype);
     }

@@ -52,7 +52,8 @@ void LaplacianElement::ConductivityAndSource(Matrix& conductivity, Vector& sourc
     const Matrix gradients = dN * J.inverse();
     const double dV = points[g].weight * det;
     conductivity.noalias() += (k * dV) * gradients * gradients.transpose();
-    source.noalias() += (dV * N.row(static_cast<Eigen::Index>(g)).dot(Q)) * N.row(static_cast<Eigen::Index>(g)).transpose();
+    source.noalias() +=
+        (dV * N.row(static_cast<Eigen::Index>(g)).dot(Q)) * N.row(static_cast<Eigen::Index>(g)).transpose();
   }
 }
 
