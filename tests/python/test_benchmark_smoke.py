@@ -27,3 +27,21 @@ def test_quick_run_writes_table_with_exact_solution(tmp_path):
         error = float(cells[-2])
         assert error < 1e-10
         assert re.fullmatch(r"\d+", cells[12])  # peak RSS in MB
+
+
+def test_scaling_model_reads_the_measured_phases():
+    """benchmarks/mpi/scaling_model.py parses the 3D Hertz per-phase table it is built on (so that
+    a change of that table's layout cannot silently break it), and its distributed design divides
+    every phase but the communication: on one rank both designs cost the same, and the distributed
+    iteration is faster on more ranks."""
+    sys.path.insert(0, str(BENCHMARK.parent / "mpi"))
+    try:
+        import scaling_model
+    finally:
+        sys.path.pop(0)
+    model = scaling_model.Model(scaling_model.read_measured())
+    assert len(model.inputs) >= 2 and 1.0 < model.solve_g < 2.0 and 0.5 < model.pairs_g < 0.8
+    one = [sum(model.iteration(1.0e6, 1, distributed).values()) for distributed in (False, True)]
+    assert one[0] == one[1]
+    many = [sum(model.iteration(1.0e6, 64, distributed).values()) for distributed in (False, True)]
+    assert many[1] < many[0] < one[0]
