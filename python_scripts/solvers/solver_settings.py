@@ -6,6 +6,7 @@ from .. import _core
 from ..utilities import warn_about_keys_without_effect
 from .contact_mechanical_solver import contact_settings_defaults
 from .convergence_history import ConvergenceHistory
+from .mpc_contact_mechanical_solver import mpc_contact_settings_defaults
 
 STRUCTURAL_DEFAULTS = """{
     "solver_type": "mechanical_solver",
@@ -79,14 +80,6 @@ STRUCTURAL_DEFAULTS = """{
     "mpc_contact_settings": {},
     "convergence_history": {},
     "step_splitting": {}
-}"""
-
-MPC_CONTACT_SETTINGS_DEFAULTS = """{
-    "contact_type": "Frictionless",
-    "simplified_semi_smooth_newton": false,
-    "inner_loop_iterations": 10,
-    "update_each_nl_iteration": false,
-    "enforce_ntn": false
 }"""
 
 # Obsolete keys dropped with a warning (spec 2.3): the solve always happens on the root part.
@@ -174,7 +167,7 @@ def validate_solver_settings(settings: _core.Parameters) -> None:
     translate_legacy_solver_settings(settings)
     settings.RecursivelyValidateAndAssignDefaults(_core.Parameters(STRUCTURAL_DEFAULTS))
     for key, defaults in (("contact_settings", contact_settings_defaults()),
-                          ("mpc_contact_settings", _core.Parameters(MPC_CONTACT_SETTINGS_DEFAULTS))):
+                          ("mpc_contact_settings", mpc_contact_settings_defaults())):
         if settings[key].size() > 0:
             settings[key].RecursivelyValidateAndAssignDefaults(defaults)
     settings["convergence_history"].ValidateAndAssignDefaults(ConvergenceHistory.GetDefaultParameters())
