@@ -28,8 +28,9 @@ KEYS_WITHOUT_EFFECT = {
                               "configuration they are built at: there is no tangent of the normal to include",
     ("", "clear_inactive_for_post"): "an inactive node transmits no force: its CONTACT_FORCE and "
                                      "NORMAL_CONTACT_STRESS are zero either way",
-    ("", "update_condition_relation_step"): "the relations are rebuilt at every step from its start configuration "
-                                            "(and at every iteration with mpc_contact_settings.update_each_nl_iteration)",
+    ("", "update_condition_relation_step"): "the relations are rebuilt at every step from its start "
+                                            "configuration (and at every iteration with "
+                                            "mpc_contact_settings.update_each_nl_iteration)",
 }
 
 

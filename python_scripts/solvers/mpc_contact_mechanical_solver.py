@@ -5,10 +5,10 @@ from __future__ import annotations
 from .. import _core
 from ..contact_processes.mpc_contact_process import mpc_formulation
 from ..contact_strategies.strategy_factory import create_builder_and_solver
-from ..utilities import warn_about_keys_without_effect
 from .mechanical_solver import MechanicalSolver
 
-#: Keys accepted without effect (issue 18): (sub-block or "", key) -> why.
+#: Keys accepted without effect (issue 18): (sub-block or "", key) -> why; warned by the solver settings'
+#: validation, whichever solver runs.
 KEYS_WITHOUT_EFFECT = {
     ("", "enforce_ntn"): "Kratos 10.4 accepts it without effect too (its node-to-node enforcement is disabled)",
 }
@@ -34,7 +34,6 @@ class MPCContactMechanicalSolver(MechanicalSolver):
             raise _core.NotImplementedFeatureError(
                 f"{settings['time_integration_method'].Where()}: explicit MPC contact is not implemented; the MPC "
                 "contact solvers are static or implicit dynamic")
-        warn_about_keys_without_effect(mpc, mpc_contact_settings_defaults(), KEYS_WITHOUT_EFFECT)
 
     def AddVariables(self) -> None:
         super().AddVariables()

@@ -6,6 +6,7 @@ from .. import _core
 from ..utilities import warn_about_keys_without_effect
 from .contact_mechanical_solver import contact_settings_defaults
 from .convergence_history import ConvergenceHistory
+from .mpc_contact_mechanical_solver import KEYS_WITHOUT_EFFECT as MPC_KEYS_WITHOUT_EFFECT
 from .mpc_contact_mechanical_solver import mpc_contact_settings_defaults
 
 STRUCTURAL_DEFAULTS = """{
@@ -189,6 +190,9 @@ def _warn_about_keys_without_effect(settings: _core.Parameters) -> None:
     warn_about_keys_without_effect(settings, defaults, KEYS_WITHOUT_EFFECT)
     if settings["solver_type"].GetString() != "Static" or settings["analysis_type"].GetString() != "non_linear":
         _core.NoEffectWarnings.IfGiven(settings, defaults, "displacement_extrapolation", EXTRAPOLATION_WITHOUT_EFFECT)
+    if settings["mpc_contact_settings"].size() > 0:
+        warn_about_keys_without_effect(settings["mpc_contact_settings"], mpc_contact_settings_defaults(),
+                                       MPC_KEYS_WITHOUT_EFFECT)
     contact = settings["contact_settings"]
     if contact.size() > 0 and contact["mortar_type"].GetString():
         _core.NoEffectWarnings.IfGiven(settings, defaults, "use_old_stiffness_in_first_iteration",

@@ -16,9 +16,10 @@ import pytest
 from test_contact_cases import SnapshotAnalysis, run_csma_case
 
 import mortarcontact as mc
+from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
 from mortarcontact.project_parameters import read_project_parameters
 
-from csma_cases import KRATOS_SNAPSHOTS, reference_nodes, reference_values
+from csma_cases import CSMA_CASES, KRATOS_SNAPSHOTS, reference_nodes, reference_values
 
 CASE_3D = "mpc_contact_tests/3D_contact_simplest_patch_matching_test"
 CASE_2D = "mpc_contact_tests/2D_contact_simplest_patch_matching_test"
@@ -70,7 +71,7 @@ def test_shared_3d_case(csma_cases, monkeypatch):
     assert _at_most_one_more(_iterations(analysis), kratos["newton_iterations"])
     # Every slave node pressed, the same pressure (a uniform state), the force balancing the support.
     root = analysis.model["Structure"]
-    slaves = [n for n in root.GetSubModelPart("Contact_Part_Slave").Nodes]
+    slaves = list(root.GetSubModelPart("Contact_Part_Slave").Nodes)
     stresses = [n.GetValue(mc.GetVariable("NORMAL_CONTACT_STRESS")) for n in slaves]
     assert all(n.Is(mc.ACTIVE) for n in slaves)
     assert max(stresses) < 0 and (max(stresses) - min(stresses)) < 1e-9 * abs(min(stresses))
@@ -120,3 +121,84 @@ def test_zero_gap_2d_case_matches_kratos(monkeypatch):
           f"difference to Kratos 10.4 {difference:.1e}")
     assert difference < KRATOS_TOLERANCE
     assert _at_most_one_more(_iterations(analysis), kratos["newton_iterations"])
+
+
+def _run_2d(folder, edit):
+    """The shared 2D case (run from the shared folder) with its parameters edited by ``edit`` (a dict)."""
+    with open(os.path.join(CSMA_CASES, f"{CASE_2D}_parameters.json")) as f:
+        params = json.load(f)
+    params["processes"].pop("json_check_process")
+    edit(params)
+    os.makedirs(folder, exist_ok=True)
+    path = os.path.join(folder, "parameters.json")
+    with open(path, "w") as f:
+        json.dump(params, f)
+    analysis = StructuralMechanicsAnalysis(mc.Model(), read_project_parameters(path), progress=False)
+    analysis.Run()
+    return analysis
+
+
+def _mpc_settings(**keys):
+    return lambda params: params["solver_settings"]["mpc_contact_settings"].update(keys)
+
+
+def _process_settings(**keys):
+    return lambda params: params["processes"]["contact_process_list"][0]["Parameters"].update(keys)
+
+
+def test_pulled_interface_is_released(csma_cases, monkeypatch, tmp_path):
+    """Pulling the upper block away: the search predicts contact (gap 0.001 < 0.01 h), the predictor's
+    reactions pull, the reaction check releases both slave nodes and the lower block stays unloaded."""
+    monkeypatch.chdir(csma_cases)
+
+    def pull(params):
+        params["processes"]["constraints_process_list"][1]["Parameters"]["value"] = [0.0, "2.0e-1*t", 0.0]
+    analysis = _run_2d(tmp_path, pull)
+    root = analysis.model["Structure"]
+    assert not any(root.GetNode(i).Is(mc.ACTIVE) for i in (3, 4))
+    assert all(abs(root.GetNode(i).GetSolutionStepValue(mc.GetVariable("DISPLACEMENT_Y"))) < 1e-15 for i in (3, 4))
+    assert all(root.GetNode(i).GetValue(mc.GetVariable("NORMAL_CONTACT_STRESS")) == 0.0 for i in (3, 4))
+
+
+def test_mpc_contact_settings(csma_cases, monkeypatch, tmp_path):
+    """solver_settings.mpc_contact_settings: the simplified semi-smooth Newton (passes of
+    inner_loop_iterations on a frozen set) and update_each_nl_iteration give the same answer on the
+    2D case; contact_type Frictional is not implemented; an unknown key names the nearest one."""
+    monkeypatch.chdir(csma_cases)
+    base = _run_2d(tmp_path / "base", lambda p: None)
+    uy = base.model["Structure"].GetNode(3).GetSolutionStepValue(mc.GetVariable("DISPLACEMENT_Y"))
+    for keys in ({"simplified_semi_smooth_newton": True, "inner_loop_iterations": 3},
+                 {"update_each_nl_iteration": True}):
+        analysis = _run_2d(tmp_path / str(len(keys)), _mpc_settings(**keys))
+        strategy = analysis.solver.strategy
+        assert strategy.InnerLoopIterations() == 1  # the predictor's set holds
+        node = analysis.model["Structure"].GetNode(3)
+        assert node.GetSolutionStepValue(mc.GetVariable("DISPLACEMENT_Y")) == pytest.approx(uy, rel=1e-12)
+    with pytest.raises(mc.NotImplementedFeatureError, match=r"mpc_contact_settings\.contact_type.*Frictional"):
+        _run_2d(tmp_path, _mpc_settings(contact_type="Frictional"))
+    with pytest.raises(mc.InputError, match="inner_loop_iterations"):
+        _run_2d(tmp_path, _mpc_settings(inner_loop_iteration=3))
+    with pytest.raises(mc.InputError, match=r"inner_loop_iterations: 0 must be at least 1"):
+        _run_2d(tmp_path, _mpc_settings(inner_loop_iterations=0))
+
+
+def test_mpc_contact_process_keys(csma_cases, monkeypatch, tmp_path):
+    """mpc_contact_process: reaction_check_stiffness_factor reaches the active-set check (a threshold
+    above the contact pressure releases the pressed nodes: the run cannot settle); the contact types and
+    the other keys are validated, naming the key and the nearest valid value."""
+    monkeypatch.chdir(csma_cases)
+    # E = 2.069e11; the pressure is about 2.3e10: a factor 1 releases the nodes, which then penetrate.
+    with pytest.raises(mc.ConvergenceFailure):
+        _run_2d(tmp_path, _process_settings(reaction_check_stiffness_factor=1.0))
+    with pytest.raises(mc.InputError, match=r"reaction_check_stiffness_factor: must be a non-negative number"):
+        _run_2d(tmp_path, _process_settings(reaction_check_stiffness_factor=-1.0))
+    with pytest.raises(mc.InputError, match=r"contact_type.*did you mean 'Frictionless'"):
+        _run_2d(tmp_path, _process_settings(contact_type="Frictionles"))
+    with pytest.raises(mc.NotImplementedFeatureError, match=r"contact_type.*FrictionalPureSlip"):
+        _run_2d(tmp_path, _process_settings(contact_type="FrictionalPureSlip"))
+    with pytest.raises(mc.NotImplementedFeatureError, match=r"contact_type.*MeshTying"):
+        _run_2d(tmp_path, _process_settings(contact_type="MeshTying"))
+    with pytest.raises(mc.InputError, match=r"normal_variation: unknown value"):
+        _run_2d(tmp_path, _process_settings(normal_variation="nodal"))
+    with pytest.raises(mc.InputError, match=r"mpc_contact_process needs solver_settings\.mpc_contact_settings"):
+        _run_2d(tmp_path, lambda p: p["solver_settings"].pop("mpc_contact_settings"))
