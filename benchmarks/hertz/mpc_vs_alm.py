@@ -18,9 +18,9 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 
-import harness  # noqa: E402
-
 from mortarcontact.cases.hertz import evaluate, load_reference, write_case  # noqa: E402
+
+import harness  # noqa: E402
 
 #: Kratos' wheels have no UMFPACK: both codes use a direct LU (ours: UMFPACK)
 KRATOS_SOLVER = 'solver_settings.linear_solver_settings={"solver_type": "LinearSolversApplication.sparse_lu"}'
