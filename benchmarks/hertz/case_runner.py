@@ -24,8 +24,9 @@ after each step; mortarcontact: the stage's step log), convergence per step, pea
 of the process (getrusage), and at the end: per slave node the initial coordinates,
 LAGRANGE_MULTIPLIER_CONTACT_PRESSURE (historical), AUGMENTED_NORMAL_CONTACT_PRESSURE and
 NORMAL_CONTACT_STRESS (MPC contact; non-historical), WEIGHTED_GAP and the ACTIVE flag; the sums of
-REACTION over the clamped bottom and the pushed top. A failure is recorded as status "not available" (not implemented) or
-"failed" with the message, and the script exits 0 so that the harness can report it.
+REACTION over the clamped bottom and the pushed top. A failure is recorded as status "not
+available" (not implemented) or "failed" with the message, and the script exits 0 so that the
+harness can report it.
 """
 from __future__ import annotations
 
