@@ -42,7 +42,10 @@ class MPCContactConstraints {
 
   /// Nodal gap g_j = WEIGHTED_GAP / NODAL_MAUX of the last Measure (0 for a node no pair reaches).
   double NodalGap(const Node& node) const;
-  std::size_t NumberOfRelations() const noexcept { return relations_.size(); }
+  /// (slave node, its relation) of the last Relate.
+  const std::vector<std::pair<Node*, std::shared_ptr<MasterSlaveConstraint>>>& Relations() const noexcept {
+    return relations_;
+  }
 
  private:
   struct SlaveRow {
