@@ -3,7 +3,7 @@
 
 #include <atomic>
 
-#include "core/utilities/string_utilities.h"
+#include "custom_conditions/mortar_geometry_token.h"
 #include "custom_utilities/contact_variables.h"
 #include "custom_utilities/normal_calculation_utilities.h"
 
@@ -36,9 +36,7 @@ bool ComputeKinematics(const PairedCondition& pair, const ProcessInfo& info,
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
 std::string MPCMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::Info() const {
-  return TNumNodes == TNumNodesMaster
-             ? Concat("MPCMortarContactCondition", TDim, "D", TNumNodes, "N")
-             : Concat("MPCMortarContactCondition", TDim, "D", TNumNodes, "N", TNumNodesMaster, "N");
+  return "MPCMortarContactCondition" + MortarGeometryToken(TDim, TNumNodes, TNumNodesMaster);
 }
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
