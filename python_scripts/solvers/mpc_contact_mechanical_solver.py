@@ -25,7 +25,7 @@ def mpc_contact_settings_defaults() -> _core.Parameters:
 class MPCContactMechanicalSolver(MechanicalSolver):
     def __init__(self, model, settings, **kwargs):
         mpc = settings["mpc_contact_settings"]
-        self.formulation = mpc_formulation(mpc["contact_type"], "solver_settings.mpc_contact_settings")
+        self.formulation = mpc_formulation(mpc["contact_type"], "the MPC contact solver")
         # The active set is decided from the reactions; the DoF numbering follows the constraints.
         for key in ("compute_reactions", "clear_storage", "reform_dofs_at_each_step"):
             settings[key].SetBool(True)
