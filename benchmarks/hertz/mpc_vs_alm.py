@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: BSD-3-Clause
-"""Issue 13, item 2: the 2D Hertz cylinder with MPC contact against ALM and Hertz, ours and Kratos
-10.4's, on the same files (mortarcontact.cases.hertz, ``write_case(..., mpc=True)`` for MPC).
+"""Issue 13, item 2: the Hertz cases with MPC contact against ALM and Hertz, ours and Kratos 10.4's, on
+the same files (mortarcontact.cases.hertz, ``write_case(..., mpc=True)`` for MPC).
 
-    python benchmarks/hertz/mpc_vs_alm.py [--sizes 2k,8k] [--out DIR]
+    python benchmarks/hertz/mpc_vs_alm.py [--cases hertz2d_2k,hertz2d_8k,hertz3d_15k] [--out DIR]
 Prints a markdown table (peak pressure and contact half-width against Hertz for each run's own force,
 Newton iterations per step, analysis time) and writes it to results_mpc.md.
 Environment: MORTARCONTACT_KRATOS_VENV (as run_kratos.py).
@@ -42,7 +42,7 @@ def row(label: str, record: dict, hertz: dict) -> str:
 
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--sizes", default="2k,8k")
+    parser.add_argument("--cases", default="hertz2d_2k,hertz2d_8k,hertz3d_15k")
     parser.add_argument("--out", default=None, help="folder of the cases and records (default: a temporary one)")
     args = parser.parse_args(argv)
     kratos = harness.kratos_python()
@@ -51,9 +51,10 @@ def main(argv=None) -> int:
              "| analysis s |", "|---|---|---|---|---|---|"]
     with tempfile.TemporaryDirectory() as scratch:
         out = args.out or scratch
-        for size in args.sizes.split(","):
+        for case in args.cases.split(","):
+            family, _, size = case.partition("_")
             for mpc in (False, True):
-                folder = write_case("hertz2d", size, out, linear_solver="LinearSolversApplication.sparse_lu", mpc=mpc)
+                folder = write_case(family, size, out, linear_solver="LinearSolversApplication.sparse_lu", mpc=mpc)
                 hertz = load_reference(folder)
                 name = os.path.basename(folder)
                 for code, python, overrides in (("mortarcontact", None, []), ("kratos", kratos, [KRATOS_SOLVER])):
@@ -62,7 +63,7 @@ def main(argv=None) -> int:
                     lines.append(row(f"{name} {'Kratos 10.4' if code == 'kratos' else 'ours'}", record, hertz))
     text = "\n".join(lines) + "\n"
     print(text)
-    harness.write_report(os.path.join(HERE, "results_mpc.md"), "# Hertz 2D: MPC against ALM\n\n" + text)
+    harness.write_report(os.path.join(HERE, "results_mpc.md"), "# Hertz: MPC against ALM\n\n" + text)
     return 0
 
 

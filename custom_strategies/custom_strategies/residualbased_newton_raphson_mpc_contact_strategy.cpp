@@ -2,6 +2,7 @@
 #include "custom_strategies/custom_strategies/residualbased_newton_raphson_mpc_contact_strategy.h"
 
 #include "core/utilities/error.h"
+#include "core/utilities/logger.h"
 #include "core/variables/kernel_variables.h"
 #include "custom_strategies/custom_convergencecriterias/contact_criteria_utilities.h"
 
@@ -76,7 +77,7 @@ bool ResidualBasedNewtonRaphsonMPCContactStrategy::NewtonIteration(int iteration
   constraints_->Apply(*builder_);
   const bool converged = NewtonRaphsonStrategy::NewtonIteration(iteration);
   if (settings_.simplified_semi_smooth_newton) return converged;
-  const bool unchanged = UpdateActiveSet();
+  const bool unchanged = UpdateActiveSet() || HoldCycle();
   history_.back().converged = converged && unchanged;
   history_.back().criteria.push_back(mpc_criteria_->LastValues().front());
   return history_.back().converged;
@@ -84,6 +85,8 @@ bool ResidualBasedNewtonRaphsonMPCContactStrategy::NewtonIteration(int iteration
 
 bool ResidualBasedNewtonRaphsonMPCContactStrategy::SolveStepAttempt() {
   const int passes = settings_.simplified_semi_smooth_newton ? settings_.inner_loop_iterations : 1;
+  seen_ = {ActiveStates()};
+  held_ = false;
   for (passes_ = 1; passes_ <= passes; ++passes_) {
     if (!NewtonRaphsonStrategy::SolveStepAttempt()) return false;
     if (!settings_.simplified_semi_smooth_newton || UpdateActiveSet()) return true;
@@ -108,6 +111,39 @@ bool ResidualBasedNewtonRaphsonMPCContactStrategy::UpdateActiveSet() {
   const auto& dofs = builder_->GetDofSet();
   return mpc_criteria_->PostCriteria(model_part_, dofs, builder_->SystemMatrix(), builder_->Increment(),
                                      builder_->Residual());
+}
+
+bool ResidualBasedNewtonRaphsonMPCContactStrategy::HoldCycle() {
+  if (held_) {
+    SetActiveStates(seen_.back());
+    return true;
+  }
+  std::vector<char> now = ActiveStates();
+  for (std::size_t k = 0; k + 1 < seen_.size(); ++k) {
+    if (seen_[k] != now) continue;
+    for (std::size_t l = k; l < seen_.size(); ++l)
+      for (std::size_t i = 0; i < now.size(); ++i) now[i] = static_cast<char>(now[i] || seen_[l][i]);
+    SetActiveStates(now);
+    held_ = true;
+    if (echo_level_ >= 1)
+      Logger::Info(Concat(Name(), ": the active set cycles; the union of the cycle's sets is held for this step"));
+    break;
+  }
+  seen_.push_back(std::move(now));
+  return false;
+}
+
+std::vector<char> ResidualBasedNewtonRaphsonMPCContactStrategy::ActiveStates() const {
+  std::vector<char> states;
+  for (const Node* node : contact_->Nodes())
+    if (node->Is(SLAVE)) states.push_back(static_cast<char>(node->Is(ACTIVE)));
+  return states;
+}
+
+void ResidualBasedNewtonRaphsonMPCContactStrategy::SetActiveStates(const std::vector<char>& states) {
+  std::size_t i = 0;
+  for (Node* node : contact_->Nodes())
+    if (node->Is(SLAVE)) node->Set(ACTIVE, states[i++] != 0);
 }
 
 std::size_t ResidualBasedNewtonRaphsonMPCContactStrategy::NumberOfActiveNodes() const {

@@ -3,6 +3,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "core/parameters/parameters.h"
 #include "core/solving/newton_raphson_strategy.h"
@@ -29,6 +30,11 @@ struct MPCContactStrategySettings {
 /// simplified_semi_smooth_newton the set is updated after every iteration and the step has converged
 /// when the mechanical criterion has and no node changed; with it, up to inner_loop_iterations passes
 /// of a Newton loop on a frozen set, each followed by the update.
+///
+/// Cycle guard (as the mortar contact strategy's): an edge node can be released by its pull and then
+/// re-activated by its penetration, iteration after iteration. When the set comes back to one of an
+/// earlier iteration (not the previous one), the union of the sets of the cycle is held active for the
+/// rest of the step (a held node may carry a small pull).
 ///
 /// Kratos checks the reactions twice per iteration (the strategy's own MPCContactCriteria, and a second
 /// one the Python solver puts in an AndCriteria with the mechanical criterion): a defect, the second
@@ -68,12 +74,19 @@ class ResidualBasedNewtonRaphsonMPCContactStrategy : public NewtonRaphsonStrateg
   /// constraints transmit), the operators measured again, and the criterion's update of the active set;
   /// true when no node changed.
   bool UpdateActiveSet();
+  /// After a change of the set in full semi-smooth Newton: the cycle guard (see the class comment); true
+  /// while the held set stands in for the criterion's.
+  bool HoldCycle();
+  std::vector<char> ActiveStates() const;
+  void SetActiveStates(const std::vector<char>& states);
 
   MPCContactStrategySettings settings_;
   std::shared_ptr<MPCContactConstraints> constraints_;
   std::shared_ptr<MPCContactCriteria> mpc_criteria_;
   ModelPart* contact_ = nullptr;
   int passes_ = 0;
+  std::vector<std::vector<char>> seen_;  ///< the active sets of this step's iterations, in order
+  bool held_ = false;                    ///< a cycle's union is held
 };
 
 }  // namespace mc

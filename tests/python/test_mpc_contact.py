@@ -220,11 +220,12 @@ def _hertz_run(folder: str) -> tuple[dict, list[int]]:
                      if n.HasSolutionStepValue(mc.GetVariable("LAGRANGE_MULTIPLIER_CONTACT_PRESSURE")) else None),
               "normal_contact_stress": n.GetValue(mc.GetVariable("NORMAL_CONTACT_STRESS"))}
              for n in root.GetSubModelPart("Contact_slave").Nodes]
-    force = sum(n.GetSolutionStepValue(mc.GetVariable("REACTION_Y"))
-                for n in root.GetSubModelPart("DISPLACEMENT_bottom").Nodes)
+    reference = hertz.load_reference(folder)
+    component = mc.GetVariable("REACTION_" + "XYZ"[reference["dimension"] - 1])
+    force = sum(n.GetSolutionStepValue(component) for n in root.GetSubModelPart("DISPLACEMENT_bottom").Nodes)
     record = {"status": "ok", "reactions": {"DISPLACEMENT_bottom": force}, "slave": slave,
               "process_info": {"SCALE_FACTOR": root.ProcessInfo.GetValue(mc.GetVariable("SCALE_FACTOR"))}}
-    return hertz.evaluate(record, hertz.load_reference(folder)), _iterations(analysis)
+    return hertz.evaluate(record, reference), _iterations(analysis)
 
 
 def test_hertz_cylinder_mpc_against_alm(tmp_path, monkeypatch):
@@ -250,3 +251,27 @@ def test_hertz_cylinder_mpc_against_alm(tmp_path, monkeypatch):
     # The pressure integrated over the interface is the support's force.
     assert ours["force_from_pressure"] == pytest.approx(ours["force"], rel=0.02)
     assert iterations == alm_iterations
+
+
+def test_hertz_sphere_mpc_against_alm(tmp_path, monkeypatch):
+    """The 3D Hertz sphere (hertz3d_15k, quarter model, tetrahedra): MPC gives ALM's force, peak pressure
+    and contact radius to 0.1 % (the nodal peak is +7.6 % to Hertz in both: the scatter of unstructured
+    tetrahedra, mortarcontact.cases.hertz). At the third step an edge node is released by its pull and
+    re-activated by its penetration in turn: the cycle guard holds the union of the cycle's sets, and the
+    step converges in one iteration more than ALM's (30 without the guard, not converged)."""
+    pytest.importorskip("gmsh")
+    from mortarcontact.cases import hertz
+
+    results = {}
+    for mpc in (False, True):
+        folder = hertz.write_case("hertz3d", "15k", str(tmp_path), linear_solver="umfpack", mpc=mpc)
+        monkeypatch.chdir(folder)
+        results[mpc] = _hertz_run(folder)
+    (alm, alm_iterations), (ours, iterations) = results[False], results[True]
+    print(f"Hertz 3D MPC: peak {ours['peak_pressure']:.4g}, p0 fit {ours['p0_fit_error']:+.2%} to Hertz, radius "
+          f"{ours['half_width_fit_error']:+.2%}, iterations {iterations}; ALM: peak {alm['peak_pressure']:.4g}, "
+          f"iterations {alm_iterations}")
+    for key in ("force", "peak_pressure", "p0_fit", "half_width_fit"):
+        assert ours[key] == pytest.approx(alm[key], rel=1e-3), key
+    assert abs(ours["p0_fit_error"]) < 0.03 and abs(ours["half_width_fit_error"]) < 0.01
+    assert _at_most_one_more(iterations, alm_iterations)
