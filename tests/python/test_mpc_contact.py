@@ -228,20 +228,25 @@ def _hertz_run(folder: str) -> tuple[dict, list[int]]:
     return hertz.evaluate(record, reference), _iterations(analysis)
 
 
+def _hertz_alm_and_mpc(family: str, label: str, tmp_path, monkeypatch):
+    """(evaluation, iterations) of the generated Hertz case with ALM, then with MPC contact."""
+    pytest.importorskip("gmsh")
+    from mortarcontact.cases import hertz
+
+    results = []
+    for mpc in (False, True):
+        folder = hertz.write_case(family, label, str(tmp_path), linear_solver="umfpack", mpc=mpc)
+        monkeypatch.chdir(folder)
+        results.append(_hertz_run(folder))
+    return results
+
+
 def test_hertz_cylinder_mpc_against_alm(tmp_path, monkeypatch):
     """The 2D Hertz cylinder (hertz2d_2k: 35 slave nodes, 15 in contact) with MPC contact: the same
     force, peak pressure and contact half-width as ALM to 0.1 %, both within 2 % of Hertz, in the same
     Newton iterations (Kratos 10.4's MPC does not converge on these files:
     benchmarks/hertz/results_mpc.md)."""
-    pytest.importorskip("gmsh")
-    from mortarcontact.cases import hertz
-
-    results = {}
-    for mpc in (False, True):
-        folder = hertz.write_case("hertz2d", "2k", str(tmp_path), linear_solver="umfpack", mpc=mpc)
-        monkeypatch.chdir(folder)
-        results[mpc] = _hertz_run(folder)
-    (alm, alm_iterations), (ours, iterations) = results[False], results[True]
+    (alm, alm_iterations), (ours, iterations) = _hertz_alm_and_mpc("hertz2d", "2k", tmp_path, monkeypatch)
     print(f"Hertz 2D MPC: peak {ours['peak_pressure']:.4g} ({ours['peak_pressure_error']:+.2%} to Hertz), half-width "
           f"{ours['half_width_fit']:.4g} ({ours['half_width_fit_error']:+.2%}), iterations {iterations}; ALM: peak "
           f"{alm['peak_pressure']:.4g}, half-width {alm['half_width_fit']:.4g}, iterations {alm_iterations}")
@@ -259,15 +264,7 @@ def test_hertz_sphere_mpc_against_alm(tmp_path, monkeypatch):
     tetrahedra, mortarcontact.cases.hertz). At the third step an edge node is released by its pull and
     re-activated by its penetration in turn: the cycle guard holds the union of the cycle's sets, and the
     step converges in one iteration more than ALM's (30 without the guard, not converged)."""
-    pytest.importorskip("gmsh")
-    from mortarcontact.cases import hertz
-
-    results = {}
-    for mpc in (False, True):
-        folder = hertz.write_case("hertz3d", "15k", str(tmp_path), linear_solver="umfpack", mpc=mpc)
-        monkeypatch.chdir(folder)
-        results[mpc] = _hertz_run(folder)
-    (alm, alm_iterations), (ours, iterations) = results[False], results[True]
+    (alm, alm_iterations), (ours, iterations) = _hertz_alm_and_mpc("hertz3d", "15k", tmp_path, monkeypatch)
     print(f"Hertz 3D MPC: peak {ours['peak_pressure']:.4g}, p0 fit {ours['p0_fit_error']:+.2%} to Hertz, radius "
           f"{ours['half_width_fit_error']:+.2%}, iterations {iterations}; ALM: peak {alm['peak_pressure']:.4g}, "
           f"iterations {alm_iterations}")
