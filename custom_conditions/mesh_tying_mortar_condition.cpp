@@ -8,6 +8,7 @@
 #include "core/utilities/error.h"
 #include "core/variables/kernel_variables.h"
 #include "core/variables/variable_registry.h"
+#include "custom_conditions/mortar_geometry_token.h"
 #include "custom_utilities/contact_variables.h"
 #include "custom_utilities/normal_calculation_utilities.h"
 
@@ -48,9 +49,7 @@ MeshTyingMortarCondition<TDim, TNumNodes, TNumNodesMaster>::MeshTyingMortarCondi
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
 std::string MeshTyingMortarCondition<TDim, TNumNodes, TNumNodesMaster>::Info() const {
-  return TNumNodes == TNumNodesMaster
-             ? Concat("MeshTyingMortarCondition", TDim, "D", TNumNodes, "N")
-             : Concat("MeshTyingMortarCondition", TDim, "D", TNumNodes, "N", TNumNodesMaster, "N");
+  return "MeshTyingMortarCondition" + MortarGeometryToken(TDim, TNumNodes, TNumNodesMaster);
 }
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>

@@ -7,6 +7,7 @@
 
 #include "core/utilities/error.h"
 #include "core/variables/kernel_variables.h"
+#include "custom_conditions/mortar_geometry_token.h"
 #include "custom_utilities/contact_variables.h"
 #include "custom_utilities/mortar_geometry_cases.h"
 #include "custom_utilities/normal_calculation_utilities.h"
@@ -31,8 +32,7 @@ void AtomicAdd(double& target, double value) { std::atomic_ref<double>(target).f
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
 std::string MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::GeometryToken() {
-  return TNumNodes == TNumNodesMaster ? Concat(TDim, "D", TNumNodes, "N")
-                                      : Concat(TDim, "D", TNumNodes, "N", TNumNodesMaster, "N");
+  return MortarGeometryToken(TDim, TNumNodes, TNumNodesMaster);
 }
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>

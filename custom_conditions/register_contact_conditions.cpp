@@ -11,6 +11,7 @@
 #include "custom_conditions/alm_frictionless_mortar_contact_condition.h"
 #include "custom_conditions/axisymmetric_mortar_contact_condition.h"
 #include "custom_conditions/mesh_tying_mortar_condition.h"
+#include "custom_conditions/mpc_mortar_contact_condition.h"
 #include "custom_conditions/normal_variation_mortar_contact_condition.h"
 #include "custom_conditions/penalty_frictional_mortar_contact_condition.h"
 #include "custom_conditions/penalty_frictionless_mortar_contact_condition.h"
@@ -49,6 +50,7 @@ void RegisterAll() {
   AddAllGeometries<ALMNVFrictionalMortarContactCondition>();
   AddAllGeometries<PenaltyNVFrictionalMortarContactCondition>();
   AddAllGeometries<MeshTyingMortarCondition>();
+  AddAllGeometries<MPCMortarContactCondition>();
 
   Add<ALMFrictionlessAxisymMortarContactCondition, 2, 2, 2>(GT::Line2D2, GT::Line2D2);
   Add<PenaltyFrictionlessAxisymMortarContactCondition, 2, 2, 2>(GT::Line2D2, GT::Line2D2);

@@ -148,6 +148,31 @@ void RegisterAll() {
       .active_set_criterion = tying_criterion,
   });
 
+  // Multipoint-constraint contact (spec 2.8, 4.7): no multipliers, master-slave constraints from D^-1 M,
+  // chosen by solver_settings.mpc_contact_settings, never by a contact_settings.mortar_type. Its active
+  // set is checked by its strategy (ResidualBasedNewtonRaphsonMPCContactStrategy owns the one
+  // MPCContactCriteria), not by the criteria factory.
+  const auto mpc_criterion = [](Parameters settings) -> std::shared_ptr<ConvergenceCriteria> {
+    throw Error(Concat(settings.Where(), ": the MPC contact active set is checked by its strategy"));
+  };
+  ContactFormulation::Register(D{
+      .mortar_type = "MPCContactFrictionless",
+      .process = "mpc_contact_process",
+      .contact_type = "Frictionless",
+      .enforcement = "MPC",
+      .variables = {"WEIGHTED_GAP"},
+      .active_set_criterion = mpc_criterion,
+  });
+  ContactFormulation::Register(D{
+      .mortar_type = "MPCContactFrictional",
+      .process = "mpc_contact_process",
+      .contact_type = "Frictional",
+      .enforcement = "MPC",
+      .variables = {"WEIGHTED_GAP"},
+      .active_set_criterion = mpc_criterion,
+      .not_implemented = "frictional multipoint-constraint contact: stick and slip relations",
+  });
+
   // As in Kratos, the condensing solver wraps the solver of linear_solver_settings and is chosen
   // by contact_settings.mixed_ulm_solver_parameters; as a linear solver of its own it has nothing
   // to wrap.

@@ -19,6 +19,7 @@
 #include "custom_strategies/custom_strategies/explicit_penalty_contact_strategy.h"
 #include "custom_strategies/custom_strategies/line_search_contact_strategy.h"
 #include "custom_strategies/custom_strategies/residualbased_newton_raphson_contact_strategy.h"
+#include "custom_strategies/custom_strategies/residualbased_newton_raphson_mpc_contact_strategy.h"
 
 namespace mc::python {
 
@@ -270,6 +271,33 @@ void AddContactStrategiesToPython(py::module_& m) {
            "min_step: the smallest step length of a block; the others as ResidualBasedNewtonRaphsonContactStrategy.")
       .def("SplitSteps", &LineSearchContactStrategy::SplitSteps,
            "The LineSearchSplitStep of each iteration of the last step.");
+
+  using MPCNewton = ResidualBasedNewtonRaphsonMPCContactStrategy;
+  py::class_<MPCNewton, NewtonRaphsonStrategy, std::shared_ptr<MPCNewton>>(
+      m, "ResidualBasedNewtonRaphsonMPCContactStrategy",
+      "newton_raphson_mpc_contact_strategy: Newton with the contact imposed by master-slave constraints built "
+      "from D^-1 M on the active slave nodes; the active set from the reactions (mpc_contact_criteria), after a "
+      "predictor solve.")
+      .def(py::init([](ModelPart& part, std::shared_ptr<Scheme> scheme, std::shared_ptr<ConvergenceCriteria> criteria,
+                       std::shared_ptr<BuilderAndSolver> builder, Parameters settings, int max_iteration,
+                       bool compute_reactions, bool reform_dofs_at_each_step, bool move_mesh, int echo_level) {
+             auto s = std::make_shared<MPCNewton>(part, std::move(scheme), std::move(criteria), std::move(builder),
+                                                  MPCNewton::ReadSettings(settings), max_iteration, compute_reactions,
+                                                  reform_dofs_at_each_step, move_mesh);
+             s->SetEchoLevel(echo_level);
+             return s;
+           }),
+           py::arg("model_part"), py::arg("scheme"), py::arg("criteria"), py::arg("builder_and_solver"),
+           py::arg("settings") = Parameters(), py::arg("max_iteration") = 10, py::arg("compute_reactions") = true,
+           py::arg("reform_dofs_at_each_step") = true, py::arg("move_mesh") = true, py::arg("echo_level") = 0,
+           py::keep_alive<1, 2>(),
+           "settings: mpc_contact_settings (simplified_semi_smooth_newton, inner_loop_iterations, "
+           "update_each_nl_iteration); criteria: the mechanical criterion; the others as NewtonRaphsonStrategy.")
+      .def_static("GetDefaultParameters", &MPCNewton::GetDefaultParameters,
+                  "Its keys of mpc_contact_settings with their defaults.")
+      .def("InnerLoopIterations", &MPCNewton::InnerLoopIterations,
+           "Active-set passes of the last step (1 without simplified_semi_smooth_newton).")
+      .def("NumberOfActiveNodes", &MPCNewton::NumberOfActiveNodes, "ACTIVE slave nodes now.");
 }
 
 }  // namespace mc::python

@@ -22,10 +22,11 @@ mortar weighted gap and normals, contact-condition and element assembly, DoF set
 linear solve, rest) (Kratos: ProcessInfo NL_ITERATION_NUMBER
 after each step; mortarcontact: the stage's step log), convergence per step, peak resident memory
 of the process (getrusage), and at the end: per slave node the initial coordinates,
-LAGRANGE_MULTIPLIER_CONTACT_PRESSURE (historical), AUGMENTED_NORMAL_CONTACT_PRESSURE
-(non-historical), WEIGHTED_GAP and the ACTIVE flag; the sums of REACTION over the clamped bottom
-and the pushed top. A failure is recorded as status "not available" (not implemented) or
-"failed" with the message, and the script exits 0 so that the harness can report it.
+LAGRANGE_MULTIPLIER_CONTACT_PRESSURE (historical), AUGMENTED_NORMAL_CONTACT_PRESSURE and
+NORMAL_CONTACT_STRESS (MPC contact; non-historical), WEIGHTED_GAP and the ACTIVE flag; the sums of
+REACTION over the clamped bottom and the pushed top. A failure is recorded as status "not
+available" (not implemented) or "failed" with the message, and the script exits 0 so that the
+harness can report it.
 """
 from __future__ import annotations
 
@@ -76,6 +77,7 @@ def _extract(model, get_variable, dim: int, flag_active, all_nodes: bool = False
         slave.append({"id": node.Id, "x": node.X0, "y": node.Y0, "z": node.Z0,
                       "lm": value(node, "LAGRANGE_MULTIPLIER_CONTACT_PRESSURE"),
                       "augmented": value(node, "AUGMENTED_NORMAL_CONTACT_PRESSURE", historical=False),
+                      "normal_contact_stress": value(node, "NORMAL_CONTACT_STRESS", historical=False),
                       "weighted_gap": value(node, "WEIGHTED_GAP"),
                       "active": bool(node.Is(flag_active)) if flag_active is not None else None})
         if all_nodes:

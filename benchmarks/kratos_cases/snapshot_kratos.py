@@ -10,7 +10,7 @@ on the same files is the second, reproducible yardstick of tests/python/test_con
 
 Each frictionless case runs twice, as Kratos' suite does: scalar multiplier (as written) and
 components (mortar_type ALMContactFrictionlessComponents, contact_type FrictionlessComponents).
-The frictional cases run once, as written (stored as <case>_frictional.json). The legacy
+The frictional, mesh-tying and MPC cases run once, as written (<case>_frictional.json, _tying, _mpc). The legacy
 layouts of the shared files are migrated with mortarcontact's own reader (Kratos 10.4 rejects
 them) and model part names are made absolute; nothing else changes, except that the skyline
 solver, absent from the wheels, is replaced by sparse_lu (both are direct): see kratos_migration.py.
@@ -33,13 +33,13 @@ sys.path.insert(0, os.path.join(ROOT, "benchmarks", "hertz"))
 sys.path.insert(0, os.path.join(ROOT, "tests", "python"))
 
 import harness  # noqa: E402
-from csma_cases import FRICTIONAL_CASES, FRICTIONLESS_CASES, MESH_TYING_CASES, reference_values  # noqa: E402
+from csma_cases import FRICTIONAL_CASES, FRICTIONLESS_CASES, MESH_TYING_CASES, MPC_CASES, reference_values  # noqa: E402
 from kratos_migration import CSMA_CASES, migrated_case  # noqa: E402
 
 OUTPUT = os.path.join(ROOT, "tests", "cases", "kratos_10_4")
 RUNNER = os.path.join(HERE, "kratos_case_runner.py")
 #: formulations run as the case is written (no switch of the contact processes)
-AS_WRITTEN = ("frictional", "tying")
+AS_WRITTEN = ("frictional", "tying", "mpc")
 
 
 def main(argv=None) -> int:
@@ -47,7 +47,7 @@ def main(argv=None) -> int:
     parser.add_argument("--cases", default="all", help="comma-separated case paths (folder/case) or 'all'")
     args = parser.parse_args(argv)
     python = harness.kratos_python()
-    known = dict(FRICTIONLESS_CASES + FRICTIONAL_CASES + MESH_TYING_CASES)
+    known = dict(FRICTIONLESS_CASES + FRICTIONAL_CASES + MESH_TYING_CASES + MPC_CASES)
     cases = list(known) if args.cases == "all" else args.cases.split(",")
     os.makedirs(OUTPUT, exist_ok=True)
     with tempfile.TemporaryDirectory() as folder:

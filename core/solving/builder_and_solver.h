@@ -113,6 +113,9 @@ class BuilderAndSolver {
   /// fixed and slave DoFs: what residual criteria measure.
   const Vector& Residual() const noexcept { return residual_; }
   Vector& Residual() noexcept { return residual_; }
+  /// f_ext - f_int of the last build at every DoF, before the constraints move the slaves' share to
+  /// their masters: at a slave DoF, minus the force its constraint transmits.
+  const Vector& RawResidual() const noexcept { return rhs_raw_; }
   /// The increment of every DoF from the last solve (zero at fixed DoFs).
   const Vector& Increment() const noexcept { return dx_; }
   Vector& Increment() noexcept { return dx_; }

@@ -28,7 +28,8 @@ Both bodies are linear elastic (same E, nu), small displacements. In 3D the symm
 rollers (u_x = 0 on x = 0, u_y = 0 on y = 0); in 2D u_x = 0 on the cylinder top. The block bottom
 is clamped and the flat top of the curved body is pushed down by delta * t in 4 load steps
 (t = 0.25 ... 1). Frictionless ALM
-(``ALMContactFrictionless`` / ``alm_contact_process``), the curved body is the slave.
+(``ALMContactFrictionless`` / ``alm_contact_process``), or MPC contact (``write_case(..., mpc=True)``:
+``mpc_contact_settings`` / ``mpc_contact_process``); the curved body is the slave.
 The interface sub-model-parts hold nodes only (the contact process builds the faces): the part of
 the arc / cap with |x| (or r) <= 4 a and the part of the block top with |x| (or r) <= 5 a, a being
 the target contact half-width / radius.
@@ -553,7 +554,10 @@ def assign_displacement(part: str, constrained: list, value: list) -> dict:
 
 
 def project_parameters(name: str, dim: int, delta: float, linear_solver: str, model_import: dict,
-                       half: bool = False) -> dict:
+                       half: bool = False, mpc: bool = False) -> dict:
+    """The case's ProjectParameters: ALM contact, or with ``mpc`` multipoint-constraint contact
+    (mpc_contact_settings, mpc_contact_process and the structural residual criterion, as Kratos'
+    MPC cases)."""
     axis = dim - 1
     top_value: list = [0.0, 0.0, 0.0]
     top_value[axis] = f"-{delta!r}*t"
@@ -567,6 +571,13 @@ def project_parameters(name: str, dim: int, delta: float, linear_solver: str, mo
     constraints += [assign_displacement("DISPLACEMENT_bottom", [True, True, True], [0.0, 0.0, 0.0]),
                     assign_displacement("DISPLACEMENT_top", top_fix, top_value)]
     body = "Contact_slave"
+    contact = {"python_module": "alm_contact_process", "process_name": "ALMContactProcess",
+               "solver": {"contact_settings": {"mortar_type": "ALMContactFrictionless"},
+                          "convergence_criterion": "contact_residual_criterion"}}
+    if mpc:
+        contact = {"python_module": "mpc_contact_process", "process_name": "MPCContactProcess",
+                   "solver": {"mpc_contact_settings": {"contact_type": "Frictionless"},
+                              "convergence_criterion": "residual_criterion"}}
     return {
         "problem_data": {"problem_name": name, "parallel_type": "OpenMP", "echo_level": 0,
                          "start_time": 0.0, "end_time": 1.0},
@@ -575,10 +586,9 @@ def project_parameters(name: str, dim: int, delta: float, linear_solver: str, mo
             "analysis_type": "non_linear",
             "model_import_settings": model_import,
             "material_import_settings": {"materials_filename": f"{name}_materials.json"},
-            "contact_settings": {"mortar_type": "ALMContactFrictionless"},
+            **contact["solver"],
             "time_stepping": {"time_step": 1.0 / LOAD_STEPS},
             "block_builder": True, "line_search": False, "compute_reactions": True,
-            "convergence_criterion": "contact_residual_criterion",
             "displacement_relative_tolerance": 1e-4, "displacement_absolute_tolerance": 1e-9,
             "residual_relative_tolerance": 1e-4, "residual_absolute_tolerance": 1e-9,
             "max_iteration": 30,
@@ -588,9 +598,9 @@ def project_parameters(name: str, dim: int, delta: float, linear_solver: str, mo
             "constraints_process_list": constraints,
             "loads_process_list": [],
             "contact_process_list": [{
-                "python_module": "alm_contact_process",
+                "python_module": contact["python_module"],
                 "kratos_module": "KratosMultiphysics.ContactStructuralMechanicsApplication",
-                "process_name": "ALMContactProcess",
+                "process_name": contact["process_name"],
                 "Parameters": {"model_part_name": "Structure", "contact_type": "Frictionless",
                                "contact_model_part": {"0": [body, "Contact_master"]},
                                "assume_master_slave": {"0": [body]}},
@@ -616,7 +626,7 @@ def materials(dim: int) -> dict:
         for pid, part in ((1, curved), (2, "Parts_block"))]}
 
 
-def hertz_reference(case: dict, delta: float) -> dict:
+def hertz_reference(case: dict, delta: float, mpc: bool = False) -> dict:
     dim = case["dim"]
     g = GEOMETRY[dim]
     e_star = effective_modulus()
@@ -626,7 +636,7 @@ def hertz_reference(case: dict, delta: float) -> dict:
     n_nodes = len(case["coords"])
     n_slave = len(case["parts"]["Contact_slave"]["nodes"])
     return {
-        "case": f"{case['family']}_{case['label']}", "dimension": dim,
+        "case": f"{case['family']}_{case['label']}", "dimension": dim, "contact": "mpc" if mpc else "alm",
         "model": ("full model, plane strain" if dim == 2 else "half model (y >= 0)" if case["half"]
                   else "quarter model (x >= 0, y >= 0)"
                   + (", structured contact zones (Kuhn tetrahedra)" if case["family"] == "hertz3dgrid" else "")),
@@ -648,10 +658,11 @@ def hertz_reference(case: dict, delta: float) -> dict:
 
 
 def write_case(family: str, label: str, out_dir: str,
-               linear_solver: str = "LinearSolversApplication.sparse_lu", half: bool = False) -> str:
+               linear_solver: str = "LinearSolversApplication.sparse_lu", half: bool = False, mpc: bool = False) -> str:
     """Generates one case into ``out_dir/<family>_<label>/`` (3D ``half``: the half model, in
-    ``<family>_<label>_half/``) and returns that folder."""
-    name = f"{family}_{label}" + ("_half" if half and family != "hertz2d" else "")
+    ``<family>_<label>_half/``; ``mpc``: MPC contact, in ``<family>_<label>_mpc/``) and returns that
+    folder."""
+    name = f"{family}_{label}" + ("_half" if half and family != "hertz2d" else "") + ("_mpc" if mpc else "")
     folder = os.path.join(out_dir, name)
     os.makedirs(folder, exist_ok=True)
     case = build_case(family, label, half)
@@ -660,8 +671,8 @@ def write_case(family: str, label: str, out_dir: str,
     model_import = write_mesh(os.path.join(folder, f"{name}.msh"), case)
     write_json_files(folder, {
         f"{name}_materials.json": materials(dim),
-        "ProjectParameters.json": project_parameters(name, dim, delta, linear_solver, model_import, case["half"]),
-        "hertz.json": hertz_reference(case, delta)})
+        "ProjectParameters.json": project_parameters(name, dim, delta, linear_solver, model_import, case["half"], mpc),
+        "hertz.json": hertz_reference(case, delta, mpc)})
     return folder
 
 
@@ -713,7 +724,8 @@ def evaluate(record: dict, hertz: dict) -> dict:
     The ALM unknown is the multiplier over the scale factor k (ProcessInfo SCALE_FACTOR): the
     normal contact pressure is p = -k lambda (compression positive); with dual multipliers the
     nodal multiplier is already a pressure. AUGMENTED_NORMAL_CONTACT_PRESSURE (-p at converged
-    active nodes) is used when there is no multiplier (penalty). The pressure integrated over the
+    active nodes) is used when there is no multiplier (penalty), -NORMAL_CONTACT_STRESS (``normal_contact_stress``)
+    for MPC contact (``hertz["contact"]`` "mpc"). The pressure integrated over the
     slave surface (times the symmetry factor) must equal the reaction: ``force_from_pressure``.
     """
     if record.get("status") != "ok":
@@ -725,7 +737,9 @@ def evaluate(record: dict, hertz: dict) -> dict:
     scale = (record.get("process_info") or {}).get("SCALE_FACTOR")
     nodes = []
     for n in record["slave"]:
-        if n["lm"] is not None and scale is not None:
+        if hertz.get("contact") == "mpc":  # no multipliers: the pressure from the reactions
+            p = -(n["normal_contact_stress"] or 0.0)
+        elif n["lm"] is not None and scale is not None:
             p = -scale * n["lm"]
         else:
             p = -(n["augmented"] or 0.0) if n["active"] else 0.0

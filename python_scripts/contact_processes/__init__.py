@@ -5,7 +5,7 @@ from __future__ import annotations
 from .alm_contact_process import ALMContactProcess
 from .explicit_penalty_contact_process import ExplicitPenaltyContactProcess
 from .mesh_tying_process import MeshTyingProcess
-from .not_implemented_processes import MPCContactProcess
+from .mpc_contact_process import MPCContactProcess
 from .penalty_contact_process import PenaltyContactProcess
 
 CONTACT_MODULE = "ContactStructuralMechanicsApplication"

@@ -22,24 +22,6 @@ TESSELLATION_WITHOUT_EFFECT = ("the overlap polygons are convex, so the fan tria
                                "moves)")
 
 
-class NotImplementedContactProcess(Process):
-    """Validates every key against the documented defaults, then says that the feature is not
-    implemented yet: a case using it fails early with its name, not with a wrong result."""
-
-    python_module = ""
-    feature = ""
-
-    @classmethod
-    def _normalised(cls, settings):
-        settings = settings if settings is not None else _core.Parameters()
-        _settings.normalise_pair_layouts(settings, cls._slot_keys())
-        return settings
-
-    @staticmethod
-    def _slot_keys():
-        return ("contact_model_part", "assume_master_slave", "contact_property_ids", "friction_coefficients")
-
-
 class SearchBaseProcess(Process):
     """Base of the ALM, penalty and mesh-tying processes: interface set-up and contact search."""
 

@@ -5,6 +5,7 @@ from .. import _core
 from ..utilities import nearest
 from .contact_mechanical_solver import ContactMechanicalSolver
 from .mechanical_solver import MechanicalSolver
+from .mpc_contact_mechanical_solver import MPCContactMechanicalSolver
 from .solver_settings import validate_solver_settings
 
 SOLVER_TYPES = {"static": "static", "dynamic": "dynamic"}
@@ -27,10 +28,10 @@ def create_solver(model: _core.Model, settings: _core.Parameters, case_dir: str 
                                f"got \"{method}\"")
     contact = settings["contact_settings"]
     solver_class = MechanicalSolver
+    # contact_settings is checked first (spec 2.1): its presence wins over mpc_contact_settings.
     if contact.size() > 0 and contact["mortar_type"].GetString():
         solver_class = ContactMechanicalSolver
-    if settings["mpc_contact_settings"].size() > 0:
-        raise _core.NotImplementedFeatureError(
-            f"{where}.mpc_contact_settings: multipoint-constraint contact solvers are not implemented yet")
+    elif settings["mpc_contact_settings"].size() > 0:
+        solver_class = MPCContactMechanicalSolver
     return solver_class(model, settings, dynamic=(kind == "dynamic"),
                         explicit=(kind == "dynamic" and method == "explicit"), case_dir=case_dir)

@@ -67,6 +67,10 @@ class ContactMechanicalSolver(MechanicalSolver):
     def __init__(self, model, settings, **kwargs):
         mortar_type = settings["contact_settings"]["mortar_type"]
         self.formulation = _core.ContactFormulation.Get(mortar_type.GetString(), mortar_type.Where())
+        if self.formulation.process == "mpc_contact_process":
+            raise _core.InputError(f"{mortar_type.Where()}: \"{mortar_type.GetString()}\" is not a mortar_type: "
+                                   "MPC contact is chosen by solver_settings.mpc_contact_settings (without "
+                                   "contact_settings)")
         # The DoF set follows the contact pairs, which change from step to step (the explicit penalty
         # strategy keeps the elements' DoFs and lumped mass: penalty contact adds no DoFs).
         settings["clear_storage"].SetBool(True)

@@ -6,6 +6,8 @@ from .. import _core
 from ..utilities import warn_about_keys_without_effect
 from .contact_mechanical_solver import contact_settings_defaults
 from .convergence_history import ConvergenceHistory
+from .mpc_contact_mechanical_solver import KEYS_WITHOUT_EFFECT as MPC_KEYS_WITHOUT_EFFECT
+from .mpc_contact_mechanical_solver import mpc_contact_settings_defaults
 
 STRUCTURAL_DEFAULTS = """{
     "solver_type": "mechanical_solver",
@@ -79,14 +81,6 @@ STRUCTURAL_DEFAULTS = """{
     "mpc_contact_settings": {},
     "convergence_history": {},
     "step_splitting": {}
-}"""
-
-MPC_CONTACT_SETTINGS_DEFAULTS = """{
-    "contact_type": "Frictionless",
-    "simplified_semi_smooth_newton": false,
-    "inner_loop_iterations": 10,
-    "update_each_nl_iteration": false,
-    "enforce_ntn": false
 }"""
 
 # Obsolete keys dropped with a warning (spec 2.3): the solve always happens on the root part.
@@ -172,7 +166,7 @@ def validate_solver_settings(settings: _core.Parameters) -> None:
     translate_legacy_solver_settings(settings)
     settings.RecursivelyValidateAndAssignDefaults(_core.Parameters(STRUCTURAL_DEFAULTS))
     for key, defaults in (("contact_settings", contact_settings_defaults()),
-                          ("mpc_contact_settings", _core.Parameters(MPC_CONTACT_SETTINGS_DEFAULTS))):
+                          ("mpc_contact_settings", mpc_contact_settings_defaults())):
         if settings[key].size() > 0:
             settings[key].RecursivelyValidateAndAssignDefaults(defaults)
     settings["convergence_history"].ValidateAndAssignDefaults(ConvergenceHistory.GetDefaultParameters())
@@ -200,6 +194,9 @@ def _warn_about_keys_without_effect(settings: _core.Parameters) -> None:
             _core.NoEffectWarnings.IfGiven(settings, defaults, key, _PREDICTION.replace("> 0", f">= {needed}"))
     if settings["solver_type"].GetString() != "Static" or settings["analysis_type"].GetString() != "non_linear":
         _core.NoEffectWarnings.IfGiven(settings, defaults, "displacement_extrapolation", EXTRAPOLATION_WITHOUT_EFFECT)
+    if settings["mpc_contact_settings"].size() > 0:
+        warn_about_keys_without_effect(settings["mpc_contact_settings"], mpc_contact_settings_defaults(),
+                                       MPC_KEYS_WITHOUT_EFFECT)
     contact = settings["contact_settings"]
     if contact.size() > 0 and contact["mortar_type"].GetString():
         _core.NoEffectWarnings.IfGiven(settings, defaults, "use_old_stiffness_in_first_iteration",

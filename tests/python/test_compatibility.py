@@ -28,7 +28,8 @@ def test_parameters_files_validate(path, monkeypatch):
     implemented = contact in ("", "ALMContactFrictionless", "PenaltyContactFrictionless", "ALMContactFrictional",
                               "ALMContactFrictionalPureSlip", "PenaltyContactFrictional",
                               "ComponentsMeshTying", "ScalarMeshTying") \
-        and not solver_settings.Has("mpc_contact_settings")
+        and (not solver_settings.Has("mpc_contact_settings")
+             or solver_settings["mpc_contact_settings"]["contact_type"].GetString() == "Frictionless")
     if implemented:
         create_solver(mc.Model(), solver_settings)
     else:

@@ -32,7 +32,8 @@ from mortarcontact.process_factory import PROCESS_REGISTRY
 from mortarcontact.processes.from_json_check_result_process import CheckResultError
 from mortarcontact.project_parameters import PROBLEM_DATA_DEFAULTS, TOP_LEVEL_KEYS, read_project_parameters
 from mortarcontact.solvers.contact_mechanical_solver import contact_settings_defaults
-from mortarcontact.solvers.solver_settings import MPC_CONTACT_SETTINGS_DEFAULTS, STRUCTURAL_DEFAULTS
+from mortarcontact.solvers.mpc_contact_mechanical_solver import mpc_contact_settings_defaults
+from mortarcontact.solvers.solver_settings import STRUCTURAL_DEFAULTS
 
 HERE = pathlib.Path(__file__).resolve().parent
 STATUSES = ("acts", "warns", "rejects", "block", "out_of_scope")
@@ -143,7 +144,7 @@ def _accepted_keys() -> dict[str, set[str]]:
     _walk("problem_data", json.loads(PROBLEM_DATA_DEFAULTS), found)
     _walk("solver_settings", json.loads(STRUCTURAL_DEFAULTS), found)
     _walk("solver_settings.contact_settings", json.loads(contact_settings_defaults().WriteJsonString()), found)
-    _walk("solver_settings.mpc_contact_settings", json.loads(MPC_CONTACT_SETTINGS_DEFAULTS), found)
+    _walk("solver_settings.mpc_contact_settings", json.loads(mpc_contact_settings_defaults().WriteJsonString()), found)
     for (_, name), cls in PROCESS_REGISTRY.items():
         if name in ("alm_contact_process", "penalty_contact_process"):
             block = "contact_process"

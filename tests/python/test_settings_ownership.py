@@ -14,12 +14,6 @@ from mortarcontact.solvers.convergence_history import ConvergenceHistory
 
 REPO = pathlib.Path(__file__).resolve().parents[2]
 
-#: Same key name, other setting: (file, key) -> where it belongs
-OTHER_SETTINGS = {
-    ("python_scripts/solvers/solver_settings.py", "inner_loop_iterations"): "mpc_contact_settings (MPC strategy)",
-}
-
-
 def _owners():
     return {
         "contact solver": _core.Parameters(CONTACT_SETTINGS),
@@ -48,8 +42,6 @@ def test_python_does_not_redeclare_keys_of_cpp_owners():
     for path in sources:
         text = path.read_text()
         for key in sorted(cpp_owned):
-            if (str(path.relative_to(REPO)), key) in OTHER_SETTINGS:
-                continue
             declaration = re.search(rf'"{key}"\s*:', text)
             assert declaration is None, f"{path.relative_to(REPO)} declares \"{key}\", which C++ owns"
 

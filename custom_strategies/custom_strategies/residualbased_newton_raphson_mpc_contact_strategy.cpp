@@ -1,0 +1,157 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "custom_strategies/custom_strategies/residualbased_newton_raphson_mpc_contact_strategy.h"
+
+#include "core/utilities/error.h"
+#include "core/utilities/logger.h"
+#include "core/variables/kernel_variables.h"
+#include "custom_strategies/custom_convergencecriterias/contact_criteria_utilities.h"
+
+namespace mc {
+
+Parameters ResidualBasedNewtonRaphsonMPCContactStrategy::GetDefaultParameters() {
+  return Parameters(R"({
+      "simplified_semi_smooth_newton" : false,
+      "inner_loop_iterations"         : 10,
+      "update_each_nl_iteration"      : false,
+      "enforce_ntn"                   : false
+  })");
+}
+
+MPCContactStrategySettings ResidualBasedNewtonRaphsonMPCContactStrategy::ReadSettings(Parameters settings) {
+  settings.AddMissingParameters(GetDefaultParameters());
+  MPCContactStrategySettings s;
+  s.inner_loop_iterations = settings["inner_loop_iterations"].GetInt();
+  s.update_each_nl_iteration = settings["update_each_nl_iteration"].GetBool();
+  s.simplified_semi_smooth_newton = settings["simplified_semi_smooth_newton"].GetBool();
+  if (s.inner_loop_iterations < 1)
+    throw InputError(
+        Concat(settings["inner_loop_iterations"].Where(), ": ", s.inner_loop_iterations, " must be at least 1"));
+  return s;
+}
+
+ResidualBasedNewtonRaphsonMPCContactStrategy::ResidualBasedNewtonRaphsonMPCContactStrategy(
+    ModelPart& model_part, std::shared_ptr<Scheme> scheme, std::shared_ptr<ConvergenceCriteria> criteria,
+    std::shared_ptr<BuilderAndSolver> builder_and_solver, MPCContactStrategySettings settings, int max_iteration,
+    bool compute_reactions, bool reform_dofs_at_each_step, bool move_mesh_flag)
+    : NewtonRaphsonStrategy(model_part, std::move(scheme), std::move(criteria), std::move(builder_and_solver),
+                            max_iteration, compute_reactions, reform_dofs_at_each_step, move_mesh_flag),
+      settings_(settings) {}
+
+void ResidualBasedNewtonRaphsonMPCContactStrategy::Initialize() {
+  NewtonRaphsonStrategy::Initialize();
+  ModelPart& root = model_part_.GetRootModelPart();
+  contact_ = FindContactModelPart(model_part_);
+  if (!contact_ || !root.HasSubModelPart("ComputingContact"))
+    throw InputError(Concat(Name(), ": ", root.Name(),
+                            " has no Contact interface: the MPC contact solver needs an mpc_contact_process"));
+  constraints_ = std::make_shared<MPCContactConstraints>(*contact_, root.GetSubModelPart("ComputingContact"));
+  mpc_criteria_ = std::make_shared<MPCContactCriteria>(constraints_);
+}
+
+void ResidualBasedNewtonRaphsonMPCContactStrategy::InitializeSolutionStep() {
+  NewtonRaphsonStrategy::InitializeSolutionStep();
+  passes_ = 0;
+  constraints_->Measure();
+  constraints_->Relate();
+}
+
+void ResidualBasedNewtonRaphsonMPCContactStrategy::Predict() {
+  NewtonRaphsonStrategy::Predict();
+  // One constrained linear solve on the search's guess of the set, whose reactions give the set Newton
+  // starts from. The solve only decides the set: Newton starts from the predicted state again, so that
+  // its first residual (the residual criterion's reference) is the step's, not the round-off left by
+  // a linear solve that already solved a linear problem.
+  constraints_->Apply(*builder_);
+  builder_->BuildAndSolve(*scheme_, model_part_);
+  const Vector increment = builder_->Increment();
+  UpdateAndMoveMesh(increment);
+  UpdateActiveSet();
+  UpdateAndMoveMesh(-increment);
+}
+
+bool ResidualBasedNewtonRaphsonMPCContactStrategy::NewtonIteration(int iteration) {
+  if (settings_.update_each_nl_iteration && iteration > 1) {
+    constraints_->Measure();
+    constraints_->Relate();
+  }
+  constraints_->Apply(*builder_);
+  const bool converged = NewtonRaphsonStrategy::NewtonIteration(iteration);
+  if (settings_.simplified_semi_smooth_newton) return converged;
+  const bool unchanged = UpdateActiveSet() || HoldCycle();
+  history_.back().converged = converged && unchanged;
+  history_.back().criteria.push_back(mpc_criteria_->LastValues().front());
+  return history_.back().converged;
+}
+
+bool ResidualBasedNewtonRaphsonMPCContactStrategy::SolveStepAttempt() {
+  const int passes = settings_.simplified_semi_smooth_newton ? settings_.inner_loop_iterations : 1;
+  seen_ = {ActiveStates()};
+  held_ = false;
+  for (passes_ = 1; passes_ <= passes; ++passes_) {
+    if (!NewtonRaphsonStrategy::SolveStepAttempt()) return false;
+    if (!settings_.simplified_semi_smooth_newton || UpdateActiveSet()) return true;
+  }
+  passes_ = passes;
+  return false;
+}
+
+bool ResidualBasedNewtonRaphsonMPCContactStrategy::UpdateActiveSet() {
+  builder_->BuildRHS(*scheme_, model_part_);
+  const Vector& raw = builder_->RawResidual();
+  const Variable<double>* const reactions[3] = {&REACTION_X, &REACTION_Y, &REACTION_Z};
+  const Variable<double>* const displacements[3] = {&DISPLACEMENT_X, &DISPLACEMENT_Y, &DISPLACEMENT_Z};
+  for (Node* node : contact_->Nodes())
+    for (int c = 0; c < 3; ++c)
+      if (node->HasDofFor(*displacements[c])) {
+        const Dof& dof = node->GetDof(*displacements[c]);
+        if (dof.equation_id >= 0 && dof.equation_id < raw.size())
+          node->FastGetSolutionStepValue(*reactions[c]) = -raw[dof.equation_id];
+      }
+  constraints_->Measure();
+  const auto& dofs = builder_->GetDofSet();
+  return mpc_criteria_->PostCriteria(model_part_, dofs, builder_->SystemMatrix(), builder_->Increment(),
+                                     builder_->Residual());
+}
+
+bool ResidualBasedNewtonRaphsonMPCContactStrategy::HoldCycle() {
+  if (held_) {
+    SetActiveStates(seen_.back());
+    return true;
+  }
+  std::vector<char> now = ActiveStates();
+  for (std::size_t k = 0; k + 1 < seen_.size(); ++k) {
+    if (seen_[k] != now) continue;
+    for (std::size_t l = k; l < seen_.size(); ++l)
+      for (std::size_t i = 0; i < now.size(); ++i) now[i] = static_cast<char>(now[i] || seen_[l][i]);
+    SetActiveStates(now);
+    held_ = true;
+    if (echo_level_ >= 1)
+      Logger::Info(Concat(Name(), ": the active set cycles; the union of the cycle's sets is held for this step"));
+    break;
+  }
+  seen_.push_back(std::move(now));
+  return false;
+}
+
+std::vector<char> ResidualBasedNewtonRaphsonMPCContactStrategy::ActiveStates() const {
+  std::vector<char> states;
+  for (const Node* node : contact_->Nodes())
+    if (node->Is(SLAVE)) states.push_back(static_cast<char>(node->Is(ACTIVE)));
+  return states;
+}
+
+void ResidualBasedNewtonRaphsonMPCContactStrategy::SetActiveStates(const std::vector<char>& states) {
+  std::size_t i = 0;
+  for (Node* node : contact_->Nodes())
+    if (node->Is(SLAVE)) node->Set(ACTIVE, states[i++] != 0);
+}
+
+std::size_t ResidualBasedNewtonRaphsonMPCContactStrategy::NumberOfActiveNodes() const {
+  std::size_t count = 0;
+  if (contact_)
+    for (const Node* node : contact_->Nodes())
+      if (node->Is(SLAVE) && node->Is(ACTIVE)) ++count;
+  return count;
+}
+
+}  // namespace mc

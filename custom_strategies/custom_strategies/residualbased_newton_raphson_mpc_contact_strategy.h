@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/parameters/parameters.h"
+#include "core/solving/newton_raphson_strategy.h"
+#include "custom_strategies/custom_convergencecriterias/mpc_contact_criteria.h"
+#include "custom_strategies/custom_strategies/mpc_contact_constraints.h"
+
+namespace mc {
+
+/// The keys of mpc_contact_settings the MPC strategy reads (spec 2.8).
+struct MPCContactStrategySettings {
+  int inner_loop_iterations;           ///< active-set passes of the simplified semi-smooth Newton
+  bool update_each_nl_iteration;       ///< relations rebuilt at every Newton iteration, not once per step
+  bool simplified_semi_smooth_newton;  ///< active set frozen within a pass, checked between passes
+};
+
+/// "newton_raphson_mpc_contact_strategy" (Kratos' ResidualBasedNewtonRaphsonMPCContactStrategy): Newton
+/// with the contact imposed by master-slave constraints (MPCContactConstraints) on the ACTIVE slave
+/// nodes, whose set MPCContactCriteria updates from the reactions.
+///
+/// A step: the relations are built at the step's start configuration (and again at every iteration
+/// with update_each_nl_iteration); the predictor adds one constrained linear solve whose reactions give
+/// the active set Newton starts with (rather than the search's gap guess); then Newton from the
+/// predicted state. Without
+/// simplified_semi_smooth_newton the set is updated after every iteration and the step has converged
+/// when the mechanical criterion has and no node changed; with it, up to inner_loop_iterations passes
+/// of a Newton loop on a frozen set, each followed by the update.
+///
+/// Cycle guard (as the mortar contact strategy's): an edge node can be released by its pull and then
+/// re-activated by its penetration, iteration after iteration. When the set comes back to one of an
+/// earlier iteration (not the previous one), the union of the sets of the cycle is held active for the
+/// rest of the step (a held node may carry a small pull).
+///
+/// Kratos checks the reactions twice per iteration (the strategy's own MPCContactCriteria, and a second
+/// one the Python solver puts in an AndCriteria with the mechanical criterion): a defect, the second
+/// check only repeats the first. Here the strategy owns the one MPCContactCriteria, and the criterion it
+/// is given is the mechanical one.
+class ResidualBasedNewtonRaphsonMPCContactStrategy : public NewtonRaphsonStrategy {
+ public:
+  /// The mpc_contact_settings keys it reads, with the solver's defaults (Kratos' strategy's own
+  /// inner_loop_iterations default, 5, is replaced by the solver's 10 before it sees it).
+  static Parameters GetDefaultParameters();
+  static MPCContactStrategySettings ReadSettings(Parameters settings);
+
+  ResidualBasedNewtonRaphsonMPCContactStrategy(ModelPart& model_part, std::shared_ptr<Scheme> scheme,
+                                               std::shared_ptr<ConvergenceCriteria> criteria,
+                                               std::shared_ptr<BuilderAndSolver> builder_and_solver,
+                                               MPCContactStrategySettings settings, int max_iteration = 10,
+                                               bool compute_reactions = true, bool reform_dofs_at_each_step = true,
+                                               bool move_mesh_flag = true);
+
+  std::string Name() const override { return "newton_raphson_mpc_contact_strategy"; }
+  void Initialize() override;
+  void InitializeSolutionStep() override;
+  void Predict() override;
+
+  const MPCContactStrategySettings& Settings() const noexcept { return settings_; }
+  /// Passes of the last step (1 without simplified_semi_smooth_newton).
+  int InnerLoopIterations() const noexcept { return passes_; }
+  /// ACTIVE slave nodes now.
+  std::size_t NumberOfActiveNodes() const;
+
+ protected:
+  bool NewtonIteration(int iteration) override;
+  bool SolveStepAttempt() override;
+
+ private:
+  /// The reactions of the interface nodes at the current state (minus the residual: the force the
+  /// constraints transmit), the operators measured again, and the criterion's update of the active set;
+  /// true when no node changed.
+  bool UpdateActiveSet();
+  /// After a change of the set in full semi-smooth Newton: the cycle guard (see the class comment); true
+  /// while the held set stands in for the criterion's.
+  bool HoldCycle();
+  std::vector<char> ActiveStates() const;
+  void SetActiveStates(const std::vector<char>& states);
+
+  MPCContactStrategySettings settings_;
+  std::shared_ptr<MPCContactConstraints> constraints_;
+  std::shared_ptr<MPCContactCriteria> mpc_criteria_;
+  ModelPart* contact_ = nullptr;
+  int passes_ = 0;
+  std::vector<std::vector<char>> seen_;  ///< the active sets of this step's iterations, in order
+  bool held_ = false;                    ///< a cycle's union is held
+};
+
+}  // namespace mc

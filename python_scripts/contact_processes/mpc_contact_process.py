@@ -1,0 +1,114 @@
+"""``mpc_contact_process``: multipoint-constraint (MPC) mortar contact (spec 4.7). The interfaces and
+searches are those of the other contact processes; the pairs are ``MPCMortarContactCondition<geometry>``,
+which add nothing to the system: the MPC strategy ties each active slave node's normal displacement to
+the mortar projection of the master (D^-1 M) with a master-slave constraint, and releases it when its
+reaction pulls (``reaction_check_stiffness_factor``)."""
+from __future__ import annotations
+
+import math
+
+from .. import _core
+from ..utilities import nearest, warn_about_keys_without_effect
+from . import _settings
+from .alm_contact_process import NORMAL_UPDATE, NORMAL_VARIATIONS
+from .search_base_process import SearchBaseProcess
+
+#: contact_type values Kratos recognises for MPC (spec 4.7) that are not formulations of their own
+MESH_TYING = "MeshTying"
+PURE_SLIP = "PureSlip"
+
+_FRICTIONAL = "only frictional MPC contact (not implemented) reads it"
+#: Keys accepted without effect (issue 18): (sub-block or "", key) -> why.
+KEYS_WITHOUT_EFFECT = {
+    ("", "friction_coefficients"): _FRICTIONAL,
+    ("", "not_normal_update_frictional"): _FRICTIONAL,
+    ("", "frictional_law"): _FRICTIONAL,
+    ("", "tangent_factor"): _FRICTIONAL,
+    ("", "normal_variation"): "the constraints are linear in the displacements, built from the nodal normals of the "
+                              "configuration they are built at: there is no tangent of the normal to include",
+    ("", "clear_inactive_for_post"): "an inactive node transmits no force: its CONTACT_FORCE and "
+                                     "NORMAL_CONTACT_STRESS are zero either way",
+    ("", "update_condition_relation_step"): "the relations are rebuilt at every step from its start "
+                                            "configuration (and at every iteration with "
+                                            "mpc_contact_settings.update_each_nl_iteration)",
+}
+
+
+def mpc_formulation(contact_type, where: str):
+    """The formulation of an MPC ``contact_type`` (a Parameters string): Frictionless, or Frictional
+    with Kratos' suffixes (PureSlip, WithNormalUpdate), which is not implemented yet; MeshTying
+    (Kratos' tying by constraints) is not either."""
+    name = contact_type.GetString()
+    base = name[:-len(NORMAL_UPDATE)] if name.endswith(NORMAL_UPDATE) else name
+    base = base[:-len(PURE_SLIP)] if base.endswith(PURE_SLIP) else base
+    if base == MESH_TYING:
+        raise _core.NotImplementedFeatureError(
+            f"{contact_type.Where()}: '{name}' (mesh tying by multipoint constraints) is not implemented; "
+            "mesh_tying_process ties meshes with dual mortar multipliers")
+    return _core.ContactFormulation.OfProcess("mpc_contact_process", base, f"{where}: {contact_type.Where()} '{name}'")
+
+
+class MPCContactProcess(SearchBaseProcess):
+    """Builds the contact interfaces and searches (MPC pairs) and hands the release threshold to the
+    MPC strategy."""
+
+    python_module = "mpc_contact_process"
+
+    @classmethod
+    def GetDefaultParameters(cls) -> _core.Parameters:
+        common = _settings.common_defaults()
+        common.update({
+            "contact_type": "Frictionless",
+            "not_normal_update_frictional": False,
+            "normal_variation": "no_derivatives_computation",
+            "frictional_law": "Coulomb",
+            "tangent_factor": 1.0e-1,
+            "zero_tolerance_factor": 1.0e2,
+            "reaction_check_stiffness_factor": 1.0e-10,
+            "integration_order": 2,
+            "clear_inactive_for_post": True,
+            "update_condition_relation_step": False,
+        })
+        return _settings.to_parameters(common)
+
+    def _check_types(self) -> None:
+        s = self.settings
+        self.formulation = mpc_formulation(s["contact_type"], self.python_module)
+        self.condition_stem = self.formulation.ConditionStem(False, False)
+        variation = s["normal_variation"].GetString().lower()
+        if variation not in NORMAL_VARIATIONS:
+            raise _core.InputError(f"{s['normal_variation'].Where()}: unknown value '{variation}'"
+                                   f"{nearest(variation, NORMAL_VARIATIONS)}")
+        law = s["frictional_law"].GetString()
+        if law != "Coulomb":
+            raise _core.InputError(f"{s['frictional_law'].Where()}: '{law}' is not a frictional law of MPC contact"
+                                   f"{nearest(law, ['Coulomb'])} (valid: Coulomb)")
+        factor = s["reaction_check_stiffness_factor"]
+        if not 0.0 <= factor.GetDouble() < math.inf:
+            raise _core.InputError(f"{factor.Where()}: must be a non-negative number, got {factor.GetDouble()!r}")
+        if not 0.0 < s["tangent_factor"].GetDouble() < math.inf:
+            raise _core.InputError(f"{s['tangent_factor'].Where()}: must be a positive number, "
+                                   f"got {s['tangent_factor'].GetDouble()!r}")
+        warn_about_keys_without_effect(s, self.GetDefaultParameters(), KEYS_WITHOUT_EFFECT)
+
+    def check_solver_variables(self) -> None:
+        """The solver must be the MPC contact solver (solver_settings.mpc_contact_settings)."""
+        solver = self.root.GetProcessInfo().GetValue(_core.MORTAR_TYPE)
+        if solver != self.formulation.mortar_type:
+            found = "contact_settings" if solver else "neither contact_settings nor mpc_contact_settings"
+            raise _core.InputError(
+                f"{self.python_module} needs solver_settings.mpc_contact_settings (contact_type "
+                f"\"{self.formulation.contact_type}\"); the solver has {found}")
+
+    def ExecuteInitialize(self) -> None:
+        super().ExecuteInitialize()
+        info = self.root.GetProcessInfo()
+        info.SetValue(_core.REACTION_CHECK_STIFFNESS_FACTOR,
+                      self.settings["reaction_check_stiffness_factor"].GetDouble())
+        for part in (self.root, self.root.GetSubModelPart("Contact"), self.root.GetSubModelPart("ComputingContact")):
+            part.Set(_core.CONTACT, True)
+            part.Set(_core.SLIP, False)
+
+    def ExecuteFinalizeSolutionStep(self) -> None:
+        """Nothing: CONTACT_FORCE and NORMAL_CONTACT_STRESS are written by the MPC strategy's active-set
+        check, from the reactions of the converged state."""

@@ -1,0 +1,59 @@
+"""The MPC contact solver (spec 2.1, 2.8): chosen by ``solver_settings.mpc_contact_settings``; the
+structural solver with the MPC contact strategy, whose contact constraints replace the multipliers."""
+from __future__ import annotations
+
+from .. import _core
+from ..contact_processes.mpc_contact_process import mpc_formulation
+from ..contact_strategies.strategy_factory import create_builder_and_solver
+from .mechanical_solver import MechanicalSolver
+
+#: Keys accepted without effect (issue 18): (sub-block or "", key) -> why; warned by the solver settings'
+#: validation, whichever solver runs.
+KEYS_WITHOUT_EFFECT = {
+    ("", "enforce_ntn"): "Kratos 10.4 accepts it without effect too (its node-to-node enforcement is disabled)",
+}
+
+
+def mpc_contact_settings_defaults() -> _core.Parameters:
+    """Every key of mpc_contact_settings, each declared once by its reader: contact_type by the solver,
+    the others by the MPC strategy."""
+    defaults = _core.Parameters('{"contact_type": "Frictionless"}')
+    defaults.AddMissingParameters(_core.ResidualBasedNewtonRaphsonMPCContactStrategy.GetDefaultParameters())
+    return defaults
+
+
+class MPCContactMechanicalSolver(MechanicalSolver):
+    def __init__(self, model, settings, **kwargs):
+        mpc = settings["mpc_contact_settings"]
+        self.formulation = mpc_formulation(mpc["contact_type"], "the MPC contact solver")
+        # The active set is decided from the reactions; the DoF numbering follows the constraints.
+        for key in ("compute_reactions", "clear_storage", "reform_dofs_at_each_step"):
+            settings[key].SetBool(True)
+        super().__init__(model, settings, **kwargs)
+        if self.explicit:
+            raise _core.NotImplementedFeatureError(
+                f"{settings['time_integration_method'].Where()}: explicit MPC contact is not implemented; the MPC "
+                "contact solvers are static or implicit dynamic")
+
+    def AddVariables(self) -> None:
+        super().AddVariables()
+        for name in ["NORMAL", "NODAL_H", *self.formulation.variables]:
+            self.main_model_part.AddNodalSolutionStepVariable(_core.GetVariable(name))
+        # mpc_contact_process checks that it runs under this solver.
+        self.main_model_part.ProcessInfo.SetValue(_core.MORTAR_TYPE, self.formulation.mortar_type)
+
+    def _create_strategy(self):
+        s = self.settings
+        part = self.GetComputingModelPart()
+        if s["analysis_type"].GetString() == "linear":
+            raise _core.NotImplementedFeatureError(
+                f"{s['analysis_type'].Where()}: \"linear\" with mpc_contact_settings: MPC contact needs its Newton "
+                "loop to find the active set; use \"non_linear\"")
+        if s["step_splitting"].size() > 0:
+            raise _core.NotImplementedFeatureError(
+                f"{s.Where()}.step_splitting: step splitting is not implemented for MPC contact")
+        builder = create_builder_and_solver(s, _core.CreateLinearSolver(s["linear_solver_settings"]))
+        return _core.ResidualBasedNewtonRaphsonMPCContactStrategy(
+            part, self._create_scheme(part), self._create_criteria(), builder, settings=s["mpc_contact_settings"],
+            max_iteration=s["max_iteration"].GetInt(), compute_reactions=True, reform_dofs_at_each_step=True,
+            move_mesh=s["move_mesh_flag"].GetBool(), echo_level=self.echo_level)

@@ -1,0 +1,94 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Issue 13 (MPC contact): MPCContactConstraints on a 2D pair of straight faces, 0.1 apart, overlapping
+// over [0.3, 1] of the slave face, the whole set-up rotated (the relation then ties two components):
+// the lumped D (NODAL_MAUX) is the exact integral of the slave shape functions over the overlap, the
+// nodal gap is the distance, and the relation of each slave node, evaluated for any master translation
+// and any tangential slave motion, puts the slave node on the master face (the gap measured again is 0).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "custom_conditions/mpc_mortar_contact_condition.h"
+#include "custom_strategies/custom_strategies/mpc_contact_constraints.h"
+#include "custom_utilities/contact_variables.h"
+#include "tests/cpp/contact_conditions/contact_condition_test_utilities.h"
+
+namespace mc::test {
+namespace {
+
+const Variable<double>* const kU[2] = {&DISPLACEMENT_X, &DISPLACEMENT_Y};
+
+struct InclinedPair {
+  Model model;
+  ModelPart& root = MakeContactModelPart(model);
+  ModelPart& contact = root.CreateSubModelPart("Contact");
+  ModelPart& computing = root.CreateSubModelPart("ComputingContact");
+  double angle;
+  Array3 up;
+
+  explicit InclinedPair(double theta) : angle(theta), up(-std::sin(theta), std::cos(theta), 0.0) {
+    root.GetProcessInfo().SetValue(DOMAIN_SIZE, 2);
+    const auto at = [&](double x, double y) {
+      return Array3(std::cos(angle) * x - std::sin(angle) * y, std::sin(angle) * x + std::cos(angle) * y, 0.0);
+    };
+    Node& s1 = MakeNode(root, 1, at(0.0, 0.0));
+    Node& s2 = MakeNode(root, 2, at(1.0, 0.0));
+    Node& m1 = MakeNode(root, 11, at(1.2, 0.1));
+    Node& m2 = MakeNode(root, 12, at(0.3, 0.1));
+    for (Node* node : {&s1, &s2}) node->Set(SLAVE);
+    auto pair = std::make_unique<MPCMortarContactCondition<2, 2, 2>>(
+        1, Geometry(GeometryType::Line2D2, {&s2, &s1}), nullptr, Geometry(GeometryType::Line2D2, {&m1, &m2}));
+    Condition& added = computing.AddCondition(std::move(pair));
+    contact.AddCondition(&added);
+    contact.AddNodes({1, 2, 11, 12});
+  }
+};
+
+TEST(MPCContactConstraints, OperatorsAndGapOfAnInclinedPair) {
+  InclinedPair pair(0.5);
+  MPCContactConstraints constraints(pair.contact, pair.computing);
+  constraints.Measure();
+  Node& s1 = pair.root.GetNode(1);
+  Node& s2 = pair.root.GetNode(2);
+  EXPECT_NEAR(NormalCalculationUtilities::GetNodalNormal(s1).dot(pair.up), 1.0, 1e-12);
+  // int (1 - x) and int x over [0.3, 1]
+  EXPECT_NEAR(s1.GetValue(NODAL_MAUX), 0.245, 1e-12);
+  EXPECT_NEAR(s2.GetValue(NODAL_MAUX), 0.455, 1e-12);
+  EXPECT_NEAR(constraints.NodalGap(s1), 0.1, 1e-12);
+  EXPECT_NEAR(constraints.NodalGap(s2), 0.1, 1e-12);
+  EXPECT_EQ(s1.GetValue(NODAL_PAUX), 1.0);
+  EXPECT_NEAR(s1.FastGetSolutionStepValue(WEIGHTED_GAP), 0.0245, 1e-12);
+}
+
+TEST(MPCContactConstraints, RelationPutsTheSlaveNodeOnTheMasterFace) {
+  InclinedPair pair(0.5);
+  MPCContactConstraints constraints(pair.contact, pair.computing);
+  constraints.Measure();
+  // A fixed component cannot be the slave of a relation: node 2's y (the largest normal component) is fixed.
+  pair.root.GetNode(2).Fix(DISPLACEMENT_Y);
+  constraints.Relate();
+  ASSERT_EQ(constraints.Relations().size(), 2u);
+  // The masters move rigidly, the slave nodes slide along the face; the relations give the rest.
+  const Array3 translation(0.03, -0.07, 0.0);
+  const Array3 tangent(std::cos(0.5), std::sin(0.5), 0.0);
+  for (IndexType id : {11, 12})
+    for (int c = 0; c < 2; ++c) SetDofValue(pair.root.GetNode(id).GetDof(*kU[c]), translation[c]);
+  for (IndexType id : {1, 2})
+    for (int c = 0; c < 2; ++c) SetDofValue(pair.root.GetNode(id).GetDof(*kU[c]), 0.02 * id * tangent[c]);
+  for (const auto& [node, relation] : constraints.Relations()) {
+    if (node->Id() == 2) {
+      EXPECT_EQ(relation->Slave().variable, &DISPLACEMENT_X);
+    }
+    double value = relation->Constant();
+    for (std::size_t i = 0; i < relation->Masters().size(); ++i)
+      value += relation->Weights()[i] * relation->Masters()[i]->Value();
+    relation->Slave().Value() = value;
+  }
+  for (Node* node : pair.root.Nodes()) node->Coordinates() = node->X0() + node->FastGetSolutionStepValue(DISPLACEMENT);
+  constraints.Measure();
+  EXPECT_NEAR(constraints.NodalGap(pair.root.GetNode(1)), 0.0, 1e-12);
+  EXPECT_NEAR(constraints.NodalGap(pair.root.GetNode(2)), 0.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace mc::test
