@@ -132,6 +132,11 @@ class ContactSearchProcess {
   /// The body (connected set of elements of the root model part) a face of the interface lies on;
   /// the bodies are found once, at the first call.
   std::size_t BodyOf(const Condition& condition);
+  /// Finds, once, the element neighbours of the interface nodes (element_neighbours_).
+  void FindElementNeighbours();
+  /// Whether one element holds a node of each face (a face and the far side of a body one
+  /// element across). After FindElementNeighbours.
+  bool ShareElement(const Geometry& a, const Geometry& b) const;
 
   ModelPart& root_;
   ModelPart& interface_;
@@ -150,6 +155,8 @@ class ContactSearchProcess {
   /// NORMAL_GAP of each slave node at the previous search (static_check_movement).
   std::unordered_map<const Node*, double> previous_gap_;
   std::unordered_map<const Node*, std::size_t> body_of_node_;
+  /// Per interface node, the nodes of the elements that hold it (sorted).
+  std::unordered_map<const Node*, std::vector<const Node*>> element_neighbours_;
   double total_seconds_ = 0.0;
   std::size_t searches_ = 0;
 };

@@ -20,9 +20,6 @@ class ModelPart;
 ///  - UpdateNormals(model_part): recomputes the nodal NORMAL (and the paired normals stored in
 ///    the conditions) of the "Contact" sub-model-part; called before each build (the normals
 ///    follow the current configuration whatever CONSIDER_NORMAL_VARIATION says).
-///  - ReleaseUncoveredNodes(model_part): after UpdateNormals, deactivates the active slave nodes
-///    that no pair overlaps at the new normals (their multiplier rows would be empty); the
-///    weighted gaps and NODAL_AREA are left as they were.
 ///  - UpdateDynamicFactor(model_part), AdaptPenalty(model_part): the dynamic factor
 ///    (`compute_dynamic_factor`, dynamic problems) and the adapted nodal INITIAL_PENALTY
 ///    (ProcessInfo[ADAPT_PENALTY]), refreshed before each build.
@@ -34,7 +31,6 @@ class MortarUpdater {
   virtual ~MortarUpdater() = default;
   virtual void ComputeWeightedGap(ModelPart& model_part) = 0;
   virtual void UpdateNormals(ModelPart& model_part) {}
-  virtual void ReleaseUncoveredNodes(ModelPart& model_part) {}
   virtual void UpdateDynamicFactor(ModelPart& model_part) {}
   virtual void AdaptPenalty(ModelPart& model_part) {}
 };

@@ -36,7 +36,6 @@ bool BaseMortarConvergenceCriteria::PreCriteria(ModelPart& model_part, const Dof
   // derivatives. (Kratos' text refreshes them only with normal variation, but its reference
   // results — e.g. the inclined patch test's contact pressure — match current normals.)
   updater_->UpdateNormals(model_part);
-  updater_->ReleaseUncoveredNodes(model_part);
   const bool dynamic = model_part.HasNodalSolutionStepVariable(VELOCITY);
   const bool adapt_penalty = info.GetValue(ADAPT_PENALTY);
   if ((adapt_penalty || dynamic) && contact->HasNodalSolutionStepVariable(WEIGHTED_GAP))

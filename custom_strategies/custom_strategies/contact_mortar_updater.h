@@ -33,10 +33,6 @@ class ContactMortarUpdater : public MortarUpdater {
 
   void ComputeWeightedGap(ModelPart& model_part) override;
   void UpdateNormals(ModelPart& model_part) override;
-  /// Integrates the pairs again (at the current coordinates and normals) where a slave node is
-  /// active, and deactivates the active nodes left without any overlap; restores WEIGHTED_GAP
-  /// and NODAL_AREA of the last weighted-gap evaluation afterwards.
-  void ReleaseUncoveredNodes(ModelPart& model_part) override;
   /// Sets DYNAMIC_FACTOR on the slave nodes of `Contact` at the first call of each STEP (the
   /// weighted gap is then the prediction's).
   void UpdateDynamicFactor(ModelPart& model_part) override;
