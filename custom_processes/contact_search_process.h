@@ -45,7 +45,9 @@ struct ContactSearchSlot {
 ///     farthest node) meets the ball of radius r = search_factor * L_s around c_s
 ///     (`in_radius*`), or whose bounding box meets s's box grown by r (`in_box*`);
 ///  2. drop masters sharing a node with s and those not facing it: n_s . n_m >= -threshold
-///     (normal_orientation_threshold);
+///     (normal_orientation_threshold), or lying behind s by more than a face's size (the larger
+///     of the two; the smaller for a face of s's own body; a tenth of it where one element holds
+///     both faces: the far side of a body one element across);
 ///  3. `*_with_obb`: drop masters whose oriented box (grown by bounding_box_factor * L) does not
 ///     meet s's (separating-axis test) — removes far-but-in-radius faces;
 ///  4. check_gap: `mapping_check` (default, also "check_mapping") keeps m when its projection
