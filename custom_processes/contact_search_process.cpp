@@ -428,6 +428,54 @@ std::size_t ContactSearchProcess::BodyOf(const Condition& condition) {
   return it != body_of_node_.end() ? it->second : body_of_node_.size() + condition.Id();
 }
 
+void ContactSearchProcess::FindMeshNeighbours() {
+  if (!mesh_neighbours_.empty()) return;
+  for (const Element* element : root_.Elements())
+    for (const Node* node : element->GetGeometry().Nodes()) {
+      auto& around = mesh_neighbours_[node];
+      for (const Node* other : element->GetGeometry().Nodes())
+        if (other != node) around.push_back(other);
+    }
+  for (auto& [_, around] : mesh_neighbours_) {
+    std::sort(around.begin(), around.end());
+    around.erase(std::unique(around.begin(), around.end()), around.end());
+  }
+}
+
+bool ContactSearchProcess::NearInMesh(const Geometry& from, const Geometry& to, double reach) const {
+  // Dijkstra over the element edges (current lengths), stopped at `reach`: the far side of a body
+  // lies about its thickness away through it; the other arm of a bent body, or the other side of
+  // a self contact, only by the long way round.
+  std::unordered_map<const Node*, double> distance;
+  using Entry = std::pair<double, const Node*>;
+  std::vector<Entry> queue;
+  for (const Node* node : from.Nodes()) {
+    distance[node] = 0.0;
+    queue.emplace_back(0.0, node);
+  }
+  std::make_heap(queue.begin(), queue.end(), std::greater<>());
+  while (!queue.empty()) {
+    std::pop_heap(queue.begin(), queue.end(), std::greater<>());
+    const auto [d, node] = queue.back();
+    queue.pop_back();
+    if (d > distance[node]) continue;
+    for (const Node* target : to.Nodes())
+      if (target == node) return true;
+    const auto it = mesh_neighbours_.find(node);
+    if (it == mesh_neighbours_.end()) continue;
+    for (const Node* other : it->second) {
+      const double next = d + (other->Coordinates() - node->Coordinates()).norm();
+      if (next > reach) continue;
+      const auto known = distance.find(other);
+      if (known != distance.end() && known->second <= next) continue;
+      distance[other] = next;
+      queue.emplace_back(next, other);
+      std::push_heap(queue.begin(), queue.end(), std::greater<>());
+    }
+  }
+  return false;
+}
+
 ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
   const auto start = std::chrono::steady_clock::now();
   ContactSearchStatistics stats;
@@ -448,6 +496,12 @@ ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
 
   std::vector<std::size_t> bodies(all.size());
   for (std::size_t i = 0; i < all.size(); ++i) bodies[i] = BodyOf(*all[i]);
+  // The mesh paths are needed only where a slave face may meet a face of its own body.
+  std::set<std::size_t> slave_bodies, master_bodies;
+  for (std::size_t i : slaves) slave_bodies.insert(bodies[i]);
+  for (std::size_t i : masters) master_bodies.insert(bodies[i]);
+  if (std::any_of(slave_bodies.begin(), slave_bodies.end(), [&](std::size_t b) { return master_bodies.count(b); }))
+    FindMeshNeighbours();
   std::vector<FaceData> faces(all.size());
   ParallelForEachIndex(all.size(), [&](std::size_t i) { faces[i] = MakeFaceData(all[i], bodies[i]); });
 
@@ -508,14 +562,19 @@ ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
       // normals, no common node, not behind it: the far side of the slave's own body has opposite
       // normals too, as on a whole-skin interface), and its projection on the slave's plane overlaps
       // the slave. Another body's face may lie behind the slave by up to a face's size (an initial
-      // penetration); a face of the slave's own body only by a tenth of one (self contact that has
-      // just crossed), since its far side can be nearer than a face's size (one element across).
+      // penetration); so may a face of the slave's own body that lies far from it along the mesh
+      // (self contact, or two given parts of one body, whose step crossed: the bent clamp's arms,
+      // 0.0134 across faces of 0.02, were left unpaired and cycled, where Kratos pairs them and
+      // converges). A face of its own body reached through the mesh within twice that is the far
+      // side of a thin body, kept only up to a tenth of a face behind (a whole-skin interface on a
+      // block one element thick paired its bottom face with its top: a singular system).
       auto opposite = [&](const FaceData& master) {
-        const double behind = master.body == slave.body ? 0.1 * std::min(slave.length, master.length)
-                                                        : std::max(slave.length, master.length);
-        return slave.normal.dot(master.normal) < -threshold &&
-               (master.center - slave.center).dot(slave.normal) >= -behind &&
-               !ShareNode(slave_geometry, master.condition->GetGeometry());
+        const Geometry& master_geometry = master.condition->GetGeometry();
+        if (!(slave.normal.dot(master.normal) < -threshold) || ShareNode(slave_geometry, master_geometry)) return false;
+        const double depth = (slave.center - master.center).dot(slave.normal);  // > 0: behind the slave
+        if (master.body != slave.body) return depth <= std::max(slave.length, master.length);
+        const double face = std::min(slave.length, master.length);
+        return depth <= 0.1 * face || (depth <= face && !NearInMesh(slave_geometry, master_geometry, 2.0 * face));
       };
       auto beneath = [&](const FaceData& master) {
         return ProjectedOverlap(slave_geometry, slave.normal, master.condition->GetGeometry()) > 0.0;

@@ -45,7 +45,10 @@ struct ContactSearchSlot {
 ///     farthest node) meets the ball of radius r = search_factor * L_s around c_s
 ///     (`in_radius*`), or whose bounding box meets s's box grown by r (`in_box*`);
 ///  2. drop masters sharing a node with s and those not facing it: n_s . n_m >= -threshold
-///     (normal_orientation_threshold);
+///     (normal_orientation_threshold), or lying behind s by more than a face's size (the larger
+///     of the two; the smaller for a face of s's own body; a tenth of it for a face of s's own
+///     body that a path along element edges of twice that length reaches: the far side of a thin
+///     body);
 ///  3. `*_with_obb`: drop masters whose oriented box (grown by bounding_box_factor * L) does not
 ///     meet s's (separating-axis test) — removes far-but-in-radius faces;
 ///  4. check_gap: `mapping_check` (default, also "check_mapping") keeps m when its projection
@@ -132,6 +135,11 @@ class ContactSearchProcess {
   /// The body (connected set of elements of the root model part) a face of the interface lies on;
   /// the bodies are found once, at the first call.
   std::size_t BodyOf(const Condition& condition);
+  /// Finds, once, the nodes that share an element with each node (mesh_neighbours_).
+  void FindMeshNeighbours();
+  /// Whether a path along element edges no longer than `reach` joins a node of `from` to one of
+  /// `to` (current coordinates). After FindMeshNeighbours.
+  bool NearInMesh(const Geometry& from, const Geometry& to, double reach) const;
 
   ModelPart& root_;
   ModelPart& interface_;
@@ -150,6 +158,9 @@ class ContactSearchProcess {
   /// NORMAL_GAP of each slave node at the previous search (static_check_movement).
   std::unordered_map<const Node*, double> previous_gap_;
   std::unordered_map<const Node*, std::size_t> body_of_node_;
+  /// Per node of an element, the other nodes of the elements that hold it (sorted); built only
+  /// when a slave face may meet a face of its own body.
+  std::unordered_map<const Node*, std::vector<const Node*>> mesh_neighbours_;
   double total_seconds_ = 0.0;
   std::size_t searches_ = 0;
 };

@@ -255,18 +255,15 @@ TEST(ContactSearch, AutomaticRolesAreDecidedByTheFirstSearchThatFindsAPartner) {
   }
 }
 
-TEST(ContactSearch, SelfContactPairsTakeOneSlaveSidePerPairOfFacingSheets) {
-  // One C-shaped body: the two strips joined at their left ends by a column of quads, the contact
-  // surface the inside of the C (lower strip top, column face, upper strip bottom), one group of
-  // faces. The strips' elements are created alternately, so their faces' ids interleave, and the
-  // meshes do not match (4 against 3): every lower face meets upper faces of lower and of higher
-  // id. All pairs must take the same side as slave, the sheet holding the lowest id.
+/// One C-shaped body: a lower strip (4 quads) and an upper one (3 quads) 1 thick, `gap` apart
+/// (negative: crossed), joined at their left ends by a column of quads; the contact surface is the
+/// inside of the C (lower strip top, upper strip bottom), one group of faces. The strips' elements
+/// are created alternately, so their faces' ids interleave.
+ModelPart& BuildC2D(Model& model, double gap) {
   test::RegisterTestPairs();
-  Model model;
   ModelPart& root = model.CreateModelPart("Structure");
   root.AddNodalSolutionStepVariable(NORMAL);
   root.AddNodalSolutionStepVariable(NODAL_H);
-  const double gap = 0.001;
   const int n_lower = 4, n_upper = 3;
   IndexType id = 1;
   auto row = [&](int n, double y) {
@@ -295,6 +292,19 @@ TEST(ContactSearch, SelfContactPairsTakeOneSlaveSidePerPairOfFacingSheets) {
   for (int i = 0; i <= n_upper; ++i) inside.push_back(upper_bottom + i);
   root.CreateSubModelPart("Contact_Part").AddNodes(inside);
   ModelPart& sub = test::BuildInterface(root, {"Contact_Part"});
+  return sub;
+}
+
+TEST(ContactSearch, SelfContactPairsTakeOneSlaveSidePerPairOfFacingSheets) {
+  // One C-shaped body: the two strips joined at their left ends by a column of quads, the contact
+  // surface the inside of the C (lower strip top, column face, upper strip bottom), one group of
+  // faces. The strips' elements are created alternately, so their faces' ids interleave, and the
+  // meshes do not match (4 against 3): every lower face meets upper faces of lower and of higher
+  // id. All pairs must take the same side as slave, the sheet holding the lowest id.
+  Model model;
+  const double gap = 0.001;
+  ModelPart& sub = BuildC2D(model, gap);
+  ModelPart& root = sub.GetRootModelPart();
   ContactSearchSlot automatic;
   automatic.predefined_master_slave = false;
   ContactSearchProcess search(root, sub, SearchSettings(), automatic);
@@ -312,6 +322,44 @@ TEST(ContactSearch, SelfContactPairsTakeOneSlaveSidePerPairOfFacingSheets) {
     slave_below.insert(
         dynamic_cast<const PairedCondition&>(*pair).GetParentSlaveCondition()->GetGeometry().Center().y() < 0.25 * gap);
   EXPECT_EQ(slave_below, std::set<bool>{lowest_below});
+}
+
+TEST(ContactSearch, CrossedFacesOfOneBodyArePairedTheFarSideOfAThinBodyIsNot) {
+  // The C's strips crossed by 0.1 (faces 0.25 and 0.33 long, so kept up to 0.25 behind): away
+  // from the column the mesh joins them only the long way round, and they pair as two bodies
+  // would (the bent clamp of issue 10, whose arms crossed within a step): 4 of the 6 overlaps.
+  // The two faces next to the column are 0.1 and 0.35 apart through it (within twice 0.25): taken
+  // for the far side of a thin body, no pair (without the crossing they are in front: 6 pairs).
+  Model model;
+  ModelPart& crossed = BuildC2D(model, -0.1);
+  ContactSearchSlot automatic;
+  automatic.predefined_master_slave = false;
+  ContactSearchProcess search(crossed.GetRootModelPart(), crossed, SearchSettings(), automatic);
+  EXPECT_EQ(search.UpdateMortarConditions().pairs, 4u);
+  // A strip two elements thick (0.2 across faces of 0.25), its top and bottom one surface: the
+  // far side lies 0.2 behind each face and 0.2 away through the mesh, no partner.
+  Model thin_model;
+  ModelPart& root = thin_model.CreateModelPart("Structure");
+  root.AddNodalSolutionStepVariable(NORMAL);
+  root.AddNodalSolutionStepVariable(NODAL_H);
+  const int n = 4;
+  for (int j = 0; j <= 2; ++j)
+    for (int i = 0; i <= n; ++i) root.CreateNewNode(j * (n + 1) + i + 1, double(i) / n, 0.1 * j, 0);
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < n; ++i) {
+      const IndexType a = j * (n + 1) + i + 1;
+      root.CreateNewElement("SmallDisplacementElement2D4N", j * n + i + 1, {a, a + 1, a + n + 2, a + n + 1},
+                            &root.GetOrCreateProperties(1));
+    }
+  std::vector<IndexType> skin;
+  for (int i = 0; i <= n; ++i) {
+    skin.push_back(i + 1);
+    skin.push_back(2 * (n + 1) + i + 1);
+  }
+  root.CreateSubModelPart("Contact_Part").AddNodes(skin);
+  ModelPart& thin = test::BuildInterface(root, {"Contact_Part"});
+  ContactSearchProcess thin_search(root, thin, SearchSettings(), automatic);
+  EXPECT_EQ(thin_search.UpdateMortarConditions().pairs, 0u);
 }
 
 // The interface of the shared 2D Hertz case: hemisphere (slave) on a plate.
