@@ -126,7 +126,8 @@ def main(argv=None) -> int:
           (f"; {ours['error']}" if ours["error"] else ""))
     if args.nodes:
         for node_id, slip, degrees, ratio in ours["nodes"]:
-            print(f"  node {node_id}: {'slip ' if slip else 'stick'} angle {degrees:6.1f} deg, |k lambda_t| / b {ratio:.4f}")
+            state = "slip " if slip else "stick"
+            print(f"  node {node_id}: {state} angle {degrees:6.1f} deg, |k lambda_t| / b {ratio:.4f}")
     sliding = [degrees for _, slip, degrees, _ in ours["nodes"] if slip]
     if sliding:
         print(f"  largest angle between k lambda_t and s over {len(sliding)} slipping nodes: {max(sliding):.1f} deg")
