@@ -19,8 +19,6 @@ using mortar_detail::ValueOf;
 
 // Relative geometric epsilon, scaled by ZERO_TOLERANCE_FACTOR and the slave size.
 constexpr double kRelativeTolerance = 1e-12;
-// Band within which a vertex on the other face's boundary starts the fan as an inside one.
-constexpr double kFanStartTolerance = 1e-6;
 
 template <class T>
 T Cross2(const Eigen::Matrix<T, 2, 1>& a, const Eigen::Matrix<T, 2, 1>& b) {
@@ -322,13 +320,6 @@ bool ExactMortarIntegrationUtility<TDim, TNumNodes, TNumNodesMaster>::Compute(co
     // inside the slave (master node order), else the slave vertices inside the master (slave node
     // order), else the edge crossings (slave edges outer, master edges inner). The choice is
     // arbitrary for D (exact either way) but not for M; taking Kratos' makes the answers agree.
-    // Which vertex is inside is decided with a band of kFanStartTolerance (relative to the slave
-    // size), not at round-off as in Kratos: where a slave edge lies on a master edge (meshes with
-    // aligned edges, the friction block's z = 0.125 and its overhanging sides) the vertex on it is
-    // inside or outside by 1e-16 to 1e-9 from one Newton iterate to the next, the fan start
-    // jumps to a neighbouring corner and M with it by the quadrature error of the order-2 rule;
-    // Newton then cycled through three iterates with fixed active and slip sets (friction block,
-    // t = 1.125 and 1.13: 10 iterations, the limit). Elsewhere the choice is Kratos'.
     int start = 0;
     {
       using D2 = Eigen::Vector2d;
@@ -337,7 +328,7 @@ bool ExactMortarIntegrationUtility<TDim, TNumNodes, TNumNodesMaster>::Compute(co
       std::array<D2, TNumNodesMaster> m2;
       for (int i = 0; i < TNumNodes; ++i) s2[i] = value2(to_plane(x1.row(i).transpose()));
       for (int l = 0; l < TNumNodesMaster; ++l) m2[l] = value2(to_plane(x2.row(l).transpose()));
-      const double tol = kFanStartTolerance * std::sqrt(area_scale);
+      const double tol = 1e-12 * std::sqrt(area_scale);
       auto cross = [](const D2& a, const D2& b) { return a(0) * b(1) - a(1) * b(0); };
       auto inside = [&](const D2& q, const auto& pts, int count) {
         bool positive = true, negative = true;
