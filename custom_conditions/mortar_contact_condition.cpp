@@ -107,6 +107,9 @@ MortarIntegrationSettings MortarContactCondition<TDim, TNumNodes, TNumNodesMaste
   }
   if (info.Has(ZERO_TOLERANCE_FACTOR)) settings.zero_tolerance_factor = info.GetValue(ZERO_TOLERANCE_FACTOR);
   settings.axisymmetric = IsAxisymmetric();
+  const double time = info.GetValue(TIME);
+  if (fan_start_.time != time) fan_start_ = MortarFanStart{time};
+  settings.held_fan_start = &fan_start_;
   return settings;
 }
 

@@ -104,6 +104,9 @@ class MortarContactCondition : public PairedCondition {
   /// min(0, WEIGHTED_GAP / NODAL_AREA) of the slave nodes, as last updated (0 where NODAL_AREA is
   /// not positive): the mean gaps MortarPairKinematics::SetMeanGaps holds the weights of.
   typename Kinematics::SlaveVector PenetratingMeanGaps() const;
+
+  /// The fan start of the pair's overlap, held through a step (MortarIntegrationSettings).
+  mutable MortarFanStart fan_start_;
 };
 
 #define MC_EXTERN(D, S, M) extern template class MortarContactCondition<D, S, M>;

@@ -9,6 +9,16 @@
 namespace mc {
 
 /// Settings of the mortar segmentation, filled from the contact process (spec 4.2).
+/// The vertex a 3D overlap's fan starts from, by what it is: kind 0 master node `index` inside
+/// the slave, 1 slave node `index` inside the master, 2 the crossing of slave edge i and master
+/// edge l (index i * master nodes + l), 3 none (the polygon's first vertex); -1 not chosen yet.
+/// `time` is the TIME it was chosen at.
+struct MortarFanStart {
+  double time = 0.0;
+  int kind = -1;
+  int index = -1;
+};
+
 struct MortarIntegrationSettings {
   /// INTEGRATION_ORDER_CONTACT, 1..5: Gauss points per overlap segment in 2D; in 3D the
   /// order of the triangle rule applied to every sub-triangle (order 2 = 3 points at
@@ -21,6 +31,9 @@ struct MortarIntegrationSettings {
   /// 2D only, x = radius, y = axis: the mortar integrals are taken over the surface of
   /// revolution, each weight times 2 pi r at the point (MortarPairKinematics applies it).
   bool axisymmetric = false;
+  /// When set, the fan start of a 3D overlap: chosen by Kratos' rule where its kind is -1 (and
+  /// stored), kept where it is set (see ExactMortarIntegrationUtility::Compute).
+  MortarFanStart* held_fan_start = nullptr;
 };
 
 /// One mortar integration point of a (slave, master) pair.

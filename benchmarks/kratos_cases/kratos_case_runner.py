@@ -23,6 +23,11 @@ from KratosMultiphysics.StructuralMechanicsApplication.structural_mechanics_anal
 NON_HISTORICAL = {"AUGMENTED_NORMAL_CONTACT_PRESSURE"}
 
 
+def plain(value):
+    """A JSON-writable copy: a number, or the components of a Kratos array (Array3)."""
+    return value if isinstance(value, (int, float)) else [float(c) for c in value]
+
+
 def main(parameters_file, request_file, formulation, output):
     with open(parameters_file) as f:
         params = KM.Parameters(f.read())
@@ -42,9 +47,8 @@ def main(parameters_file, request_file, formulation, output):
                 return
             for key, names in request["nodes"].items():
                 node = part.GetNode(int(key[len("NODE_"):]))
-                snapshot[key] = {
-                    name: (node.GetValue if name in NON_HISTORICAL else node.GetSolutionStepValue)(
-                        KM.KratosGlobals.GetVariable(name)) for name in names}
+                snapshot[key] = {name: plain((node.GetValue if name in NON_HISTORICAL else node.GetSolutionStepValue)(
+                    KM.KratosGlobals.GetVariable(name))) for name in names}
 
     KM.Logger.GetDefaultOutput().SetSeverity(KM.Logger.Severity.WARNING)
     cwd = os.getcwd()

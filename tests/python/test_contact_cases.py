@@ -294,6 +294,19 @@ def test_friction_block(csma_cases, monkeypatch):
         assert tangential[0] < -0.3 * limit, node.Id  # the master drags the slave back along -x
 
 
+@pytest.mark.slow
+def test_friction_block_whole_run(csma_cases, monkeypatch):
+    """The whole friction block (to t = 1.405, where the block climbs the lower one's ramp):
+    every step converges in at most 5 iterations (1004 in all). Before the fan start of the
+    mortar segmentation was held through a step, t = 1.125 and 1.13 took 10 (the limit) and did
+    not converge: Newton cycled through three iterates with fixed active and slip sets."""
+    monkeypatch.chdir(csma_cases)
+    analysis = friction_block(1.405)
+    iterations = [it for _, _, it, _, _ in analysis.step_log]
+    assert len(iterations) >= 281 and all(converged for _, _, _, converged, _ in analysis.step_log)
+    assert max(iterations) <= 5
+
+
 @pytest.mark.parametrize("friction, most", [(0.0, 6), (0.01, 5)])
 def test_friction_block_first_step(csma_cases, monkeypatch, tmp_path, friction, most):
     """The friction block's first step (t = 0.005) with little or no friction converges in a
@@ -306,9 +319,10 @@ def test_friction_block_first_step(csma_cases, monkeypatch, tmp_path, friction, 
 
 
 @pytest.mark.xfail(strict=True, reason="the slip direction is not tied to the slip (issue 12): with "
-                   "slip_augmentation_coefficient 0 the slip constraint fixes only |k lambda_t|, and the "
-                   "converged first step has a node whose tangential multiplier points along its slip (180 "
-                   "degrees from opposing it; 71 degrees at t = 0.1)")
+                   "slip_augmentation_coefficient 0 the slip constraint fixes only |k lambda_t| (its Jacobian "
+                   "row is singular across the direction); the converged first step has 17 of 27 nodes more "
+                   "than 10 degrees off s, 3 at 180 (71 degrees at t = 0.1). benchmarks/robustness/README.md "
+                   "lists the rules and coefficients tried")
 def test_friction_block_traction_opposes_slip(csma_cases, monkeypatch):
     """Coulomb's law in direction: at every sliding node of the first step the tangential
     multiplier lies within 10 degrees of the weighted slip s (s = -D a for a slave sliding by a, so

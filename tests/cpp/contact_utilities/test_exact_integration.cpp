@@ -392,6 +392,35 @@ TEST(ExactMortarIntegration, NearlyCoincidentCrossingEdges) {
   EXPECT_FALSE(above.Compute(crossing, master_above, ConditionNormals<K44>(crossing), Order(2)));
 }
 
+// A master edge on a slave edge (the line y = 0), the master corner (0.5, delta) on it by
+// delta = +-1e-9: the overlap is the slave's part x <= 0.5 either way. The order-2 rule is not
+// exact for ((xi + 0.3)(eta + 0.7))^2 (degree 4, as N1 N2 in M): Kratos' rule starts the fan at
+// the master corner for +1e-9 and at slave node 0 for -1e-9, and the sum jumps by 1.4e-2 of its
+// value (the friction block's Newton cycle at t = 1.125). Held, the start stays the corner.
+TEST(ExactMortarIntegration, HeldFanStartKeepsTheFanOfAVertexOnACoincidentEdge) {
+  const auto x1 = Rows<K44::SlaveMatrix>({0, 0, 0, 1, 0, 0, 1.2, 1, 0, 0, 0.8, 0});
+  auto moment = [&](double delta, MortarFanStart* held) {
+    MortarIntegrationSettings settings = Order(2);
+    settings.held_fan_start = held;
+    MortarIntegrationPoints<double, 3, 4, 4> points;
+    const auto x2 = Rows<K44::MasterMatrix>({-0.5, delta, 0.01, 0.5, delta, 0.01, 0.5, 2, 0.01, -0.5, 2, 0.01});
+    EXPECT_TRUE((ExactMortarIntegrationUtility<3, 4, 4>::Compute(x1, x2, ConditionNormals<K44>(x1), settings, points)));
+    double sum = 0.0;
+    for (int g = 0; g < points.size; ++g) {
+      const auto& xi = points.points[g].slave_local;
+      sum += points.points[g].weight * std::pow((xi(0) + 0.3) * (xi(1) + 0.7), 2);
+    }
+    return sum;
+  };
+  const double above = moment(1e-9, nullptr), below = moment(-1e-9, nullptr);
+  EXPECT_GT(std::abs(above - below), 1e-2 * std::abs(below));  // Kratos' rule
+  MortarFanStart held;
+  EXPECT_DOUBLE_EQ(moment(1e-9, &held), above);
+  EXPECT_EQ(held.kind, 0);  // the master corner
+  EXPECT_EQ(held.index, 1);
+  EXPECT_NEAR(moment(-1e-9, &held), above, 1e-8 * std::abs(above));
+}
+
 TEST(ExactMortarIntegration, FoldedMasterFaceOfADivergedIterateIsASolutionError) {
   const auto x1 =
       Rows<K44::SlaveMatrix>({0.35786855178134835, -0.22733297504675262, -0.08438905766806408, 0.44918066344109708,
