@@ -9,23 +9,12 @@
 #include "core/utilities/logger.h"
 #include "core/variables/kernel_variables.h"
 #include "custom_strategies/custom_convergencecriterias/contact_criteria_utilities.h"
+#include "custom_utilities/contact_state_cycle.h"
 #include "custom_utilities/contact_variables.h"
 
 namespace mc {
 
 namespace {
-// The bits of a slave node's entry in ContactStates.
-constexpr char kActiveState = 1;
-constexpr char kSlipState = 2;
-
-int CountActive(const std::vector<char>& states) {
-  return static_cast<int>(std::count_if(states.begin(), states.end(), [](char s) { return (s & kActiveState) != 0; }));
-}
-
-char ContactState(const Node& node) {
-  return static_cast<char>((node.Is(ACTIVE) ? kActiveState : 0) | (node.Is(SLIP) ? kSlipState : 0));
-}
-
 /// The node's CONVERGED_CONTACT_STATES, -1 where it has none (the history is unknown).
 int ConvergedContactStates(const Node& node) {
   return node.Has(CONVERGED_CONTACT_STATES) ? node.GetValue(CONVERGED_CONTACT_STATES) : -1;
@@ -125,23 +114,12 @@ bool ResidualBasedNewtonRaphsonContactStrategy::LastStepKeptContactStates() cons
 }
 
 std::vector<char> ResidualBasedNewtonRaphsonContactStrategy::ContactStates() const {
-  std::vector<char> states;
-  if (ModelPart* contact = FindContactModelPart(model_part_))
-    for (const Node* node : contact->Nodes())
-      if (node->Is(SLAVE)) states.push_back(ContactState(*node));
-  return states;
+  ModelPart* contact = FindContactModelPart(model_part_);
+  return contact ? mc::ContactStates(*contact) : std::vector<char>{};
 }
 
 void ResidualBasedNewtonRaphsonContactStrategy::SetContactStates(const std::vector<char>& states) {
-  ModelPart* contact = FindContactModelPart(model_part_);
-  if (!contact) return;
-  std::size_t i = 0;
-  for (Node* node : contact->Nodes()) {
-    if (!node->Is(SLAVE)) continue;
-    node->Set(ACTIVE, (states[i] & kActiveState) != 0);
-    node->Set(SLIP, (states[i] & kSlipState) != 0);
-    ++i;
-  }
+  if (ModelPart* contact = FindContactModelPart(model_part_)) mc::SetContactStates(*contact, states);
 }
 
 std::size_t ResidualBasedNewtonRaphsonContactStrategy::CountFlips(const std::vector<char>& before) {
@@ -193,7 +171,7 @@ bool ResidualBasedNewtonRaphsonContactStrategy::RunFullNewtonLoop() {
   // in the cycle is frozen slipping, not as the stiff tangential spring of a stick node that
   // lost its SLIP flag while it was open (penalty slip patch: 14 iterations -> 7). A set that
   // does not change is no cycle.
-  std::vector<std::vector<char>> seen{ContactStates()};
+  ContactStateCycle cycle(ContactStates());
   bool frozen = false;
   for (int it = 1; it <= max_iteration_; ++it) {
     const bool converged = NewtonIteration(it);
@@ -201,20 +179,14 @@ bool ResidualBasedNewtonRaphsonContactStrategy::RunFullNewtonLoop() {
     if (converged && (!frozen || RecheckActiveSet())) return true;
     if (frozen) continue;
     std::vector<char> states = ContactStates();
-    if (states == seen.back()) continue;
-    const auto earlier = std::find(seen.begin(), seen.end() - 1, states);
-    if (earlier == seen.end() - 1) {
-      seen.push_back(std::move(states));
-      continue;
-    }
-    for (auto cycle = earlier; cycle != seen.end(); ++cycle)
-      for (std::size_t i = 0; i < states.size(); ++i) states[i] = static_cast<char>(states[i] | (*cycle)[i]);
+    const int earlier = cycle.Close(states);
+    if (earlier < 0) continue;
     SetContactStates(states);
     frozen = true;
     model_part_.Set(INTERACTION, false);
     if (echo_level_ >= 1)
-      Logger::Info(Concat(Name(), ": the active set of iteration ", it, " is that of iteration ",
-                          earlier - seen.begin(), "; the union of the sets of the cycle (", CountActive(states),
+      Logger::Info(Concat(Name(), ": the active set of iteration ", it, " is that of iteration ", earlier,
+                          "; the union of the sets of the cycle (", CountActive(states),
                           " active slave nodes) is kept until Newton converges on it"));
   }
   return false;

@@ -85,7 +85,7 @@ bool ResidualBasedNewtonRaphsonMPCContactStrategy::NewtonIteration(int iteration
 
 bool ResidualBasedNewtonRaphsonMPCContactStrategy::SolveStepAttempt() {
   const int passes = settings_.simplified_semi_smooth_newton ? settings_.inner_loop_iterations : 1;
-  seen_ = {ActiveStates()};
+  cycle_ = ContactStateCycle(ContactStates(*contact_));
   held_ = false;
   for (passes_ = 1; passes_ <= passes; ++passes_) {
     if (!NewtonRaphsonStrategy::SolveStepAttempt()) return false;
@@ -115,35 +115,16 @@ bool ResidualBasedNewtonRaphsonMPCContactStrategy::UpdateActiveSet() {
 
 bool ResidualBasedNewtonRaphsonMPCContactStrategy::HoldCycle() {
   if (held_) {
-    SetActiveStates(seen_.back());
+    SetContactStates(*contact_, cycle_.Last());
     return true;
   }
-  std::vector<char> now = ActiveStates();
-  for (std::size_t k = 0; k + 1 < seen_.size(); ++k) {
-    if (seen_[k] != now) continue;
-    for (std::size_t l = k; l < seen_.size(); ++l)
-      for (std::size_t i = 0; i < now.size(); ++i) now[i] = static_cast<char>(now[i] || seen_[l][i]);
-    SetActiveStates(now);
-    held_ = true;
-    if (echo_level_ >= 1)
-      Logger::Info(Concat(Name(), ": the active set cycles; the union of the cycle's sets is held for this step"));
-    break;
-  }
-  seen_.push_back(std::move(now));
+  std::vector<char> states = ContactStates(*contact_);
+  if (cycle_.Close(states) < 0) return false;
+  SetContactStates(*contact_, states);
+  held_ = true;
+  if (echo_level_ >= 1)
+    Logger::Info(Concat(Name(), ": the active set cycles; the union of the cycle's sets is held for this step"));
   return false;
-}
-
-std::vector<char> ResidualBasedNewtonRaphsonMPCContactStrategy::ActiveStates() const {
-  std::vector<char> states;
-  for (const Node* node : contact_->Nodes())
-    if (node->Is(SLAVE)) states.push_back(static_cast<char>(node->Is(ACTIVE)));
-  return states;
-}
-
-void ResidualBasedNewtonRaphsonMPCContactStrategy::SetActiveStates(const std::vector<char>& states) {
-  std::size_t i = 0;
-  for (Node* node : contact_->Nodes())
-    if (node->Is(SLAVE)) node->Set(ACTIVE, states[i++] != 0);
 }
 
 std::size_t ResidualBasedNewtonRaphsonMPCContactStrategy::NumberOfActiveNodes() const {

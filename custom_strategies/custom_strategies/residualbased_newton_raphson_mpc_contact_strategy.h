@@ -9,6 +9,7 @@
 #include "core/solving/newton_raphson_strategy.h"
 #include "custom_strategies/custom_convergencecriterias/mpc_contact_criteria.h"
 #include "custom_strategies/custom_strategies/mpc_contact_constraints.h"
+#include "custom_utilities/contact_state_cycle.h"
 
 namespace mc {
 
@@ -77,16 +78,14 @@ class ResidualBasedNewtonRaphsonMPCContactStrategy : public NewtonRaphsonStrateg
   /// After a change of the set in full semi-smooth Newton: the cycle guard (see the class comment); true
   /// while the held set stands in for the criterion's.
   bool HoldCycle();
-  std::vector<char> ActiveStates() const;
-  void SetActiveStates(const std::vector<char>& states);
 
   MPCContactStrategySettings settings_;
   std::shared_ptr<MPCContactConstraints> constraints_;
   std::shared_ptr<MPCContactCriteria> mpc_criteria_;
   ModelPart* contact_ = nullptr;
   int passes_ = 0;
-  std::vector<std::vector<char>> seen_;  ///< the active sets of this step's iterations, in order
-  bool held_ = false;                    ///< a cycle's union is held
+  ContactStateCycle cycle_{{}};  ///< the sets of this step's iterations
+  bool held_ = false;            ///< a cycle's union is held
 };
 
 }  // namespace mc
