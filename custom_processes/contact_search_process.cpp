@@ -402,26 +402,18 @@ void ContactSearchProcess::AssignAutomaticRoles(const std::vector<Condition*>& c
 std::size_t ContactSearchProcess::BodyOf(const Condition& condition) {
   if (body_of_node_.empty()) {
     // Union-find over the nodes of each element: the bodies are the connected sets of elements.
-    std::unordered_map<const Node*, const Node*> parent;
-    auto find = [&](const Node* node) {
-      const Node* root = node;
-      while (parent.at(root) != root) root = parent.at(root);
-      while (parent.at(node) != root) node = std::exchange(parent.at(node), root);
-      return root;
-    };
+    std::unordered_map<const Node*, std::size_t> index;
     for (const Element* element : root_.Elements())
-      for (const Node* node : element->GetGeometry().Nodes()) parent.emplace(node, node);
+      for (const Node* node : element->GetGeometry().Nodes()) index.emplace(node, index.size());
+    DisjointSets bodies(index.size());
     for (const Element* element : root_.Elements()) {
       const Geometry& geometry = element->GetGeometry();
-      for (std::size_t k = 1; k < geometry.PointsNumber(); ++k) {
-        const Node* a = find(&geometry[0]);
-        const Node* b = find(&geometry[k]);
-        if (a != b) parent.at(b) = a;
-      }
+      for (std::size_t k = 1; k < geometry.PointsNumber(); ++k)
+        bodies.Join(index.at(&geometry[k]), index.at(&geometry[0]));
     }
-    std::unordered_map<const Node*, std::size_t> numbers;
-    for (const auto& [node, _] : parent)
-      body_of_node_.emplace(node, numbers.emplace(find(node), numbers.size()).first->second);
+    std::unordered_map<std::size_t, std::size_t> numbers;
+    for (const auto& [node, i] : index)
+      body_of_node_.emplace(node, numbers.emplace(bodies.Find(i), numbers.size()).first->second);
   }
   // A face whose nodes belong to no element (a contact surface without a body) is a body of its own.
   const auto it = body_of_node_.find(&condition.GetGeometry()[0]);
