@@ -100,11 +100,7 @@ void MeshTyingMortarCondition<TDim, TNumNodes, TNumNodesMaster>::EnsureOperators
     n1.row(j) = NormalCalculationUtilities::GetNodalNormal(slave[j]).template head<TDim>().transpose();
   }
   for (int l = 0; l < TNumNodesMaster; ++l) x2.row(l) = master[l].X0().template head<TDim>().transpose();
-  MortarIntegrationSettings settings;
-  if (HasProperties() && GetProperties().Has(INTEGRATION_ORDER_CONTACT))
-    settings.integration_order = GetProperties().GetValue(INTEGRATION_ORDER_CONTACT);
-  if (info.Has(ZERO_TOLERANCE_FACTOR)) settings.zero_tolerance_factor = info.GetValue(ZERO_TOLERANCE_FACTOR);
-  overlap_ = kinematics.ComputeValues(x1, x2, n1, settings);
+  overlap_ = kinematics.ComputeValues(x1, x2, n1, PairIntegrationSettings(info));
   d_ = kinematics.D;
   m_ = kinematics.M;
   // A sliver's area does not count (as for contact): a node covered by slivers alone stays ISOLATED.

@@ -97,15 +97,9 @@ void MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::CalculateRightHan
 template <int TDim, int TNumNodes, int TNumNodesMaster>
 MortarIntegrationSettings MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::IntegrationSettings(
     const ProcessInfo& info) const {
-  MortarIntegrationSettings settings;
-  if (HasProperties()) {
-    const Properties& properties = GetProperties();
-    if (properties.Has(INTEGRATION_ORDER_CONTACT))
-      settings.integration_order = properties.GetValue(INTEGRATION_ORDER_CONTACT);
-    if (properties.Has(CONSIDER_TESSELLATION))
-      settings.consider_tessellation = properties.GetValue(CONSIDER_TESSELLATION);
-  }
-  if (info.Has(ZERO_TOLERANCE_FACTOR)) settings.zero_tolerance_factor = info.GetValue(ZERO_TOLERANCE_FACTOR);
+  MortarIntegrationSettings settings = PairIntegrationSettings(info);
+  if (HasProperties() && GetProperties().Has(CONSIDER_TESSELLATION))
+    settings.consider_tessellation = GetProperties().GetValue(CONSIDER_TESSELLATION);
   settings.axisymmetric = IsAxisymmetric();
   const double time = info.GetValue(TIME);
   if (fan_start_.time != time) fan_start_ = MortarFanStart{time};

@@ -25,11 +25,7 @@ bool ComputeKinematics(const PairedCondition& pair, const ProcessInfo& info,
     n1.row(j) = NormalCalculationUtilities::GetNodalNormal(slave[j]).template head<TDim>().transpose();
   }
   for (int l = 0; l < TNumNodesMaster; ++l) x2.row(l) = master[l].Coordinates().template head<TDim>().transpose();
-  MortarIntegrationSettings settings;
-  if (pair.HasProperties() && pair.GetProperties().Has(INTEGRATION_ORDER_CONTACT))
-    settings.integration_order = pair.GetProperties().GetValue(INTEGRATION_ORDER_CONTACT);
-  if (info.Has(ZERO_TOLERANCE_FACTOR)) settings.zero_tolerance_factor = info.GetValue(ZERO_TOLERANCE_FACTOR);
-  return kinematics.ComputeValues(x1, x2, n1, settings);
+  return kinematics.ComputeValues(x1, x2, n1, pair.PairIntegrationSettings(info));
 }
 
 }  // namespace

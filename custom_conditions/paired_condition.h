@@ -5,6 +5,8 @@
 #include <utility>
 
 #include "core/model/condition.h"
+#include "custom_utilities/contact_variables.h"
+#include "custom_utilities/exact_mortar_integration_utility.h"
 
 namespace mc {
 
@@ -38,6 +40,16 @@ class PairedCondition : public Condition {
   void SetPair(Condition* slave, Condition* master) noexcept {
     slave_ = slave;
     master_ = master;
+  }
+
+  /// The mortar integration settings every pair takes: INTEGRATION_ORDER_CONTACT of its
+  /// properties and ZERO_TOLERANCE_FACTOR of the ProcessInfo (the defaults where absent).
+  MortarIntegrationSettings PairIntegrationSettings(const ProcessInfo& info) const {
+    MortarIntegrationSettings settings;
+    if (HasProperties() && GetProperties().Has(INTEGRATION_ORDER_CONTACT))
+      settings.integration_order = GetProperties().GetValue(INTEGRATION_ORDER_CONTACT);
+    if (info.Has(ZERO_TOLERANCE_FACTOR)) settings.zero_tolerance_factor = info.GetValue(ZERO_TOLERANCE_FACTOR);
+    return settings;
   }
 
   /// Explicit (RHS-only) update of nodal mortar quantities, e.g. the contact conditions add

@@ -8,7 +8,6 @@
 
 namespace mc {
 
-/// Settings of the mortar segmentation, filled from the contact process (spec 4.2).
 /// The vertex a 3D overlap's fan starts from, by what it is: kind 0 master node `index` inside
 /// the slave, 1 slave node `index` inside the master, 2 the crossing of slave edge i and master
 /// edge l (index i * master nodes + l), 3 none (the polygon's first vertex); -1 not chosen yet.
@@ -19,6 +18,7 @@ struct MortarFanStart {
   int index = -1;
 };
 
+/// Settings of the mortar segmentation, filled from the contact process (spec 4.2).
 struct MortarIntegrationSettings {
   /// INTEGRATION_ORDER_CONTACT, 1..5: Gauss points per overlap segment in 2D; in 3D the
   /// order of the triangle rule applied to every sub-triangle (order 2 = 3 points at
