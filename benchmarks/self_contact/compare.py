@@ -78,6 +78,34 @@ def run(code: str, case_dir: str, output: str) -> None:
         json.dump(record, f)
 
 
+def run_child(python: str, code: str, case_dir: str, output: str) -> dict | str:
+    """Runs the case with ``code`` in a subprocess of this script under ``python``: its record
+    (see run), or the last error line of a run that crashed."""
+    child = subprocess.run([python, os.path.abspath(__file__), "--run", code, case_dir, output],
+                           stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    if child.returncode != 0:
+        error = [line for line in child.stderr.splitlines() if "rror" in line]
+        return (error or child.stderr.splitlines() or ["?"])[-1].strip()
+    with open(output) as f:
+        return json.load(f)
+
+
+def steps_summary(record: dict) -> tuple[str, str]:
+    """("yes" or "no (steps k, ...)" for the steps that did not converge, the Newton iterations per step)."""
+    failed = [str(k + 1) for k, (_, converged) in enumerate(record["steps"]) if not converged]
+    return ("no (steps " + ",".join(failed) + ")" if failed else "yes",
+            ",".join(str(n) for n, _ in record["steps"]))
+
+
+def displacement_difference(record: dict, reference: dict) -> float:
+    """max |u - u_ref| / max |u_ref| over the nodes of ``reference``."""
+    import numpy as np
+
+    keys = sorted(reference["displacements"], key=int)
+    u, u_ref = (np.array([r["displacements"][k] for k in keys]) for r in (record, reference))
+    return float(np.abs(u - u_ref).max() / np.abs(u_ref).max())
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--dims", default="2,3")
@@ -87,8 +115,6 @@ def main(argv=None) -> int:
     if args.run:
         run(*args.run)
         return 0
-    import numpy as np
-
     from mortarcontact.cases import self_contact
     from mortarcontact.cases.mesh_files import write_kratos_mdpa
 
@@ -111,15 +137,10 @@ def main(argv=None) -> int:
                 for label, python in pythons.items():
                     output = os.path.join(scratch, f"{dim}-{roles}-{label.split()[0]}.json")
                     code = "kratos" if label.startswith("Kratos") else "mortarcontact"
-                    child = subprocess.run([python, os.path.abspath(__file__), "--run", code, folder, output],
-                                         stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-                    if child.returncode != 0:
-                        error = [line for line in child.stderr.splitlines() if "rror" in line]
-                        add(f"| self_contact_{dim}d | {roles} | {label} | crashed: "
-                            f"{(error or child.stderr.splitlines() or ['?'])[-1].strip()[:120]} | | | |")
+                    record = run_child(python, code, folder, output)
+                    if isinstance(record, str):
+                        add(f"| self_contact_{dim}d | {roles} | {label} | crashed: {record[:120]} | | | |")
                         continue
-                    with open(output) as f:
-                        record = json.load(f)
                     if args.snapshot and code == "kratos" and dim == 2 and roles == "given":
                         record["kratos"] = subprocess.run(
                             [python, "-c", "import importlib.metadata as m; print(m.version('KratosMultiphysics'))"],
@@ -127,13 +148,10 @@ def main(argv=None) -> int:
                         with open(SNAPSHOT, "w") as f:
                             json.dump(record, f, indent=0)
                             f.write("\n")
-                    u = np.array([record["displacements"][k] for k in sorted(record["displacements"], key=int)])
                     if reference is None:
-                        reference = u
-                    difference = np.abs(u - reference).max() / np.abs(reference).max()
-                    failed = [str(k + 1) for k, (_, converged) in enumerate(record["steps"]) if not converged]
-                    status = "no (steps " + ",".join(failed) + ")" if failed else "yes"
-                    iterations = ",".join(str(n) for n, _ in record["steps"])
+                        reference = record
+                    difference = displacement_difference(record, reference)
+                    status, iterations = steps_summary(record)
                     add(f"| self_contact_{dim}d | {roles} | {label} | {status} | {iterations} | "
                         f"{record['seconds']:.2f} | {difference:.1e} |")
     load = os.getloadavg()[0]

@@ -13,10 +13,8 @@ element size) against the largest closing of the slot in one step without contac
 from __future__ import annotations
 
 import argparse
-import json
 import os
 import re
-import subprocess
 import sys
 import tempfile
 
@@ -62,12 +60,11 @@ def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--filter", default="", help="regular expression on the variation names")
     args = parser.parse_args(argv)
-    import numpy as np
-
     from mortarcontact.cases import self_contact
     from mortarcontact.cases.mesh_files import write_kratos_mdpa
 
     import harness  # the Kratos 10.4 venv of the benchmarks (MORTARCONTACT_KRATOS_VENV)
+    from compare import displacement_difference, run_child, steps_summary
 
     pythons = {"mortarcontact": sys.executable, "kratos": harness.kratos_python()}
     lines = ["| variation | dim | size | load | slave | steps | mu | reach / closing | mortarcontact | Kratos 10.4 "
@@ -86,23 +83,16 @@ def main(argv=None) -> int:
             records, cells = {}, []
             for code, python in pythons.items():
                 output = os.path.join(scratch, f"{name}-{code}.json")
-                child = subprocess.run([python, os.path.join(HERE, "compare.py"), "--run", code, folder, output],
-                                       stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-                if child.returncode != 0:
-                    error = [line for line in child.stderr.splitlines() if "rror" in line] or ["?"]
-                    cells.append(f"crashed: {error[-1].strip()[:80]}")
+                record = run_child(python, code, folder, output)
+                if isinstance(record, str):
+                    cells.append(f"crashed: {record[:80]}")
                     continue
-                with open(output) as f:
-                    records[code] = json.load(f)
-                steps_run = records[code]["steps"]
-                failed = [str(k + 1) for k, (_, ok) in enumerate(steps_run) if not ok]
-                iterations = ",".join(str(n) for n, _ in steps_run)
-                cells.append(f"{'no (steps ' + ','.join(failed) + ')' if failed else 'yes'}: {iterations}")
+                records[code] = record
+                status, iterations = steps_summary(record)
+                cells.append(f"{status}: {iterations}")
             difference = ""
             if len(records) == 2:
-                keys = sorted(records["kratos"]["displacements"], key=int)
-                u = [np.array([records[c]["displacements"][k] for k in keys]) for c in ("mortarcontact", "kratos")]
-                difference = f"{np.abs(u[0] - u[1]).max() / np.abs(u[1]).max():.1e}"
+                difference = f"{displacement_difference(records['mortarcontact'], records['kratos']):.1e}"
             # The slot (2 GAP) closes by about twice the free tip deflection (0.43 per unit load in
             # 2D) over the steps; the step-start search bridges SEARCH_FACTOR x the slave size.
             closing = f"{2 * 0.43 * load / steps:.3f}" if dim == 2 else "-"
