@@ -64,9 +64,8 @@ class LinearSolver {
   virtual void ProvideAdditionalData(const SparseMatrix& A, const std::vector<Dof*>& dof_of_equation) {}
 
   /// Non-null when the system is distributed over several processes (PETSc under `mpirun -n N`,
-  /// N > 1). The builder then assembles on each rank only the entities it owns, and the contract
-  /// of Initialize and Solve changes: A is this rank's share of the matrix (the system matrix is
-  /// the sum of the ranks' shares, on one pattern, the same on every rank), b is whole and the
+  /// N > 1). The contract of Initialize and Solve then changes: A is this rank's rows of the
+  /// matrix, complete (row i is system row rows.Begin() + i; every column), b is whole and the
   /// same on every rank, and Solve returns the whole x on every rank, the same bits everywhere.
   /// SetRowPartition tells, before Initialize, which rows each rank owns.
   virtual const AssemblyCommunicator* Communicator() const { return nullptr; }

@@ -3,32 +3,31 @@
 
 #include <algorithm>
 
-#include "core/model/dof.h"
 #include "core/utilities/error.h"
 #include "core/utilities/string_utilities.h"
 
 namespace mc {
 
-RowPartition RowPartition::AtNodes(const std::vector<Dof*>& dof_of_row, std::int64_t rows, int size, int rank) {
+RowPartition RowPartition::FromOwners(const std::vector<int>& owner_of_row, int size, int rank) {
   if (size < 1 || rank < 0 || rank >= size) throw Error(Concat("row partition: rank ", rank, " of ", size));
-  if (static_cast<std::int64_t>(dof_of_row.size()) < rows)
-    throw Error(Concat("row partition: ", dof_of_row.size(), " DoFs for ", rows, " rows"));
   RowPartition partition;
   partition.rank_ = rank;
+  const auto rows = static_cast<std::int64_t>(owner_of_row.size());
   partition.starts_.assign(static_cast<std::size_t>(size) + 1, rows);
   partition.starts_[0] = 0;
-  for (int r = 1; r < size; ++r) {
-    std::int64_t cut = std::max(rows * r / size, partition.starts_[static_cast<std::size_t>(r) - 1]);
-    while (cut > 0 && cut < rows &&
-           dof_of_row[static_cast<std::size_t>(cut)]->node == dof_of_row[static_cast<std::size_t>(cut) - 1]->node)
-      ++cut;
-    partition.starts_[static_cast<std::size_t>(r)] = cut;
+  int current = 0;
+  for (std::int64_t i = 0; i < rows; ++i) {
+    const int owner = owner_of_row[static_cast<std::size_t>(i)];
+    if (owner < current || owner >= size)
+      throw Error(Concat("row partition: row ", i, " owned by rank ", owner, " after rows of rank ", current,
+                         " (", size, " ranks): the rows must be numbered rank by rank"));
+    for (; current < owner; ++current) partition.starts_[static_cast<std::size_t>(current) + 1] = i;
   }
   return partition;
 }
 
 int RowPartition::Owner(std::int64_t row) const {
-  // The last start not after `row`; empty blocks (more ranks than nodes) own nothing.
+  // The last start not after `row`; empty blocks (ranks without nodes) own nothing.
   const auto after = std::upper_bound(starts_.begin(), starts_.end() - 1, row);
   return std::clamp(static_cast<int>(after - starts_.begin()) - 1, 0, Size() - 1);
 }

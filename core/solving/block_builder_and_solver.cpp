@@ -2,14 +2,17 @@
 #include "core/solving/block_builder_and_solver.h"
 #include "core/model/parallel_utilities.h"
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "core/model/master_slave_constraint.h"
 
 namespace mc {
 
 void BlockBuilderAndSolver::NumberDofs() {
-  for (std::size_t i = 0; i < dofs_.size(); ++i) dofs_[i]->equation_id = static_cast<std::int64_t>(i);
+  const std::vector<Dof*>& order = NumberingOrder();
+  for (std::size_t i = 0; i < order.size(); ++i) order[i]->equation_id = static_cast<std::int64_t>(i);
   n_assembled_ = dofs_.size();
   n_system_ = dofs_.size();
 }
@@ -34,44 +37,38 @@ void BlockBuilderAndSolver::ApplyDirichletConditions(bool lhs, bool rhs) {
     A_.makeCompressed();
   }
 
+  // A_'s row i is equation first + i: all rows, or this rank's (BuilderAndSolver's class comment).
   const int* outer = A_.outerIndexPtr();
   const int* inner = A_.innerIndexPtr();
   double* values = A_.valuePtr();
   const long n = static_cast<long>(n_system_);
+  const long first = static_cast<long>(FirstRow());
+  const char* constrained_row = constrained_.data() + first;
   scale_ = 1.0;
-  const AssemblyCommunicator* communicator = Communicator();
-  if (diagonal_ == DirichletDiagonal::kMaxDiagonal && communicator) {
-    // The diagonal is the sum of the ranks' shares: sum it before taking the largest.
-    std::vector<double> diagonal(n_system_, 0.0);
-    for (long j = 0; j < n; ++j) {
-      if (constrained_[j]) continue;
-      for (int p = outer[j]; p < outer[j + 1]; ++p)
-        if (inner[p] == j) diagonal[static_cast<std::size_t>(j)] = values[p];
-    }
-    communicator->SumToAll(diagonal.data(), diagonal.size());
-    double largest = 0.0;
-    for (const double d : diagonal) largest = std::max(largest, std::abs(d));
-    if (largest > 0.0) scale_ = largest;
-  } else if (diagonal_ == DirichletDiagonal::kMaxDiagonal) {
-    // Without the buffer above: a serial build allocates nothing after the first.
+  if (diagonal_ == DirichletDiagonal::kMaxDiagonal) {
     double largest = 0.0;
 #pragma omp parallel for reduction(max : largest) if (n >= kMinParallelDofs)
     for (long j = 0; j < n; ++j) {
       if (constrained_[j]) continue;
       for (int p = outer[j]; p < outer[j + 1]; ++p)
-        if (inner[p] == j) largest = std::max(largest, std::abs(values[p]));
+        if (inner[p] + first == j) largest = std::max(largest, std::abs(values[p]));
+    }
+    if (const AssemblyCommunicator* communicator = Communicator()) {
+      // Each rank saw the diagonals of its rows: the largest of the ranks' largest.
+      std::vector<double> per_rank(static_cast<std::size_t>(communicator->Size()), 0.0);
+      per_rank[static_cast<std::size_t>(communicator->Rank())] = largest;
+      communicator->SumToAll(per_rank.data(), per_rank.size());
+      largest = *std::max_element(per_rank.begin(), per_rank.end());
     }
     if (largest > 0.0) scale_ = largest;
   }
 #pragma omp parallel for if (n >= kMinParallelDofs)
   for (long j = 0; j < n; ++j) {
     if (constrained_[j]) {
-      // Distributed: the rank owning the row puts the diagonal, the others' shares add zero.
-      const double diagonal = communicator && !Partition().Owns(j) ? 0.0 : scale_;
-      for (int p = outer[j]; p < outer[j + 1]; ++p) values[p] = inner[p] == j ? diagonal : 0.0;
+      for (int p = outer[j]; p < outer[j + 1]; ++p) values[p] = inner[p] + first == j ? scale_ : 0.0;
     } else {
       for (int p = outer[j]; p < outer[j + 1]; ++p)
-        if (constrained_[inner[p]]) values[p] = 0.0;
+        if (constrained_row[inner[p]]) values[p] = 0.0;
     }
   }
 }

@@ -76,6 +76,13 @@ void BuilderAndSolver::SetUpDofSet(ModelPart& model_part, const Scheme& scheme) 
   }
   std::sort(dofs_.begin(), dofs_.end(), DofLess);
   dofs_.erase(std::unique(dofs_.begin(), dofs_.end()), dofs_.end());
+  if (communicator_) {
+    if (!node_partition_.IsFor(model_part)) node_partition_ = NodePartition(model_part, *communicator_);
+    ordered_dofs_ = dofs_;
+    std::stable_sort(ordered_dofs_.begin(), ordered_dofs_.end(), [&](const Dof* a, const Dof* b) {
+      return node_partition_.Owner(*a->node) < node_partition_.Owner(*b->node);
+    });
+  }
   numbered_ = false;
   pattern_valid_ = false;
   if (echo_level_ >= 2) Logger::Detail(Concat(Name(), " builder: ", dofs_.size(), " DoFs"));
@@ -116,9 +123,14 @@ void BuilderAndSolver::SetUpSystem() {
     dofs_by_equation_[static_cast<std::size_t>(d->equation_id)] = d;
     fixed_at_numbering_[static_cast<std::size_t>(d->equation_id)] = d->fixed;
   }
-  if (communicator_)
-    partition_ = RowPartition::AtNodes(dofs_by_equation_, static_cast<std::int64_t>(n_system_), communicator_->Size(),
-                                       communicator_->Rank());
+  if (communicator_) {
+    std::vector<int> owner(n);
+    for (std::size_t i = 0; i < n; ++i) owner[i] = node_partition_.Owner(*dofs_by_equation_[i]->node);
+    owned_.assign(n, 0);
+    for (std::size_t i = 0; i < n; ++i) owned_[i] = owner[i] == communicator_->Rank();
+    owner.resize(n_system_);
+    partition_ = RowPartition::FromOwners(owner, communicator_->Size(), communicator_->Rank());
+  }
   rhs_raw_.setZero(static_cast<Eigen::Index>(n));
   rhs_effective_.setZero(static_cast<Eigen::Index>(n));
   residual_.setZero(static_cast<Eigen::Index>(n));
@@ -166,9 +178,12 @@ void BuilderAndSolver::PrepareBuild() {
 void BuilderAndSolver::BuildPattern(ModelPart& model_part) {
   ScopedTimer timer(timings_.sparsity);
   const int n = static_cast<int>(n_assembled_);
+  // Rows [first, first + rows) of the system: all of them, or this rank's (class comment).
+  const auto first = static_cast<int>(FirstRow());
+  const int rows = communicator_ ? static_cast<int>(partition_.LocalRows()) : n;
   const ProcessInfo& info = model_part.GetProcessInfo();
   std::vector<std::vector<int>> columns(static_cast<std::size_t>(n));
-  for (int j = 0; j < n; ++j) columns[static_cast<std::size_t>(j)].push_back(j);  // diagonal always present
+  for (int i = 0; i < rows; ++i) columns[static_cast<std::size_t>(first + i)].push_back(i);  // diagonal always present
   std::vector<omp_lock_t> locks(static_cast<std::size_t>(n));
   for (auto& l : locks) omp_init_lock(&l);
   ForEachActiveEntity(model_part, [&](Entity& e) {
@@ -179,9 +194,10 @@ void BuilderAndSolver::BuildPattern(ModelPart& model_part) {
       auto& column = columns[static_cast<std::size_t>(J)];
       omp_set_lock(&locks[static_cast<std::size_t>(J)]);
       for (const auto I : ids) {
-        if (I < 0 || I >= n) continue;
-        auto pos = std::lower_bound(column.begin(), column.end(), static_cast<int>(I));
-        if (pos == column.end() || *pos != I) column.insert(pos, static_cast<int>(I));
+        const auto row = static_cast<int>(I) - first;
+        if (I < 0 || row < 0 || row >= rows) continue;
+        auto pos = std::lower_bound(column.begin(), column.end(), row);
+        if (pos == column.end() || *pos != row) column.insert(pos, row);
       }
       omp_unset_lock(&locks[static_cast<std::size_t>(J)]);
     }
@@ -191,7 +207,7 @@ void BuilderAndSolver::BuildPattern(ModelPart& model_part) {
   SparseMatrix& target = constraints_.empty() ? A_ : K_;
   std::size_t nnz = 0;
   for (const auto& c : columns) nnz += c.size();
-  target = SparseMatrix(n, n);
+  target = SparseMatrix(rows, n);
   target.resizeNonZeros(static_cast<Eigen::Index>(nnz));
   int* outer = target.outerIndexPtr();
   int* inner = target.innerIndexPtr();
@@ -240,18 +256,20 @@ bool BuilderAndSolver::ElementMatrixIsConstant(const Scheme& scheme, const Model
                      [](const Element* e) { return !e->IsActive() || e->HasConstantLeftHandSide(); });
 }
 
-// out += sign * K_e u, with K_e the kept element matrix (on the pattern of `target`) and u the
-// current DoF values; used only when every DoF has a matrix row (n_assembled_ == all).
+// out += sign * K_e u, with K_e the kept element matrix (on the pattern of `target`, whose row i
+// is equation FirstRow() + i) and u the current DoF values; used only when every DoF has a matrix
+// row (n_assembled_ == all).
 void BuilderAndSolver::AddElementMatrixProduct(const SparseMatrix& target, double sign, Vector& out) {
   values_.resize(static_cast<Eigen::Index>(dofs_.size()));
   for (const Dof* dof : dofs_) values_[dof->equation_id] = dof->Value();
   const int* outer = target.outerIndexPtr();
   const int* inner = target.innerIndexPtr();
   const double* k = element_matrix_.data();
+  double* rows = out.data() + FirstRow();
   for (Eigen::Index j = 0; j < target.outerSize(); ++j) {
     const double uj = sign * values_[j];
     if (uj == 0.0) continue;
-    for (int p = outer[j]; p < outer[j + 1]; ++p) out[inner[p]] += k[p] * uj;
+    for (int p = outer[j]; p < outer[j + 1]; ++p) rows[inner[p]] += k[p] * uj;
   }
 }
 
@@ -275,6 +293,10 @@ void BuilderAndSolver::Assemble(Scheme& scheme, ModelPart& model_part, Mode mode
   double* b = rhs_raw_.data();
   const std::int64_t n_matrix = static_cast<std::int64_t>(n_assembled_);
   const std::int64_t n_all = static_cast<std::int64_t>(dofs_.size());
+  // The matrix's rows [first, first + rows) and the residual rows this rank adds (all when serial).
+  const std::int64_t first = FirstRow();
+  const std::int64_t rows = communicator_ ? partition_.LocalRows() : n_matrix;
+  const char* owned = communicator_ ? owned_.data() : nullptr;
   const ProcessInfo& info = model_part.GetProcessInfo();
 
   // Elements and conditions keep separate per-thread buffers (one instantiation each): their
@@ -282,7 +304,7 @@ void BuilderAndSolver::Assemble(Scheme& scheme, ModelPart& model_part, Mode mode
   // Scatter adds are atomic only when threads share the loop: an atomic add of a double is a
   // compare-and-swap loop, several times the cost of the plain add of a serial run.
   auto assemble = [&](auto& e, Mode entity_mode, auto concurrent) {
-    if (!e.IsActive() || (communicator_ && !OwnsEntity(e, info))) return;
+    if (!e.IsActive() || (communicator_ && !TouchesOwnRows(e, info))) return;
     const bool with_lhs = entity_mode != Mode::kRhs;
     const bool with_rhs = entity_mode != Mode::kLhs;
     static thread_local Matrix local_lhs;
@@ -312,19 +334,22 @@ void BuilderAndSolver::Assemble(Scheme& scheme, ModelPart& model_part, Mode mode
       }
     };
     if (with_rhs) {
-      for (Eigen::Index i = 0; i < n; ++i) add(b[ids[static_cast<std::size_t>(i)]], local_rhs[i]);
+      for (Eigen::Index i = 0; i < n; ++i) {
+        const auto I = ids[static_cast<std::size_t>(i)];
+        if (!owned || owned[I]) add(b[I], local_rhs[i]);
+      }
     }
     if (!with_lhs) return;
     for (Eigen::Index j = 0; j < n; ++j) {
       const auto J = ids[static_cast<std::size_t>(j)];
       if (J >= n_matrix) continue;
-      const int* first = inner + outer[J];
-      const int* last = inner + outer[J + 1];
+      const int* begin = inner + outer[J];
+      const int* end = inner + outer[J + 1];
       for (Eigen::Index i = 0; i < n; ++i) {
-        const auto I = ids[static_cast<std::size_t>(i)];
-        if (I >= n_matrix) continue;
-        const int* pos = std::lower_bound(first, last, static_cast<int>(I));
-        assert(pos != last && *pos == I);
+        const auto row = ids[static_cast<std::size_t>(i)] - first;
+        if (row < 0 || row >= rows) continue;
+        const int* pos = std::lower_bound(begin, end, static_cast<int>(row));
+        assert(pos != end && *pos == row);
         add(values[pos - inner], local_lhs(i, j));
       }
     }
@@ -368,10 +393,13 @@ void BuilderAndSolver::Assemble(Scheme& scheme, ModelPart& model_part, Mode mode
   assemble_all(model_part.Conditions(), mode);
 }
 
-bool BuilderAndSolver::OwnsEntity(const Entity& entity, const ProcessInfo& info) const {
+bool BuilderAndSolver::TouchesOwnRows(const Entity& entity, const ProcessInfo& info) const {
   static thread_local EquationIdVectorType ids;
   entity.EquationIdVector(ids, info);
-  return ids.empty() ? partition_.Rank() == 0 : partition_.Owns(ids.front());
+  if (ids.empty()) return partition_.Rank() == 0;
+  return std::any_of(ids.begin(), ids.end(), [&](auto id) {
+    return id >= 0 && static_cast<std::size_t>(id) < owned_.size() && owned_[static_cast<std::size_t>(id)];
+  });
 }
 
 void BuilderAndSolver::SumResidualOverRanks() {
@@ -586,6 +614,9 @@ void BuilderAndSolver::Clear() {
   numbered_ = false;
   pattern_valid_ = false;
   solver_pattern_version_ = -1;
+  ordered_dofs_.clear();
+  owned_.clear();
+  node_partition_ = NodePartition();
   element_matrix_.clear();
   element_matrix_.shrink_to_fit();
   element_matrix_valid_ = false;

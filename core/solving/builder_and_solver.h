@@ -11,6 +11,7 @@
 #include "core/linear_solvers/row_partition.h"
 #include "core/linear_solvers/sparse_types.h"
 #include "core/model/dof.h"
+#include "core/solving/node_partition.h"
 
 namespace mc {
 
@@ -38,13 +39,16 @@ class MasterSlaveConstraint;
 /// so every constraint holds exactly after each solve.
 ///
 /// Distributed (a linear solver with a Communicator(): PETSc under `mpirun -n N`): every rank
-/// holds the whole model and the whole DoF set, numbers it the same way, and owns a block of rows
-/// (RowPartition::AtNodes). An element or condition belongs to the rank that owns the row of its
-/// first equation id (its first node), so each is computed by exactly one rank; each rank
-/// assembles its own entities into its share of the matrix, which the linear solver sums
-/// (PETSc's MPIAIJ), and the residual is summed over the ranks, so Residual(), Increment() and
-/// the reactions are whole and identical on every rank, and the criteria, the contact search
-/// and the active set run as in a serial run. With one process nothing of this runs.
+/// holds the whole model and the whole DoF set, and owns the DoFs of its nodes (a METIS partition
+/// of the mesh, NodePartition). The DoFs are numbered rank by rank, so each rank's rows are one
+/// block (Partition()). Each rank keeps and assembles only its own rows: the pattern, the matrix
+/// SystemMatrix() (Partition().LocalRows() rows, every column; row i is equation Begin() + i), the
+/// kept element matrix and the Dirichlet rows. It computes every element and condition that has
+/// an equation in its rows (those on the rank's border are computed by each rank they touch) and
+/// adds only the entries of its rows, so a row holds the serial sum in the serial order. The
+/// residual rows are summed over the ranks, so Residual(), Increment() and the reactions are whole
+/// and identical on every rank, and the criteria, the contact search and the active set run as in
+/// a serial run. With one process nothing of this runs and the matrix is square.
 class BuilderAndSolver {
  public:
   /// Cumulative wall-clock seconds, for benchmarks.
@@ -107,6 +111,7 @@ class BuilderAndSolver {
   /// Reactions from the residual of the last build (no rebuild).
   void WriteReactions();
 
+  /// The whole system, or in a distributed run this rank's rows of it (see the class comment).
   const SparseMatrix& SystemMatrix() const noexcept { return A_; }
   const Vector& SystemRhs() const noexcept { return b_system_; }
   /// f_ext - f_int of the last build with constraint forces moved to the masters, zero at
@@ -125,6 +130,10 @@ class BuilderAndSolver {
   const AssemblyCommunicator* Communicator() const noexcept { return communicator_; }
   /// The rows each rank owns (distributed runs; updated by SetUpSystem).
   const RowPartition& Partition() const noexcept { return partition_; }
+  /// The owner of each node (distributed runs; updated by SetUpDofSet).
+  const NodePartition& NodeOwners() const noexcept { return node_partition_; }
+  /// The system row of the matrix's first row: Partition().Begin() in a distributed run, else 0.
+  std::int64_t FirstRow() const noexcept { return communicator_ ? partition_.Begin() : 0; }
   /// Frees what the linear solver keeps between solves (factorizations, analyses): the next
   /// solve starts as in a new run. Restart checkpoints call it, so that a resumed run repeats the
   /// uninterrupted one bit for bit although the solver reuses factorizations across steps.
@@ -150,7 +159,10 @@ class BuilderAndSolver {
   virtual void Clear();
 
  protected:
-  /// Sets Dof::equation_id for every DoF of `dofs_` and `n_assembled_` (DoFs whose rows are
+  /// `dofs_` in the order of numbering: grouped by owning rank in a distributed run (each group
+  /// sorted as `dofs_`), `dofs_` itself in a serial one.
+  const std::vector<Dof*>& NumberingOrder() const noexcept { return communicator_ ? ordered_dofs_ : dofs_; }
+  /// Sets Dof::equation_id for every DoF of NumberingOrder() and `n_assembled_` (DoFs whose rows are
   /// assembled: ids [0, n_assembled_)) and `n_system_` (unknowns solved: ids [0, n_system_)
   /// when there are no constraints).
   virtual void NumberDofs() = 0;
@@ -180,13 +192,16 @@ class BuilderAndSolver {
   void FinishResidual();
   void ReduceSystem(Mode mode);
   void CheckEmptyColumns() const;
-  bool OwnsEntity(const Entity& entity, const ProcessInfo& info) const;
+  bool TouchesOwnRows(const Entity& entity, const ProcessInfo& info) const;
   void SumResidualOverRanks();
   [[noreturn]] void ThrowSingular(const std::vector<const Dof*>& dofs, const std::string& detail) const;
 
   std::shared_ptr<LinearSolver> linear_solver_;
   const AssemblyCommunicator* communicator_ = nullptr;  ///< owned by linear_solver_
   RowPartition partition_;
+  NodePartition node_partition_;
+  std::vector<Dof*> ordered_dofs_;  ///< distributed: dofs_ grouped by owning rank
+  std::vector<char> owned_;         ///< distributed: by equation id, whether this rank owns the row
   std::vector<std::shared_ptr<const MasterSlaveConstraint>> added_constraints_;  ///< by AddConstraint
   std::vector<std::shared_ptr<const MasterSlaveConstraint>> constraints_;        ///< added + model part's
   std::unordered_map<const Dof*, const MasterSlaveConstraint*> slave_of_;

@@ -4,14 +4,15 @@
 namespace mc {
 
 void EliminationBuilderAndSolver::NumberDofs() {
+  const std::vector<Dof*>& order = NumberingOrder();
   std::int64_t next = 0;
-  for (Dof* d : dofs_)
+  for (Dof* d : order)
     if (!d->fixed && !IsSlave(*d)) d->equation_id = next++;
   n_system_ = static_cast<std::size_t>(next);
-  for (Dof* d : dofs_)
+  for (Dof* d : order)
     if (!d->fixed && IsSlave(*d)) d->equation_id = next++;
   n_assembled_ = static_cast<std::size_t>(next);
-  for (Dof* d : dofs_)
+  for (Dof* d : order)
     if (d->fixed) d->equation_id = next++;
 }
 

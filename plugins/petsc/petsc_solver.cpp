@@ -153,7 +153,7 @@ void PetscSolver::ClearOptions() {
 }
 
 void PetscSolver::ProvideAdditionalData(const SparseMatrix& A, const std::vector<Dof*>& dof_of_equation) {
-  const auto n = static_cast<std::size_t>(A.rows());
+  const auto n = static_cast<std::size_t>(A.cols());  // distributed, A holds this rank's rows only
   if (dof_of_equation.size() < n)
     throw SolutionError(Concat("PETSc: ", dof_of_equation.size(), " DoFs for a system of ", n, " rows"));
   // Called before every solve; the DoFs change only with the pattern.
@@ -199,7 +199,8 @@ bool PetscSolver::IsDirect() const {
 void PetscSolver::Initialize(const SparseMatrix& A) {
   EnsureInitialized();
   Clear();
-  if (A.rows() != A.cols()) throw SolutionError(Concat("PETSc: matrix is ", A.rows(), "x", A.cols(), ", not square"));
+  if (!communicator_ && A.rows() != A.cols())
+    throw SolutionError(Concat("PETSc: matrix is ", A.rows(), "x", A.cols(), ", not square"));
   const SparseMatrix& M = CompressedView(A, compressed_);
   auto handles = std::make_unique<Handles>();
   handles->rows = M;
@@ -245,11 +246,11 @@ void PetscSolver::Initialize(const SparseMatrix& A) {
 }
 
 void PetscSolver::Solve(const SparseMatrix& A, Vector& x, const Vector& b) {
-  assert(b.size() == A.rows());
+  assert(b.size() == A.cols());
   const SparseMatrix& M = CompressedView(A, compressed_);
-  if (field_split_ && primal_rows_.size() + multiplier_rows_.size() != static_cast<std::size_t>(M.rows()))
+  if (field_split_ && primal_rows_.size() + multiplier_rows_.size() != static_cast<std::size_t>(M.cols()))
     throw SolutionError(Concat("PETSc: pc_type 'fieldsplit' splits the rows by their DoF, given for ",
-                               primal_rows_.size() + multiplier_rows_.size(), " of the ", M.rows(),
+                               primal_rows_.size() + multiplier_rows_.size(), " of the ", M.cols(),
                                " rows (ProvideAdditionalData)"));
   if (!handles_ || !pattern_.Matches(M)) Initialize(M);
   // Same pattern: refresh the values in place (PETSc keeps its symbolic factorization).
@@ -266,7 +267,7 @@ void PetscSolver::Solve(const SparseMatrix& A, Vector& x, const Vector& b) {
   Check(KSPSetOperators(handles_->ksp, handles_->matrix, handles_->matrix), "KSPSetOperators");
 
   x.setZero(M.cols());
-  const auto n = static_cast<PetscInt>(M.rows());
+  const auto n = static_cast<PetscInt>(M.cols());
   Vec rhs = nullptr, solution = nullptr;
   PetscErrorCode solved = 0;
   if (communicator_) {
@@ -317,20 +318,22 @@ void PetscSolver::Solve(const SparseMatrix& A, Vector& x, const Vector& b) {
 }
 
 void PetscSolver::CreateDistributedMatrix(Handles& handles) const {
-  const auto n = static_cast<PetscInt>(handles.rows.rows());
-  if (partition_.Rows() != n || partition_.Size() != communicator_->Size())
-    throw SolutionError(Concat("PETSc: a row partition of ", partition_.Rows(), " rows on ", partition_.Size(),
-                               " ranks for a system of ", n, " rows on ", communicator_->Size(),
+  const auto n = static_cast<PetscInt>(handles.rows.cols());
+  if (partition_.Rows() != n || partition_.LocalRows() != handles.rows.rows() ||
+      partition_.Size() != communicator_->Size())
+    throw SolutionError(Concat("PETSc: a row partition of ", partition_.Rows(), " rows (", partition_.LocalRows(),
+                               " here) on ", partition_.Size(), " ranks for a system of ", n, " rows (",
+                               handles.rows.rows(), " here) on ", communicator_->Size(),
                                " (SetRowPartition before Initialize)"));
   const auto begin = static_cast<PetscInt>(partition_.Begin());
   const auto end = static_cast<PetscInt>(partition_.End());
-  // Exact preallocation of the rows this rank owns: entries in its own columns, and the others.
+  // Exact preallocation of this rank's rows: entries in its own columns, and the others.
   std::vector<PetscInt> diagonal(static_cast<std::size_t>(end - begin), 0), off(diagonal.size(), 0);
   const PetscInt* outer = handles.rows.outerIndexPtr();
   const PetscInt* inner = handles.rows.innerIndexPtr();
-  for (PetscInt i = begin; i < end; ++i)
+  for (PetscInt i = 0; i < end - begin; ++i)
     for (PetscInt p = outer[i]; p < outer[i + 1]; ++p)
-      ++(inner[p] >= begin && inner[p] < end ? diagonal : off)[static_cast<std::size_t>(i - begin)];
+      ++(inner[p] >= begin && inner[p] < end ? diagonal : off)[static_cast<std::size_t>(i)];
   const MPI_Comm comm = communicator_->Comm();
   Check(MatCreateAIJ(comm, end - begin, end - begin, n, n, 0, diagonal.data(), 0, off.data(), &handles.matrix),
         "MatCreateAIJ");
@@ -342,31 +345,15 @@ void PetscSolver::CreateDistributedMatrix(Handles& handles) const {
 void PetscSolver::FillDistributedMatrix() {
   const auto& rows = handles_->rows;
   const auto begin = static_cast<PetscInt>(partition_.Begin());
-  const auto end = static_cast<PetscInt>(partition_.End());
   const PetscInt* outer = rows.outerIndexPtr();
   const PetscInt* inner = rows.innerIndexPtr();
   const double* values = rows.valuePtr();
   Mat matrix = handles_->matrix;
-  Check(MatZeroEntries(matrix), "MatZeroEntries");
-  std::vector<PetscInt> columns;
-  std::vector<PetscScalar> nonzeros;
+  // Every entry of the pattern is set: nothing is left of the previous values.
   for (PetscInt i = 0; i < static_cast<PetscInt>(rows.rows()); ++i) {
-    if (i >= begin && i < end) {
-      Check(MatSetValues(matrix, 1, &i, outer[i + 1] - outer[i], inner + outer[i], values + outer[i], ADD_VALUES),
-            "MatSetValues");
-      continue;
-    }
-    columns.clear();
-    nonzeros.clear();
-    for (PetscInt p = outer[i]; p < outer[i + 1]; ++p)
-      if (values[p] != 0.0) {
-        columns.push_back(inner[p]);
-        nonzeros.push_back(values[p]);
-      }
-    if (!columns.empty())
-      Check(MatSetValues(matrix, 1, &i, static_cast<PetscInt>(columns.size()), columns.data(), nonzeros.data(),
-                         ADD_VALUES),
-            "MatSetValues");
+    const PetscInt row = begin + i;
+    Check(MatSetValues(matrix, 1, &row, outer[i + 1] - outer[i], inner + outer[i], values + outer[i], INSERT_VALUES),
+          "MatSetValues");
   }
   Check(MatAssemblyBegin(matrix, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
   Check(MatAssemblyEnd(matrix, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");

@@ -24,13 +24,11 @@ class PetscCommunicator;
 /// symbolic factorization while only the values change.
 ///
 /// Started by `mpirun -n N` (N > 1) the system is distributed (see LinearSolver::Communicator):
-/// an MPIAIJ matrix on PETSC_COMM_WORLD whose rows are split by the builder's RowPartition,
-/// preallocated from the pattern (every rank holds the whole pattern). Each rank adds its share:
-/// its own rows in full, zeros included, so that the structure is the pattern's and MUMPS keeps
-/// its analysis; other ranks' rows by their nonzeros only, which PETSc's stash sends to their
-/// owner. The right-hand side is whole on every rank (each takes its rows, nothing is sent), and
-/// the solution is gathered to every rank (VecScatterCreateToAll). Alone, it works on
-/// PETSC_COMM_SELF as before.
+/// an MPIAIJ matrix on PETSC_COMM_WORLD whose rows are split by the builder's RowPartition. Each
+/// rank is given its own rows only, complete, and inserts them (zeros included, so that the
+/// structure is the pattern's and MUMPS keeps its analysis; nothing travels between ranks). The
+/// right-hand side is whole on every rank (each takes its rows), and the solution is gathered to
+/// every rank (VecScatterCreateToAll). Alone, it works on PETSC_COMM_SELF as before.
 ///
 /// With {"pc_type": "fieldsplit"} the rows are split by their DoF into the fields "u" (the
 /// displacements and every other primal unknown, with the block size of the nodes when their

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Issue 17 (distributed assembly): ranks simulated by threads of one process, each holding the
-// whole model and assembling only the entities it owns, give the serial Newton iterations and
-// solution with both builders: every entity is assembled exactly once (a missed or doubled spring
-// would change the answer), the residual is summed, the Dirichlet diagonal is put once. The row
+// whole model and assembling only its own rows (of the nodes METIS gave it), give the serial
+// Newton iterations and solution with both builders: every row gets each of its entities once (a
+// missed or doubled spring would change the answer), the residual is summed, the Dirichlet
+// diagonal is put once. The node partition is compact and the same on every rank; the row
 // partition keeps a node's DoFs on one rank. No MPI: a barrier sums the ranks' vectors.
 #include <gtest/gtest.h>
 
@@ -12,11 +13,13 @@
 #include "core/linear_solvers/assembly_communicator.h"
 #include "core/linear_solvers/row_partition.h"
 #include "core/linear_solvers/umfpack_solver.h"
+#include "core/model/model_part.h"
 #include "core/model/master_slave_constraint.h"
 #include "core/solving/block_builder_and_solver.h"
 #include "core/solving/displacement_criteria.h"
 #include "core/solving/elimination_builder_and_solver.h"
 #include "core/solving/newton_raphson_strategy.h"
+#include "core/solving/node_partition.h"
 #include "core/solving/residual_based_incremental_update_static_scheme.h"
 #include "core/variables/kernel_variables.h"
 #include "test_elements.h"
@@ -54,8 +57,8 @@ class ThreadCommunicator : public AssemblyCommunicator {
   int rank_;
 };
 
-/// The distributed contract of LinearSolver::Communicator with a sequential solver: sums the
-/// ranks' shares of the matrix, then every rank solves the whole system.
+/// The distributed contract of LinearSolver::Communicator with a sequential solver: gathers the
+/// ranks' rows of the matrix, then every rank solves the whole system.
 class SummingSolver : public LinearSolver {
  public:
   SummingSolver(ThreadRanks& ranks, int rank) : communicator_(ranks, rank) {}
@@ -63,14 +66,17 @@ class SummingSolver : public LinearSolver {
   bool IsDirect() const override { return true; }
   void Initialize(const SparseMatrix&) override {}
   void Solve(const SparseMatrix& A, Vector& x, const Vector& b) override {
-    SparseMatrix whole = A;
-    long share = 0;
-    for (Eigen::Index p = 0; p < A.nonZeros(); ++p) share += A.valuePtr()[p] != 0.0;
-    communicator_.SumToAll(whole.valuePtr(), static_cast<std::size_t>(whole.nonZeros()));
-    long total = 0;
-    for (Eigen::Index p = 0; p < whole.nonZeros(); ++p) total += whole.valuePtr()[p] != 0.0;
-    smallest_share = std::min(smallest_share, static_cast<double>(share) / static_cast<double>(total));
-    largest_share = std::max(largest_share, static_cast<double>(share) / static_cast<double>(total));
+    ASSERT_EQ(A.rows(), partition.LocalRows());
+    ASSERT_EQ(A.cols(), partition.Rows());
+    Matrix dense = Matrix::Zero(A.cols(), A.cols());
+    dense.middleRows(partition.Begin(), A.rows()) = Matrix(A);
+    communicator_.SumToAll(dense.data(), static_cast<std::size_t>(dense.size()));
+    const SparseMatrix whole = dense.sparseView();
+    long own = 0;  // nonzeros: the Dirichlet rows and columns keep zeros of the pattern
+    for (Eigen::Index p = 0; p < A.nonZeros(); ++p) own += A.valuePtr()[p] != 0.0;
+    const double share = static_cast<double>(own) / static_cast<double>(whole.nonZeros());
+    smallest_share = std::min(smallest_share, share);
+    largest_share = std::max(largest_share, share);
     UmfpackSolver lu;
     lu.Initialize(whole);
     lu.Solve(whole, x, b);
@@ -178,7 +184,7 @@ TEST_P(DistributedBuilders, RanksGiveTheSerialIterationsAndSolution) {
     const SummingSolver& solver = *solvers[static_cast<std::size_t>(r)];
     EXPECT_EQ(solver.partition.Rank(), r);
     EXPECT_EQ(solver.partition.Size(), size);
-    // Each rank assembled a real part of the matrix, not all of it.
+    // Each rank kept a real part of the matrix, not all of it.
     EXPECT_GT(solver.smallest_share, 0.05) << "rank " << r;
     EXPECT_LT(solver.largest_share, 0.9) << "rank " << r;
   }
@@ -199,32 +205,59 @@ TEST(DistributedBuilder, MasterSlaveConstraintsAreNotImplementedYet) {
   EXPECT_NE(message.find("one process"), std::string::npos) << message;
 }
 
-TEST(RowPartition, CutsBetweenNodesAndCoversEveryRowOnce) {
-  Truss truss;  // 14 nodes, 2 DoFs each: 28 rows
-  std::vector<Dof*> rows;
-  for (Node* node : truss.mp.Nodes()) {
-    rows.push_back(&node->GetDof(DISPLACEMENT_X));
-    rows.push_back(&node->GetDof(DISPLACEMENT_Y));
-  }
-  for (int size : {1, 2, 3, 5, 40}) {
-    std::vector<int> owned(rows.size(), 0);
-    for (int rank = 0; rank < size; ++rank) {
-      const RowPartition p = RowPartition::AtNodes(rows, static_cast<std::int64_t>(rows.size()), size, rank);
-      EXPECT_EQ(p.Begin(0), 0);
-      EXPECT_EQ(p.End(size - 1), 28);
-      EXPECT_EQ(p.Begin() % 2, 0) << "a node's DoFs split at rank " << rank << " of " << size;
-      for (std::int64_t i = p.Begin(); i < p.End(); ++i) {
-        ++owned[static_cast<std::size_t>(i)];
-        EXPECT_TRUE(p.Owns(i));
-      }
-      EXPECT_EQ(p.Owner(1000), size - 1);  // past the system: fixed DoFs of the elimination builder
+TEST(RowPartition, OneBlockPerRankInRankOrder) {
+  const std::vector<int> owner{0, 0, 0, 2, 2, 3, 3, 3};  // rank 1 owns nothing
+  for (int rank = 0; rank < 4; ++rank) {
+    const RowPartition p = RowPartition::FromOwners(owner, 4, rank);
+    EXPECT_EQ(p.Rows(), 8);
+    for (std::size_t i = 0; i < owner.size(); ++i) {
+      EXPECT_EQ(p.Owner(static_cast<std::int64_t>(i)), owner[i]) << "row " << i;
+      EXPECT_EQ(p.Owns(static_cast<std::int64_t>(i)), owner[i] == rank) << "row " << i;
     }
-    for (int count : owned) EXPECT_EQ(count, 1) << size << " ranks";
   }
-  // 28 rows on 3 ranks: the cut at row 9 (node 5's Y) moves to row 10.
-  const RowPartition three = RowPartition::AtNodes(rows, 28, 3, 0);
-  EXPECT_EQ(three.End(0), 10);
-  EXPECT_EQ(three.End(1), 18);
+  const RowPartition second = RowPartition::FromOwners(owner, 4, 1);
+  EXPECT_EQ(second.Begin(), 3);
+  EXPECT_EQ(second.LocalRows(), 0);
+  EXPECT_EQ(RowPartition::FromOwners(owner, 5, 0).Begin(4), 8);  // a fifth rank, empty, at the end
+  const std::string message =
+      test::ErrorMessageOf<Error>([] { RowPartition::FromOwners(std::vector<int>{0, 1, 0}, 2, 0); });
+  EXPECT_NE(message.find("row 2 owned by rank 0 after rows of rank 1"), std::string::npos) << message;
+}
+
+TEST(NodePartition, MetisCutsTheTrussAcrossNotAlong) {
+  constexpr int kRanks = 2;
+  ThreadRanks ranks(kRanks);
+  std::vector<std::unique_ptr<Truss>> trusses;
+  std::vector<NodePartition> partitions(kRanks);
+  for (int r = 0; r < kRanks; ++r) trusses.push_back(std::make_unique<Truss>());
+  std::vector<std::thread> threads;
+  for (int r = 0; r < kRanks; ++r)
+    threads.emplace_back([&, r] {
+      partitions[static_cast<std::size_t>(r)] =
+          NodePartition(trusses[static_cast<std::size_t>(r)]->mp, ThreadCommunicator(ranks, r));
+    });
+  for (auto& t : threads) t.join();
+
+  for (int r = 0; r < kRanks; ++r) {
+    const ModelPart& mp = trusses[static_cast<std::size_t>(r)]->mp;
+    const NodePartition& partition = partitions[static_cast<std::size_t>(r)];
+    EXPECT_TRUE(partition.IsFor(mp));
+    std::vector<int> nodes_of(kRanks, 0);
+    for (const Node* node : mp.Nodes()) {
+      const int owner = partition.Owner(*node);
+      ASSERT_GE(owner, 0);
+      ASSERT_LT(owner, kRanks);
+      ++nodes_of[static_cast<std::size_t>(owner)];
+      EXPECT_EQ(owner, partitions.front().Owner(trusses.front()->mp.GetNode(node->Id()))) << "ranks disagree";
+    }
+    EXPECT_EQ(nodes_of, (std::vector<int>{7, 7}));
+    // Across the bays the cut meets two chords and at most the diagonal and post of one bay; a
+    // block of node ids (the bottom chord against the top one) would cut 7 posts and 6 diagonals.
+    int cut = 0;
+    for (const Element* spring : mp.Elements())
+      cut += partition.Owner(spring->GetGeometry()[0]) != partition.Owner(spring->GetGeometry()[1]);
+    EXPECT_LE(cut, 4) << "rank " << r;
+  }
 }
 
 }  // namespace
