@@ -1,6 +1,7 @@
-"""Issue 17, step 1: ``mpirun -n 2 mortarcontact run`` distributes the assembly and the PETSc
-solve (the model stays replicated) and gives the serial answer: the same Newton iterations, the
-displacements and contact pressures to 1e-8 relative; rank 0 alone prints and writes; a linear
+"""Issue 17: ``mpirun -n 2`` and ``-n 3 mortarcontact run`` distribute the system (each rank
+assembles and keeps the rows of its METIS part; the model stays replicated) and the PETSc solve,
+and give the serial answer: the same Newton iterations, the displacements and contact pressures to
+1e-12 relative with MUMPS (1e-8 with the iterative field split); rank 0 alone prints and writes; a linear
 solver of one process under mpirun is one clear error. Skipped when mpirun or the PETSc plugin is
 missing (``make deps-petsc``, then ``make install``; CI installs both)."""
 from __future__ import annotations
@@ -132,30 +133,39 @@ def _results(folder) -> dict:
     return {"values": values, "iterations": iterations}
 
 
+#: Largest displacement and pressure difference to the serial run, relative to the largest value:
+#: 1e-12, as MUMPS orders and pivots the distributed system otherwise (at most 3.4e-13 measured on
+#: 2 and 3 ranks). The field split is iterative and its BoomerAMG differs with the partition: its
+#: pressures (4.8e-10 measured) are as close as its Krylov solves stop to each other.
+TOLERANCE = {"hertz2d-fieldsplit": 1e-8}
+
+
 @pytest.mark.parametrize("run", sorted(RUNS))
-def test_two_ranks_give_the_serial_answer(tmp_path, run):
+def test_two_and_three_ranks_give_the_serial_answer(tmp_path, run):
     case, components, linear_solver = RUNS[run]
     answers, outputs = {}, {}
-    for ranks in (1, 2):
+    for ranks in (1, 2, 3):
         folder = tmp_path / f"ranks{ranks}"
         folder.mkdir()
         _write_case(folder, case, components, linear_solver, CONTACT_SETTINGS.get(run, {}))
         done = _run(folder, ranks)
         assert done.returncode == 0, done.stdout + done.stderr
         answers[ranks], outputs[ranks] = _results(folder), done.stdout
-    serial, distributed = answers[1], answers[2]
-    assert distributed["iterations"] == serial["iterations"]
+    serial = answers[1]
     assert len(serial["iterations"]) >= 2
-    assert distributed["values"].keys() == serial["values"].keys()
-    for file in ("displacements.json", "pressures.json"):
-        keys = [k for k in serial["values"] if k[0] == file]
-        scale = max(np.abs(serial["values"][k]).max() for k in keys)
-        assert scale > 0.0, f"{file}: nothing to compare"
-        worst = max(np.abs(distributed["values"][k] - serial["values"][k]).max() for k in keys)
-        assert worst <= 1e-8 * scale, f"{file}: {worst:.3g} against {scale:.3g}"
-    # Rank 0 speaks for both: one summary line, as in the serial run.
-    summaries = [line for line in outputs[2].splitlines() if "Newton iterations" in line or " steps" in line]
-    assert len(summaries) == 1, outputs[2]
+    for ranks in (2, 3):
+        distributed = answers[ranks]
+        assert distributed["iterations"] == serial["iterations"], f"{ranks} ranks"
+        assert distributed["values"].keys() == serial["values"].keys()
+        for file in ("displacements.json", "pressures.json"):
+            keys = [k for k in serial["values"] if k[0] == file]
+            scale = max(np.abs(serial["values"][k]).max() for k in keys)
+            assert scale > 0.0, f"{file}: nothing to compare"
+            worst = max(np.abs(distributed["values"][k] - serial["values"][k]).max() for k in keys)
+            assert worst <= TOLERANCE.get(run, 1e-12) * scale, f"{ranks} ranks, {file}: {worst:.3g} against {scale:.3g}"
+        # Rank 0 speaks for all: one summary line, as in the serial run.
+        summaries = [line for line in outputs[ranks].splitlines() if "Newton iterations" in line or " steps" in line]
+        assert len(summaries) == 1, outputs[ranks]
 
 
 ERRORS = {
