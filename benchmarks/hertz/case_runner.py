@@ -218,7 +218,9 @@ def run_mortarcontact(parameters_path: str, dim: int, record: dict, linear_solve
     analysis.Initialize()
     record["setup_seconds"] = time.perf_counter() - started
     analysis.RunSolutionLoop()
-    record["dofs"] = analysis.solver.strategy.GetBuilderAndSolver().NumberOfDofs()  # Finalize frees them
+    builder = analysis.solver.strategy.GetBuilderAndSolver()
+    record["dofs"] = builder.NumberOfDofs()  # Finalize frees them
+    record["matrix_entries"] = builder.SystemMatrixNonZeros()  # under mpirun: this rank's rows
     analysis.Finalize()
     record["analysis_seconds"] = time.perf_counter() - started
     record["analysis_cpu_seconds"] = time.process_time() - cpu_started

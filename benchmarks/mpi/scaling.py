@@ -1,7 +1,7 @@
-"""Strong scaling of the distributed assembly and PETSc solve (issue 17, step 1): one Hertz case
-run on 1 and on 2 processes (``mpirun -n 2``), one OpenMP thread per process, with the same PETSc
-solver; prints a Markdown table of the wall time per phase (the slowest rank's) and the peak
-memory of each rank, and checks that both runs took the same Newton iterations.
+"""Strong scaling of the distributed system and PETSc solve (issue 17): one Hertz case run on 1
+and on 2 processes (``mpirun -n 2``), one OpenMP thread per process, with the same PETSc solver;
+prints a Markdown table of the wall time per phase, the CPU time, the peak memory and the matrix
+entries each rank keeps, and checks that both runs took the same Newton iterations.
 
     python benchmarks/mpi/scaling.py --case hertz2d_100k --solver mumps
     python benchmarks/mpi/scaling.py --case hertz3d_50k --solver fieldsplit
@@ -54,14 +54,14 @@ def row(ranks: int, records: list[dict]) -> str:
     def per_rank(*names, digits=2):
         return " / ".join(f"{sum(r['phases'][n] for n in names):.{digits}f}" for r in records)
 
-    def per_rank_value(key, digits=1):
-        return " / ".join(f"{r[key]:.{digits}f}" for r in records)
+    def per_rank_value(key, digits=1, unit=1.0):
+        return " / ".join(f"{r[key] / unit:.{digits}f}" for r in records)
 
     iterations = sum(s["iterations"] for s in records[0]["steps"])
     return (f"| {ranks} | {iterations} | {per_rank('elements', 'conditions', 'build_other')} | {per_rank('solve')} | "
             f"{per_rank('dof_setup')} | {per_rank('search', 'weighted_gap', 'normals')} | "
             f"{per_rank_value('analysis_seconds')} | {per_rank_value('analysis_cpu_seconds')} | "
-            f"{per_rank_value('peak_rss_mb', 0)} |")
+            f"{per_rank_value('peak_rss_mb', 0)} | {per_rank_value('matrix_entries', 2, 1e6)} |")
 
 
 def main() -> int:
@@ -84,8 +84,8 @@ def main() -> int:
           f"(rank 0 / rank 1); load average before and after: {load_before} / {os.getloadavg()[0]:.1f}")
     print()
     print("| processes | Newton iterations | assembly | linear solve | DoF set-up + pattern | contact search + "
-          "mortar | analysis | analysis CPU s | peak memory (MB) |")
-    print("|---|---|---|---|---|---|---|---|---|")
+          "mortar | analysis | analysis CPU s | peak memory (MB) | matrix entries kept (M) |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
     for ranks, records in results.items():
         print(row(ranks, records))
     return 0
