@@ -19,8 +19,8 @@ RowPartition RowPartition::FromOwners(const std::vector<int>& owner_of_row, int 
   for (std::int64_t i = 0; i < rows; ++i) {
     const int owner = owner_of_row[static_cast<std::size_t>(i)];
     if (owner < current || owner >= size)
-      throw Error(Concat("row partition: row ", i, " owned by rank ", owner, " after rows of rank ", current,
-                         " (", size, " ranks): the rows must be numbered rank by rank"));
+      throw Error(Concat("row partition: row ", i, " owned by rank ", owner, " after rows of rank ", current, " (",
+                         size, " ranks): the rows must be numbered rank by rank"));
     for (; current < owner; ++current) partition.starts_[static_cast<std::size_t>(current) + 1] = i;
   }
   return partition;

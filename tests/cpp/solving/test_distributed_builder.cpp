@@ -13,8 +13,8 @@
 #include "core/linear_solvers/assembly_communicator.h"
 #include "core/linear_solvers/row_partition.h"
 #include "core/linear_solvers/umfpack_solver.h"
-#include "core/model/model_part.h"
 #include "core/model/master_slave_constraint.h"
+#include "core/model/model_part.h"
 #include "core/solving/block_builder_and_solver.h"
 #include "core/solving/displacement_criteria.h"
 #include "core/solving/elimination_builder_and_solver.h"
@@ -219,8 +219,9 @@ TEST(RowPartition, OneBlockPerRankInRankOrder) {
   EXPECT_EQ(second.Begin(), 3);
   EXPECT_EQ(second.LocalRows(), 0);
   EXPECT_EQ(RowPartition::FromOwners(owner, 5, 0).Begin(4), 8);  // a fifth rank, empty, at the end
-  const std::string message =
-      test::ErrorMessageOf<Error>([] { RowPartition::FromOwners(std::vector<int>{0, 1, 0}, 2, 0); });
+  const std::string message = test::ErrorMessageOf<Error>([] {
+    RowPartition::FromOwners(std::vector<int>{0, 1, 0}, 2, 0);
+  });
   EXPECT_NE(message.find("row 2 owned by rank 0 after rows of rank 1"), std::string::npos) << message;
 }
 
