@@ -78,10 +78,17 @@ void BuilderAndSolver::SetUpDofSet(ModelPart& model_part, const Scheme& scheme) 
   dofs_.erase(std::unique(dofs_.begin(), dofs_.end()), dofs_.end());
   if (communicator_) {
     if (!node_partition_.IsFor(model_part)) node_partition_ = NodePartition(model_part, *communicator_);
-    ordered_dofs_ = dofs_;
-    std::stable_sort(ordered_dofs_.begin(), ordered_dofs_.end(), [&](const Dof* a, const Dof* b) {
-      return node_partition_.Owner(*a->node) < node_partition_.Owner(*b->node);
-    });
+    // Grouped by owner, each group in the order of dofs_ (a counting sort: one look-up a DoF).
+    std::vector<int> owner(dofs_.size());
+    std::vector<std::size_t> start(static_cast<std::size_t>(communicator_->Size()) + 1, 0);
+    for (std::size_t i = 0; i < dofs_.size(); ++i) {
+      owner[i] = node_partition_.Owner(*dofs_[i]->node);
+      ++start[static_cast<std::size_t>(owner[i]) + 1];
+    }
+    for (std::size_t r = 1; r < start.size(); ++r) start[r] += start[r - 1];
+    ordered_dofs_.resize(dofs_.size());
+    for (std::size_t i = 0; i < dofs_.size(); ++i)
+      ordered_dofs_[start[static_cast<std::size_t>(owner[i])]++] = dofs_[i];
   }
   numbered_ = false;
   pattern_valid_ = false;
