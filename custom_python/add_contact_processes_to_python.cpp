@@ -4,11 +4,11 @@
 #include "core/parameters/parameters.h"
 #include "custom_processes/alm_variables_calculation_process.h"
 #include "custom_processes/contact_interface_builder.h"
-#include "custom_utilities/contact_output_utilities.h"
 #include "custom_processes/contact_search_process.h"
 #include "custom_processes/mesh_tying_utilities.h"
 #include "custom_processes/simple_mortar_mapper_process.h"
 #include "custom_python/python_module.h"
+#include "custom_utilities/contact_output_utilities.h"
 
 namespace mc::python {
 
