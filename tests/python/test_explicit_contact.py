@@ -91,8 +91,8 @@ def test_bar_contact_force_is_the_force_that_acted(tmp_path):
     """CONTACT_FORCE of an explicit step is the force of the state its residual was built at (u_n):
     each step, the slave (left) bar's momentum changes by exactly that force times the step's
     velocity step (dt_{n-1/2} + dt_{n+1/2}) / 2, and its time average over the impact is rho c A v.
-    Measured: 3.5e-14 of the largest change per step, 0.26 % on the average. Evaluated after the update, at u_{n+1} (as
-    before), it was the force of the next step, and the first check failed."""
+    Measured: 3.5e-14 of the largest change per step, 0.26 % on the average. Evaluated after the
+    update, at u_{n+1} (as before), it was the force of the next step, and the first check failed."""
     _, rows = _run_bar(tmp_path, time_step=bar_impact.critical_time_step() / 2)
     dt = rows[:, 8]
     velocity_step = 0.5 * (np.concatenate([[0.0], dt[:-1]]) + dt)
