@@ -4,11 +4,11 @@
 #include "core/parameters/parameters.h"
 #include "custom_processes/alm_variables_calculation_process.h"
 #include "custom_processes/contact_interface_builder.h"
-#include "custom_processes/contact_output_utilities.h"
 #include "custom_processes/contact_search_process.h"
 #include "custom_processes/mesh_tying_utilities.h"
 #include "custom_processes/simple_mortar_mapper_process.h"
 #include "custom_python/python_module.h"
+#include "custom_utilities/contact_output_utilities.h"
 
 namespace mc::python {
 
@@ -133,6 +133,8 @@ void AddContactProcessesToPython(py::module_& m) {
   m.def("ComputeContactOutputs", &ComputeContactOutputs, py::arg("part"), py::arg("clear_inactive"),
         "The contact tractions, forces and gaps of the slave nodes at the end of a converged step; with "
         "clear_inactive, zero augmented tractions at the inactive ones. Returns the slave nodes visited.");
+  m.def("ClearInactiveContactPressures", &ClearInactiveContactPressures, py::arg("part"),
+        "Zero augmented tractions at the inactive slave nodes (clear_inactive_for_post alone).");
 }
 
 }  // namespace mc::python

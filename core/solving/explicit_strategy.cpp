@@ -67,6 +67,7 @@ bool ExplicitStrategy::SolveSolutionStep() {
   scheme_->InitializeNonLinIteration(model_part_);
   UpdateBeforeResidual();
   builder_.BuildRHS(*scheme_, model_part_);
+  UpdateAfterResidual();
   scheme_->Advance(model_part_, builder_.GetDofSet(), builder_.Residual(), mass_);
   if (move_mesh_) MoveMesh();
   scheme_->FinalizeNonLinIteration(model_part_);

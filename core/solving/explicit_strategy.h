@@ -49,6 +49,8 @@ class ExplicitStrategy : public SolvingStrategy {
   /// Called at the start of every step's residual, at u_n (after the boundary conditions of the
   /// step are imposed): the explicit contact strategy updates the contact state here.
   virtual void UpdateBeforeResidual() {}
+  /// Called right after the residual is assembled, before the update: the state is still u_n.
+  virtual void UpdateAfterResidual() {}
 
  private:
   std::shared_ptr<ExplicitCentralDifferencesScheme> scheme_;

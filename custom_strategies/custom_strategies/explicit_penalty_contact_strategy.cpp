@@ -10,6 +10,7 @@
 #include "core/variables/kernel_variables.h"
 #include "custom_strategies/custom_convergencecriterias/contact_criteria_utilities.h"
 #include "custom_utilities/active_set_utilities.h"
+#include "custom_utilities/contact_output_utilities.h"
 #include "custom_utilities/contact_variables.h"
 
 namespace mc {
@@ -52,6 +53,11 @@ void ExplicitPenaltyContactStrategy::UpdateBeforeResidual() {
   model_part_.GetRootModelPart().Set(CONTACT,
                                      std::any_of(contact->Nodes().begin(), contact->Nodes().end(),
                                                  [](const Node* node) { return node->Is(SLAVE) && node->Is(ACTIVE); }));
+}
+
+void ExplicitPenaltyContactStrategy::UpdateAfterResidual() {
+  // clear_inactive_for_post is the process's: it clears at the end of the step.
+  if (ModelPart* contact = FindContactModelPart(model_part_)) ComputeContactOutputs(*contact, false);
 }
 
 void ExplicitPenaltyContactStrategy::UpdateFrictionalState(ModelPart& contact) const {

@@ -16,7 +16,10 @@ namespace mc {
 /// penetrates, g_j < 0). The residual then holds the penalty forces eps_j g_j (D w1 - M w2)_j . n_j
 /// of the active nodes next to the elements' forces, and the lumped mass advances both. The
 /// model part's CONTACT flag says whether any node is active (what delta_time_factor_for_contact
-/// reads). No DYNAMIC_FACTOR is applied (1): each step has its own force.
+/// reads). No DYNAMIC_FACTOR is applied (1): each step has its own force. Right after the residual,
+/// still at u_n, the contact outputs (CONTACT_FORCE, NORMAL_CONTACT_STRESS...; ComputeContactOutputs)
+/// are those of the force that drives the step: at the end of the step, at u_{n+1}, they would
+/// describe a force no step applied (on the bar impact, 11 % below rho c A v).
 ///
 /// Friction (the model part is SLIP): the stick traction c_tau eps_j s_j needs the slip since the
 /// node started to stick; one step's increment (what the implicit penalty takes, and what Kratos'
@@ -51,6 +54,7 @@ class ExplicitPenaltyContactStrategy : public ExplicitStrategy {
 
  protected:
   void UpdateBeforeResidual() override;
+  void UpdateAfterResidual() override;
 
  private:
   /// The frictional active set on the accumulated weighted slip, and its return mapping.

@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "custom_strategies/custom_strategies/mpc_contact_constraints.h"
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <unordered_set>
 
 #include "core/utilities/error.h"
+#include "core/utilities/logger.h"
 #include "core/variables/kernel_variables.h"
 #include "custom_conditions/mpc_mortar_contact_condition.h"
 #include "custom_utilities/contact_variables.h"
@@ -116,10 +119,113 @@ void MPCContactConstraints::Apply(BuilderAndSolver& builder) {
     if (node->Is(ACTIVE)) active.push_back(relation.get());
   // Unchanged relations keep the builder's numbering and pattern.
   if (active == applied_) return;
+  const auto tied = TiedRelations();
   builder.ClearConstraints();
-  for (const auto& [node, relation] : relations_)
-    if (node->Is(ACTIVE)) builder.AddConstraint(relation);
+  for (const auto& relation : tied) builder.AddConstraint(relation);
   applied_ = std::move(active);
+}
+
+std::vector<std::shared_ptr<const MasterSlaveConstraint>> MPCContactConstraints::TiedRelations() const {
+  std::vector<std::pair<Node*, std::shared_ptr<MasterSlaveConstraint>>> active;
+  for (const auto& [node, relation] : relations_)
+    if (node->Is(ACTIVE)) active.emplace_back(node, relation);
+  std::sort(active.begin(), active.end(), [](const auto& a, const auto& b) { return a.first->Id() < b.first->Id(); });
+  const auto where = [&](std::size_t i) {
+    return Concat("MPC contact: slave node ", active[i].first->Id(), ", ", active[i].second->Slave().variable->Name());
+  };
+  const ModelPart& root = contact_.GetRootModelPart();
+  std::unordered_map<const Dof*, IndexType> model_slaves, model_masters;
+  for (const auto& constraint : root.MasterSlaveConstraints()) {
+    model_slaves.emplace(&constraint->Slave(), constraint->Id());
+    for (const Dof* master : constraint->Masters()) model_masters.emplace(master, constraint->Id());
+  }
+  std::unordered_map<const Dof*, std::size_t> slave_index;
+  for (std::size_t i = 0; i < active.size(); ++i) {
+    const Dof* slave = &active[i].second->Slave();
+    if (const auto it = model_slaves.find(slave); it != model_slaves.end())
+      throw InputError(Concat(where(i), ": the contact ties it, and so does master-slave constraint ", it->second,
+                              " of ", root.Name(), "; a DoF can be tied once (take the node out of that constraint or ",
+                              "out of the contact interface)"));
+    if (const auto it = model_masters.find(slave); it != model_masters.end())
+      throw InputError(Concat(where(i), ": the contact ties it, and it is a master of master-slave constraint ",
+                              it->second, " of ", root.Name(), " (chained constraints are not supported)"));
+    slave_index.emplace(slave, i);
+  }
+  // i -> j: relation i has a master that is relation j's slave.
+  std::vector<std::vector<std::size_t>> depends(active.size());
+  for (std::size_t i = 0; i < active.size(); ++i)
+    for (const Dof* master : active[i].second->Masters())
+      if (const auto it = slave_index.find(master); it != slave_index.end()) depends[i].push_back(it->second);
+  // Break the cycles: in each, the relation of the largest node id goes (on two faces slave of each
+  // other, the face with the smaller ids keeps its ties).
+  std::vector<char> dropped(active.size(), 0);
+  for (;;) {
+    std::vector<char> colour(active.size(), 0);
+    std::vector<std::size_t> path, cycle;
+    const std::function<bool(std::size_t)> visit = [&](std::size_t i) {
+      colour[i] = 1;
+      path.push_back(i);
+      for (const std::size_t j : depends[i]) {
+        if (dropped[j]) continue;
+        if (colour[j] == 1) {
+          cycle.assign(std::find(path.begin(), path.end(), j), path.end());
+          return true;
+        }
+        if (colour[j] == 0 && visit(j)) return true;
+      }
+      colour[i] = 2;
+      path.pop_back();
+      return false;
+    };
+    bool found = false;
+    for (std::size_t i = 0; i < active.size() && !found; ++i)
+      if (!dropped[i] && colour[i] == 0) found = visit(i);
+    if (!found) break;
+    const std::size_t last = *std::max_element(cycle.begin(), cycle.end());
+    dropped[last] = 1;
+    std::string others;
+    for (const std::size_t i : cycle)
+      if (i != last) others += Concat(others.empty() ? "" : ", ", active[i].first->Id());
+    Logger::Warning(Concat(where(last), ": its relation and those of node(s) ", others,
+                           " tie each other (both faces of the interface are slave there): it is dropped, the others "
+                           "close the gap"));
+  }
+  // Substitution along the (now acyclic) chains.
+  std::vector<std::shared_ptr<const MasterSlaveConstraint>> tied(active.size());
+  const std::function<void(std::size_t)> substitute = [&](std::size_t i) {
+    const MasterSlaveConstraint& relation = *active[i].second;
+    std::vector<Dof*> masters;
+    std::vector<double> weights;
+    double constant = relation.Constant();
+    bool substituted = false;
+    for (std::size_t k = 0; k < relation.Masters().size(); ++k) {
+      Dof* master = relation.Masters()[k];
+      const double weight = relation.Weights()[k];
+      const auto found = slave_index.find(master);
+      if (found == slave_index.end() || dropped[found->second]) {
+        masters.push_back(master);
+        weights.push_back(weight);
+        continue;
+      }
+      if (!tied[found->second]) substitute(found->second);
+      const MasterSlaveConstraint& other = *tied[found->second];
+      for (std::size_t l = 0; l < other.Masters().size(); ++l) {
+        masters.push_back(other.Masters()[l]);
+        weights.push_back(weight * other.Weights()[l]);
+      }
+      constant += weight * other.Constant();
+      substituted = true;
+    }
+    tied[i] = substituted ? std::make_shared<const MasterSlaveConstraint>(
+                                relation.Id(), relation.Slave(), std::move(masters), std::move(weights), constant)
+                          : active[i].second;
+  };
+  for (std::size_t i = 0; i < active.size(); ++i)
+    if (!dropped[i] && !tied[i]) substitute(i);
+  std::vector<std::shared_ptr<const MasterSlaveConstraint>> result;
+  for (std::size_t i = 0; i < active.size(); ++i)
+    if (!dropped[i]) result.push_back(tied[i]);
+  return result;
 }
 
 }  // namespace mc

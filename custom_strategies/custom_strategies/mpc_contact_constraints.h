@@ -37,8 +37,24 @@ class MPCContactConstraints {
   /// The relation of every slave node an overlap reaches, from the last Measure, at the current
   /// displacements.
   void Relate();
-  /// Hands the relations of the ACTIVE slave nodes to `builder` (replacing the earlier ones).
+  /// Hands the relations of the ACTIVE slave nodes to `builder` (replacing the earlier ones), with the
+  /// dependent ties resolved (see TiedRelations).
   void Apply(BuilderAndSolver& builder);
+  /// The relations of the ACTIVE slave nodes as the builder can take them (one slave per DoF, no
+  /// chains), in node id order:
+  ///  - a relation's master DoF that is the slave of another active relation (a node on two
+  ///    interfaces, slave of one and master of the other) is replaced by that relation's right-hand
+  ///    side (u_a = w u_b + ..., u_b = T_b u + c_b -> u_a = w T_b u + w c_b + ...): the same ties;
+  ///  - relations that tie each other in a cycle (both faces of an interface slave in two slots: the
+  ///    node a tied to b and b tied to a state the same closed gap twice, and the two rows make the
+  ///    system singular) lose the relation that closes the cycle, the later one in node order; its
+  ///    slave DoF stays a master of the others, and a warning names the node. The remaining relation
+  ///    still closes the gap (exactly on matching meshes, to the discretisation otherwise).
+  /// A fixed component is never a relation's slave (Relate chooses a free one, and drops the node when
+  /// only components along the tangent are free: the support holds the normal then). A slave DoF that is
+  /// also the slave or a master of one of the model part's own constraints is an InputError naming the
+  /// node, the component and the constraint.
+  std::vector<std::shared_ptr<const MasterSlaveConstraint>> TiedRelations() const;
 
   /// Nodal gap g_j = WEIGHTED_GAP / NODAL_MAUX of the last Measure (0 for a node no pair reaches).
   double NodalGap(const Node& node) const;

@@ -32,3 +32,8 @@ class ExplicitPenaltyContactProcess(PenaltyContactProcess):
         defaults["advance_ALM_parameters"]["max_gap_factor"] = 1.0e-3
         return _settings.to_parameters(defaults)
 
+    def ExecuteFinalizeSolutionStep(self) -> None:
+        # The explicit strategy computed the contact outputs right after the step's residual, at
+        # u_n (the force that acted in the step); recomputing them here would take u_{n+1}.
+        if self.root is not None and self.settings["clear_inactive_for_post"].GetBool():
+            _core.ClearInactiveContactPressures(self.root.GetSubModelPart("Contact"))

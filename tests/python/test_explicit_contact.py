@@ -22,7 +22,8 @@ V = mc.GetVariable
 
 class BarImpact(StructuralMechanicsAnalysis):
     """The bars' initial velocities, and after every step: time, the root's CONTACT flag,
-    bar_impact.bar_state (mean velocity, kinetic energy, mass of each bar) and DELTA_TIME."""
+    bar_impact.bar_state (mean velocity, kinetic energy, mass of each bar), DELTA_TIME and the
+    x component of the CONTACT_FORCE summed over the slave nodes."""
 
     def __init__(self, model, parameters):
         super().__init__(model, parameters)
@@ -36,7 +37,9 @@ class BarImpact(StructuralMechanicsAnalysis):
         super().FinalizeSolutionStep()
         root = self.model["Structure"]
         self.rows.append([root.ProcessInfo.GetValue(V("TIME")), float(root.Is(mc.CONTACT)),
-                          *bar_impact.bar_state(root), root.ProcessInfo.GetValue(V("DELTA_TIME"))])
+                          *bar_impact.bar_state(root), root.ProcessInfo.GetValue(V("DELTA_TIME")),
+                          sum(node.GetValue(V("CONTACT_FORCE"))[0] for node in root.GetSubModelPart("Contact").Nodes
+                              if node.Is(mc.SLAVE))])
 
 
 def _run_bar(folder, solver=None, **kwargs):
@@ -82,6 +85,25 @@ def test_bar_impact_matches_wave_theory(tmp_path):
     # After the impact the bars ring (part of the energy is strain energy): at most lost, never gained.
     kinetic = (rows[-1, 3] + rows[-1, 6]) / (rows[0, 3] + rows[0, 6])
     assert kinetic == pytest.approx(1.0, abs=0.03)
+
+
+def test_bar_contact_force_is_the_force_that_acted(tmp_path):
+    """CONTACT_FORCE of an explicit step is the force of the state its residual was built at (u_n):
+    each step, the slave (left) bar's momentum changes by exactly that force times the step's
+    velocity step (dt_{n-1/2} + dt_{n+1/2}) / 2, and its time average over the impact is rho c A v.
+    Measured: 3.5e-14 of the largest change per step, 0.26 % on the average. Evaluated after the
+    update, at u_{n+1} (as before), it was the force of the next step, and the first check failed."""
+    _, rows = _run_bar(tmp_path, time_step=bar_impact.critical_time_step() / 2)
+    dt = rows[:, 8]
+    velocity_step = 0.5 * (np.concatenate([[0.0], dt[:-1]]) + dt)
+    momentum_change = rows[:, 4] * np.diff(np.concatenate([[bar_impact.SPEED], rows[:, 2]]))
+    force = rows[:, 9]
+    assert np.count_nonzero(force) > 100
+    assert np.allclose(force * velocity_step, momentum_change, rtol=1e-9, atol=1e-12 * np.abs(momentum_change).max())
+    c = bar_impact.wave_speed()
+    duration = 2.0 * bar_impact.LENGTH / c
+    average = -np.sum(force * velocity_step) / duration
+    assert average == pytest.approx(bar_impact.DENSITY * c * bar_impact.SIDE ** 2 * bar_impact.SPEED, rel=5e-3)
 
 
 def test_critical_time_step_of_the_bar(tmp_path, capfd):

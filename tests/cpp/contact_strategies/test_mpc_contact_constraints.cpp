@@ -4,9 +4,14 @@
 // the lumped D (NODAL_MAUX) is the exact integral of the slave shape functions over the overlap, the
 // nodal gap is the distance, and the relation of each slave node, evaluated for any master translation
 // and any tangential slave motion, puts the slave node on the master face (the gap measured again is 0).
+// Dependent ties: a node on two interfaces (slave of one, master of the other), both faces of an
+// interface slave, and a DoF the model part's own constraint already ties.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <unordered_set>
+
+#include "core/utilities/error.h"
 
 #include "custom_conditions/mpc_mortar_contact_condition.h"
 #include "custom_strategies/custom_strategies/mpc_contact_constraints.h"
@@ -88,6 +93,107 @@ TEST(MPCContactConstraints, RelationPutsTheSlaveNodeOnTheMasterFace) {
   constraints.Measure();
   EXPECT_NEAR(constraints.NodalGap(pair.root.GetNode(1)), 0.0, 1e-12);
   EXPECT_NEAR(constraints.NodalGap(pair.root.GetNode(2)), 0.0, 1e-12);
+}
+
+/// Three parallel faces y = 0 (nodes 1, 2), 0.1 (11, 12) and 0.2 (21, 22) with the pairs (slave, master)
+/// listed by node ids; every slave node ACTIVE after Measure and Relate.
+struct Stack {
+  Model model;
+  ModelPart& root = MakeContactModelPart(model);
+  ModelPart& contact = root.CreateSubModelPart("Contact");
+  ModelPart& computing = root.CreateSubModelPart("ComputingContact");
+  MPCContactConstraints constraints{contact, computing};
+
+  explicit Stack(const std::vector<std::pair<std::array<IndexType, 2>, std::array<IndexType, 2>>>& pairs) {
+    root.GetProcessInfo().SetValue(DOMAIN_SIZE, 2);
+    MakeNode(root, 1, Array3(0.0, 0.0, 0.0));
+    MakeNode(root, 2, Array3(1.0, 0.0, 0.0));
+    MakeNode(root, 11, Array3(1.2, 0.1, 0.0));
+    MakeNode(root, 12, Array3(0.3, 0.1, 0.0));
+    MakeNode(root, 21, Array3(1.3, 0.2, 0.0));
+    MakeNode(root, 22, Array3(0.2, 0.2, 0.0));
+    IndexType id = 0;
+    for (const auto& [slave, master] : pairs) {
+      Node& s1 = root.GetNode(slave[0]);
+      Node& s2 = root.GetNode(slave[1]);
+      for (Node* node : {&s1, &s2}) node->Set(SLAVE);
+      auto pair = std::make_unique<MPCMortarContactCondition<2, 2, 2>>(
+          ++id, Geometry(GeometryType::Line2D2, {&s1, &s2}), nullptr,
+          Geometry(GeometryType::Line2D2, {&root.GetNode(master[0]), &root.GetNode(master[1])}));
+      contact.AddCondition(&computing.AddCondition(std::move(pair)));
+    }
+    contact.AddNodes({1, 2, 11, 12, 21, 22});
+    constraints.Measure();
+    constraints.Relate();
+    for (const auto& [node, relation] : constraints.Relations()) node->Set(ACTIVE);
+  }
+};
+
+/// The slave values the relations give for the current master values.
+void Impose(const std::vector<std::shared_ptr<const MasterSlaveConstraint>>& relations) {
+  for (const auto& relation : relations) {
+    double value = relation->Constant();
+    for (std::size_t i = 0; i < relation->Masters().size(); ++i)
+      value += relation->Weights()[i] * relation->Masters()[i]->Value();
+    relation->Slave().Value() = value;
+  }
+}
+
+std::unordered_set<const Dof*> Slaves(const std::vector<std::shared_ptr<const MasterSlaveConstraint>>& relations) {
+  std::unordered_set<const Dof*> slaves;
+  for (const auto& relation : relations) slaves.insert(&relation->Slave());
+  return slaves;
+}
+
+TEST(MPCContactConstraints, NodeOnTwoInterfacesIsSubstitutedNotChained) {
+  // 1-2 slave on 11-12, and 11-12 slave on 21-22: the relations of 1 and 2 have masters 11 and 12, themselves
+  // slaves (the builder rejects chains).
+  Stack stack({{{2, 1}, {11, 12}}, {{11, 12}, {21, 22}}});
+  const auto tied = stack.constraints.TiedRelations();
+  ASSERT_EQ(tied.size(), 4u);
+  const auto slaves = Slaves(tied);
+  for (const auto& relation : tied)
+    for (const Dof* master : relation->Masters()) EXPECT_FALSE(slaves.count(master)) << relation->Id();
+  // The substituted relations state the original ties: any master motion, imposed through them, satisfies
+  // every original relation.
+  SetDofValue(stack.root.GetNode(21).GetDof(DISPLACEMENT_Y), -0.03);
+  SetDofValue(stack.root.GetNode(22).GetDof(DISPLACEMENT_Y), -0.05);
+  Impose(tied);
+  for (const auto& [node, relation] : stack.constraints.Relations()) {
+    double value = relation->Constant();
+    for (std::size_t i = 0; i < relation->Masters().size(); ++i)
+      value += relation->Weights()[i] * relation->Masters()[i]->Value();
+    EXPECT_NEAR(relation->Slave().Value(), value, 1e-14) << node->Id();
+  }
+}
+
+TEST(MPCContactConstraints, FacesSlaveOfEachOtherKeepOneTie) {
+  // 1-2 slave on 11-12 and 11-12 slave on 1-2: node 1 is tied to 11 and 12, which are tied back to 1: the
+  // later relations (11, 12) are dropped, the ones of 1 and 2 close the gap.
+  Stack stack({{{2, 1}, {11, 12}}, {{12, 11}, {1, 2}}});
+  ASSERT_EQ(stack.constraints.Relations().size(), 4u);
+  const auto tied = stack.constraints.TiedRelations();
+  ASSERT_EQ(tied.size(), 2u);
+  const auto slaves = Slaves(tied);
+  EXPECT_TRUE(slaves.count(&stack.root.GetNode(1).GetDof(DISPLACEMENT_Y)));
+  EXPECT_TRUE(slaves.count(&stack.root.GetNode(2).GetDof(DISPLACEMENT_Y)));
+  for (const auto& relation : tied)
+    for (const Dof* master : relation->Masters()) EXPECT_FALSE(slaves.count(master));
+}
+
+TEST(MPCContactConstraints, DofTiedByTheModelPartIsNamed) {
+  Stack stack({{{2, 1}, {11, 12}}});
+  Node& node = stack.root.GetNode(2);
+  stack.root.AddMasterSlaveConstraint(std::make_shared<MasterSlaveConstraint>(
+      99, node.GetDof(DISPLACEMENT_Y), std::vector<Dof*>{&node.GetDof(DISPLACEMENT_X)}, std::vector<double>{1.0}));
+  try {
+    stack.constraints.TiedRelations();
+    FAIL() << "no error";
+  } catch (const InputError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("slave node 2, DISPLACEMENT_Y"), std::string::npos) << message;
+    EXPECT_NE(message.find("master-slave constraint 99"), std::string::npos) << message;
+  }
 }
 
 }  // namespace

@@ -7,10 +7,13 @@
 
 namespace mc {
 
-/// The contact results of the SLAVE nodes of `part` (the "Contact" interface) at the end of a
-/// converged step, in the units of the bodies' stresses (the multipliers are scaled by
-/// ProcessInfo[SCALE_FACTOR]; these are not). Kratos 10.4 computes none of them in its implicit
-/// mortar formulations (measured: a requested column is all zeros), so they are ours:
+/// The contact results of the SLAVE nodes of `part` (the "Contact" interface) at the state the
+/// step's residual was built at: the converged one of an implicit step (the contact processes call
+/// this at the end of the step), u_n of an explicit step (the explicit contact strategy calls it
+/// right after the residual, before the update: the force that acted during the step). In the units
+/// of the bodies' stresses (the multipliers are scaled by ProcessInfo[SCALE_FACTOR]; these are not).
+/// Kratos 10.4 computes none of them in its implicit mortar formulations (measured: a requested
+/// column is all zeros), so they are ours:
 ///
 ///  - NORMAL_CONTACT_STRESS: the normal traction on the slave body, negative in compression like
 ///    the multipliers, where ACTIVE (0 elsewhere). ALM formulations: the augmented pressure
@@ -40,5 +43,9 @@ namespace mc {
 /// from_json_check_result_process still read eps g there; here every reader after the step sees 0.
 /// Returns the number of slave nodes visited.
 std::size_t ComputeContactOutputs(ModelPart& part, bool clear_inactive);
+
+/// The clear_inactive part alone: AUGMENTED_NORMAL_CONTACT_PRESSURE and
+/// AUGMENTED_TANGENT_CONTACT_PRESSURE set to 0 at the SLAVE nodes of `part` that are not ACTIVE.
+void ClearInactiveContactPressures(ModelPart& part);
 
 }  // namespace mc

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "custom_processes/contact_output_utilities.h"
+#include "custom_utilities/contact_output_utilities.h"
 
 #include <unordered_map>
 
@@ -63,13 +63,18 @@ std::size_t ComputeContactOutputs(ModelPart& part, bool clear_inactive) {
     node.SetValue(CONTACT_FORCE, Array3(stress * area * normal));
     if (has_gap && area > 0.0 && !node.Is(ISOLATED))
       node.SetValue(NORMAL_GAP, node.FastGetSolutionStepValue(WEIGHTED_GAP) / area);
-    if (clear_inactive && !active) {
-      node.SetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE, 0.0);
-      if (node.Has(AUGMENTED_TANGENT_CONTACT_PRESSURE))
-        node.SetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE, Array3::Zero().eval());
-    }
   }
+  if (clear_inactive) ClearInactiveContactPressures(part);
   return visited;
+}
+
+void ClearInactiveContactPressures(ModelPart& part) {
+  for (Node* node : part.Nodes()) {
+    if (!node->Is(SLAVE) || node->Is(ACTIVE)) continue;
+    node->SetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE, 0.0);
+    if (node->Has(AUGMENTED_TANGENT_CONTACT_PRESSURE))
+      node->SetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE, Array3::Zero().eval());
+  }
 }
 
 }  // namespace mc

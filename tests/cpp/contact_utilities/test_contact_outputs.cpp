@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "core/model/model.h"
-#include "custom_processes/contact_output_utilities.h"
+#include "custom_utilities/contact_output_utilities.h"
 #include "custom_utilities/contact_variables.h"
 
 namespace mc {
