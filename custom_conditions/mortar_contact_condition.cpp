@@ -102,8 +102,8 @@ MortarIntegrationSettings MortarContactCondition<TDim, TNumNodes, TNumNodesMaste
     settings.consider_tessellation = GetProperties().GetValue(CONSIDER_TESSELLATION);
   settings.axisymmetric = IsAxisymmetric();
   const double time = info.GetValue(TIME);
-  if (fan_start_.time != time) fan_start_ = MortarFanStart{time};
-  settings.held_fan_start = &fan_start_;
+  if (fan_history_.time != time) fan_history_ = MortarFanHistory{time};
+  settings.fan_history = &fan_history_;
   return settings;
 }
 

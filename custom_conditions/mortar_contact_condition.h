@@ -105,8 +105,8 @@ class MortarContactCondition : public PairedCondition {
   /// not positive): the mean gaps MortarPairKinematics::SetMeanGaps holds the weights of.
   typename Kinematics::SlaveVector PenetratingMeanGaps() const;
 
-  /// The fan start of the pair's overlap, held through a step (MortarIntegrationSettings).
-  mutable MortarFanStart fan_start_;
+  /// The fan starts of the pair's overlap in the current step (MortarIntegrationSettings).
+  mutable MortarFanHistory fan_history_;
 };
 
 #define MC_EXTERN(D, S, M) extern template class MortarContactCondition<D, S, M>;

@@ -11,11 +11,20 @@ namespace mc {
 /// The vertex a 3D overlap's fan starts from, by what it is: kind 0 master node `index` inside
 /// the slave, 1 slave node `index` inside the master, 2 the crossing of slave edge i and master
 /// edge l (index i * master nodes + l), 3 none (the polygon's first vertex); -1 not chosen yet.
-/// `time` is the TIME it was chosen at.
 struct MortarFanStart {
-  double time = 0.0;
   int kind = -1;
   int index = -1;
+  bool operator==(const MortarFanStart&) const = default;
+};
+
+/// The fan starts of one pair within a step (TIME `time`): the current one and those it left.
+/// ExactMortarIntegrationUtility::Compute follows Kratos' rule but never goes back to a start the
+/// step has left: that is the Newton cycle of a vertex on the other face's edge (below).
+struct MortarFanHistory {
+  double time = 0.0;
+  MortarFanStart current;
+  std::array<MortarFanStart, 3> left{};
+  int left_count = 0;
 };
 
 /// Settings of the mortar segmentation, filled from the contact process (spec 4.2).
@@ -31,9 +40,9 @@ struct MortarIntegrationSettings {
   /// 2D only, x = radius, y = axis: the mortar integrals are taken over the surface of
   /// revolution, each weight times 2 pi r at the point (MortarPairKinematics applies it).
   bool axisymmetric = false;
-  /// When set, the fan start of a 3D overlap: chosen by Kratos' rule where its kind is -1 (and
-  /// stored), kept where it is set (see ExactMortarIntegrationUtility::Compute).
-  MortarFanStart* held_fan_start = nullptr;
+  /// When set, the fan starts of this 3D pair in the step so far: Kratos' rule, except that a
+  /// start the step has left is not taken again (see ExactMortarIntegrationUtility::Compute).
+  MortarFanHistory* fan_history = nullptr;
 };
 
 /// One mortar integration point of a (slave, master) pair.

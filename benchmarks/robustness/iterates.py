@@ -5,7 +5,8 @@ Kratos 10.4 or mortarcontact, to find where the two codes' iterations part (READ
 covered slave edges). The earlier steps run as usual; in step STEP the strategy stops after K
 iterations (K = 0: before the first solve, with the predicted active set) and every node of
 Contact_slave and Contact_master is written: coordinates, ACTIVE, the scalar multiplier,
-WEIGHTED_GAP, AUGMENTED_NORMAL_CONTACT_PRESSURE, NODAL_AREA, DISPLACEMENT, NORMAL.
+WEIGHTED_GAP, AUGMENTED_NORMAL_CONTACT_PRESSURE, NODAL_AREA, DISPLACEMENT, NORMAL (other parts:
+--parts, e.g. Contact_right Contact_left for the self-contact clamp).
 
     python iterates.py --code mortarcontact CASE_DIR STEP K OUT.json [--set KEY.PATH=JSON ...]
     $MORTARCONTACT_KRATOS_VENV/bin/python iterates.py --code kratos CASE_DIR STEP K OUT.json
@@ -24,10 +25,10 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 import case_runner
 
 
-def interface_state(model, get_variable, active_flag) -> list[dict]:
+def interface_state(model, get_variable, active_flag, parts) -> list[dict]:
     root = model.GetModelPart("Structure")
     rows = []
-    for part in ("Contact_slave", "Contact_master"):
+    for part in parts:
         for node in root.GetSubModelPart(part).Nodes:
             def value(name, historical=True, node=node):
                 try:
@@ -52,6 +53,8 @@ def main(argv=None) -> int:
     parser.add_argument("step", type=int)
     parser.add_argument("iterations", type=int)
     parser.add_argument("output")
+    parser.add_argument("--parts", nargs=2, default=("Contact_slave", "Contact_master"), metavar=("SLAVE", "MASTER"),
+                        help="the sub-model parts written (default: the sweep cases' Contact_slave Contact_master)")
     parser.add_argument("--set", action="append", default=[], metavar="KEY.PATH=JSON",
                         help="override one entry of ProjectParameters.json (repeatable)")
     args = parser.parse_args(argv)
@@ -61,7 +64,7 @@ def main(argv=None) -> int:
 
     def write(model, get_variable, active_flag):
         with open(output, "w") as f:
-            json.dump(interface_state(model, get_variable, active_flag), f)
+            json.dump(interface_state(model, get_variable, active_flag, args.parts), f)
 
     if args.code == "kratos":
         import KratosMultiphysics as KM

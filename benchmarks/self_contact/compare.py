@@ -38,7 +38,7 @@ def run(code: str, case_dir: str, output: str) -> None:
     os.chdir(case_dir)
     with open("ProjectParameters.json") as f:
         parameters = json.load(f)
-    record = {"steps": []}
+    record = {"steps": [], "walls": []}
     started = time.perf_counter()
     if code == "kratos":
         import KratosMultiphysics as KM
@@ -58,6 +58,7 @@ def run(code: str, case_dir: str, output: str) -> None:
                 converged = bool(self._GetSolver().SolveSolutionStep())
                 info = self._GetSolver().GetComputingModelPart().ProcessInfo
                 record["steps"].append((info[KM.NL_ITERATION_NUMBER], converged))
+                record["walls"].append(wall_positions(model, KM))
                 return converged
 
         model = KM.Model()
@@ -66,8 +67,13 @@ def run(code: str, case_dir: str, output: str) -> None:
     else:
         import mortarcontact as mc
 
+        class Recorded(mc.Analysis):
+            def FinalizeSolutionStep(self):
+                super().FinalizeSolutionStep()
+                record["walls"].append(wall_positions(model, mc))
+
         model = mc.Model()
-        analysis = mc.Analysis(model, parameters, stop_on_non_convergence=False)
+        analysis = Recorded(model, parameters, stop_on_non_convergence=False)
         analysis.Run()
         record["steps"] = [(iterations, converged) for _, _, iterations, converged, _ in analysis.step_log]
         api = mc
@@ -76,6 +82,33 @@ def run(code: str, case_dir: str, output: str) -> None:
     record["displacements"] = {str(node.Id): list(node.GetSolutionStepValue(api.DISPLACEMENT)) for node in root.Nodes}
     with open(output, "w") as f:
         json.dump(record, f)
+
+
+def wall_positions(model, api) -> dict:
+    """The current positions of the slot's two inner walls (Contact_left, Contact_right) by node."""
+    root = model["Structure"]
+    return {part: [[node.X0 + node.GetSolutionStepValue(api.DISPLACEMENT_X),
+                    node.Y0 + node.GetSolutionStepValue(api.DISPLACEMENT_Y)]
+                   for node in root.GetSubModelPart(part).Nodes]
+            for part in ("Contact_left", "Contact_right")}
+
+
+def overlaps(record: dict) -> list[float]:
+    """2D, per step: the deepest a node of one inner wall of the slot lies inside the other arm at the
+    end of the step (its horizontal distance past the other wall, taken as a polyline in y; 0 when
+    none does)."""
+    import numpy as np
+
+    depths = []
+    for walls in record["walls"]:
+        left, right = (np.array(sorted(walls[part], key=lambda p: p[1])) for part in ("Contact_left", "Contact_right"))
+        deepest = 0.0
+        for nodes, wall, sign in ((right, left, 1.0), (left, right, -1.0)):
+            inside = (nodes[:, 1] >= wall[0, 1]) & (nodes[:, 1] <= wall[-1, 1])
+            depth = -sign * (nodes[inside, 0] - np.interp(nodes[inside, 1], wall[:, 1], wall[:, 0]))
+            deepest = max(deepest, float(depth.max(initial=0.0)))
+        depths.append(deepest)
+    return depths
 
 
 def run_child(python: str, code: str, case_dir: str, output: str) -> dict | str:

@@ -19,19 +19,30 @@ import sys
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "hertz"))
+sys.path.append(os.path.join(HERE, "..", "hertz"))  # after this folder: hertz has a compare.py too
 RESULTS = os.path.join(HERE, "results_variations.md")
 SEARCH_FACTOR = 3.5  # Kratos' default search_factor, which the generated cases keep
 
 NOTES = """Where the tips crossed within a step, the next search pairs the crossed faces and pushes
 the arms apart (the arms are one body: a face of the slave's own body is a partner up to a face's
-size behind it unless one element holds both faces). deep_left_slave: the arms cross by 0.116 in
-step 1 in both codes; Kratos ends the run with them still overlapping by 0.030 (hence the
-difference of 0.19), we with them touching from step 4. Per step we take more iterations than
-Kratos in the step after a crossing (fine meshes, 3 x load: 6 against 3-4) and in a few first
-contact steps (load_2_right_slave step 2, 3d_right_slave_4_steps step 1), fewer in total in every
-variation. Kratos does not converge in step 9 of load_4_20_steps nor in the last step of either
-frictional variation.
+size behind it unless one element holds both faces). Kratos leaves the arms crossed for many steps
+(overlap column: in 16 of the 20 steps of deep_left_slave_20_steps, up to 0.18 deep, 3.6 elements;
+deep_left_slave: 0.116 after step 1, still 0.030 after step 8), we only in the step that crossed,
+deeper crossings for two more steps (deep_left_slave: 0.116, 0.056, 0.008, then 0): the search
+pairs a face of the other arm only up to a face's size behind. Neither code's step-start search
+sees a slot that closes by more than its reach within the step.
+
+Per step we take more iterations than Kratos in the step after a crossing (fine meshes: 6 against
+3-4) and in a few first contact steps (load_2_right_slave step 2, 3d_right_slave_4_steps step 1),
+fewer in total in every variation. The step after a crossing, traced node by node in
+fine_right_slave step 3 (benchmarks/robustness/iterates.py): the search pairs the six crossed tip
+nodes of the slave wall and predicts them active; as the tips rotate apart the semi-smooth Newton
+releases them one per iteration (6, 4, 3, 2, 1, 1, 1 active) and the step ends with the tip corner
+touching the other tip and every other node 0.0017-0.015 clear. Kratos pairs only three of them
+(the tip faces get no pair: NODAL_AREA 0), releases two in its first iteration and ends the step
+in 3 iterations with the three unpaired tip nodes inside the other arm, the tip 0.0075 deep (30 %
+of an element), and still 0.0025 after step 4. Kratos does not converge in step 9 of
+load_4_20_steps nor in the last step of either frictional variation.
 """
 
 # name: (dim, element size, load factor, slave side, steps, friction coefficient)
@@ -64,11 +75,12 @@ def main(argv=None) -> int:
     from mortarcontact.cases.mesh_files import write_kratos_mdpa
 
     import harness  # the Kratos 10.4 venv of the benchmarks (MORTARCONTACT_KRATOS_VENV)
-    from compare import displacement_difference, run_child, steps_summary
+    from compare import displacement_difference, overlaps, run_child, steps_summary
 
     pythons = {"mortarcontact": sys.executable, "kratos": harness.kratos_python()}
     lines = ["| variation | dim | size | load | slave | steps | mu | reach / closing | mortarcontact | Kratos 10.4 "
-             "| max abs(du) / max abs(u) |", "|---|---|---|---|---|---|---|---|---|---|---|"]
+             "| overlap: mortarcontact / Kratos | max abs(du) / max abs(u) |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     size, pressure = dict(self_contact.SIZE), self_contact.PRESSURE
     with tempfile.TemporaryDirectory() as scratch:
         for name, (dim, h, load, slave, steps, mu) in VARIATIONS.items():
@@ -80,7 +92,7 @@ def main(argv=None) -> int:
             self_contact.SIZE.update(size)
             self_contact.PRESSURE = pressure
             write_kratos_mdpa(folder)
-            records, cells = {}, []
+            records, cells, cells_overlap = {}, [], []
             for code, python in pythons.items():
                 output = os.path.join(scratch, f"{name}-{code}.json")
                 record = run_child(python, code, folder, output)
@@ -90,6 +102,12 @@ def main(argv=None) -> int:
                 records[code] = record
                 status, iterations = steps_summary(record)
                 cells.append(f"{status}: {iterations}")
+                if dim == 2:
+                    depths = overlaps(record)
+                    deepest = max(range(len(depths)), key=depths.__getitem__)
+                    overlapped = sum(depth > 0.01 * h for depth in depths)
+                    cells_overlap.append(f"{depths[deepest]:.4f} (step {deepest + 1}); {overlapped}" if overlapped
+                                         else "0")
             difference = ""
             if len(records) == 2:
                 difference = f"{displacement_difference(records['mortarcontact'], records['kratos']):.1e}"
@@ -97,7 +115,8 @@ def main(argv=None) -> int:
             # 2D) over the steps; the step-start search bridges SEARCH_FACTOR x the slave size.
             closing = f"{2 * 0.43 * load / steps:.3f}" if dim == 2 else "-"
             line = (f"| {name} | {dim} | {h} | {load} x | {slave} | {steps} | {mu} | "
-                    f"{SEARCH_FACTOR * h:.3f} / {closing} | {cells[0]} | {cells[1]} | {difference} |")
+                    f"{SEARCH_FACTOR * h:.3f} / {closing} | {cells[0]} | {cells[1]} | "
+                    f"{' / '.join(cells_overlap) or '-'} | {difference} |")
             lines.append(line)
             print(line, flush=True)
     load_average = os.getloadavg()[0]
@@ -108,7 +127,9 @@ def main(argv=None) -> int:
                 "search radius of the step-start search (search_factor 3.5 x the slave element size) against the "
                 "closing of the slot per step of free bending (2 x 0.43 x load / steps, 2D: the measured free tip "
                 "deflection); where the closing is the larger, the step that closes the slot can start without a "
-                "pair and the tips pass through each other in both codes. "
+                "pair and the tips pass through each other in both codes. 'overlap' (2D): the deepest a node of one "
+                "inner wall lies inside the other arm at the end of a step (its step), and in how many steps the "
+                "arms end more than 1 % of an element inside each other. "
                 f"Load average {load_average:.1f} at the end ({os.cpu_count()} cores).\n\n"
                 + "\n".join(lines) + "\n\n" + NOTES)
     return 0

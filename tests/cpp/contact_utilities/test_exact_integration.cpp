@@ -396,12 +396,13 @@ TEST(ExactMortarIntegration, NearlyCoincidentCrossingEdges) {
 // delta = +-1e-9: the overlap is the slave's part x <= 0.5 either way. The order-2 rule is not
 // exact for ((xi + 0.3)(eta + 0.7))^2 (degree 4, as N1 N2 in M): Kratos' rule starts the fan at
 // the master corner for +1e-9 and at slave node 0 for -1e-9, and the sum jumps by 1.4e-2 of its
-// value (the friction block's Newton cycle at t = 1.125). Held, the start stays the corner.
-TEST(ExactMortarIntegration, HeldFanStartKeepsTheFanOfAVertexOnACoincidentEdge) {
+// value (the friction block's Newton cycle at t = 1.125). With the step's history the fan follows
+// the rule once, to slave node 0, and does not go back to the corner.
+TEST(ExactMortarIntegration, FanHistoryDoesNotGoBackToAStartTheStepLeft) {
   const auto x1 = Rows<K44::SlaveMatrix>({0, 0, 0, 1, 0, 0, 1.2, 1, 0, 0, 0.8, 0});
-  auto moment = [&](double delta, MortarFanStart* held) {
+  auto moment = [&](double delta, MortarFanHistory* history) {
     MortarIntegrationSettings settings = Order(2);
-    settings.held_fan_start = held;
+    settings.fan_history = history;
     MortarIntegrationPoints<double, 3, 4, 4> points;
     const auto x2 = Rows<K44::MasterMatrix>({-0.5, delta, 0.01, 0.5, delta, 0.01, 0.5, 2, 0.01, -0.5, 2, 0.01});
     EXPECT_TRUE((ExactMortarIntegrationUtility<3, 4, 4>::Compute(x1, x2, ConditionNormals<K44>(x1), settings, points)));
@@ -414,11 +415,16 @@ TEST(ExactMortarIntegration, HeldFanStartKeepsTheFanOfAVertexOnACoincidentEdge) 
   };
   const double above = moment(1e-9, nullptr), below = moment(-1e-9, nullptr);
   EXPECT_GT(std::abs(above - below), 1e-2 * std::abs(below));  // Kratos' rule
-  MortarFanStart held;
-  EXPECT_DOUBLE_EQ(moment(1e-9, &held), above);
-  EXPECT_EQ(held.kind, 0);  // the master corner
-  EXPECT_EQ(held.index, 1);
-  EXPECT_NEAR(moment(-1e-9, &held), above, 1e-8 * std::abs(above));
+  MortarFanHistory history;
+  EXPECT_DOUBLE_EQ(moment(1e-9, &history), above);
+  EXPECT_EQ(history.current, (MortarFanStart{0, 1}));  // the master corner
+  EXPECT_DOUBLE_EQ(moment(-1e-9, &history), below);    // the rule's new start
+  EXPECT_EQ(history.current, (MortarFanStart{1, 0}));  // slave node 0
+  for (int repeat = 0; repeat < 3; ++repeat) {
+    EXPECT_NEAR(moment(1e-9, &history), below, 1e-8 * std::abs(below));  // not back to the corner
+    EXPECT_NEAR(moment(-1e-9, &history), below, 1e-8 * std::abs(below));
+  }
+  EXPECT_EQ(history.left_count, 1);
 }
 
 TEST(ExactMortarIntegration, FoldedMasterFaceOfADivergedIterateIsASolutionError) {
