@@ -5,8 +5,9 @@ Kratos 10.4 or mortarcontact, to find where the two codes' iterations part (READ
 covered slave edges). The earlier steps run as usual; in step STEP the strategy stops after K
 iterations (K = 0: before the first solve, with the predicted active set) and every node of
 Contact_slave and Contact_master is written: coordinates, ACTIVE, the scalar multiplier,
-WEIGHTED_GAP, AUGMENTED_NORMAL_CONTACT_PRESSURE, NODAL_AREA, DISPLACEMENT, NORMAL (other parts:
---parts, e.g. Contact_right Contact_left for the self-contact clamp).
+WEIGHTED_GAP, AUGMENTED_NORMAL_CONTACT_PRESSURE, NODAL_AREA, DISPLACEMENT, NORMAL, and for friction
+SLIP, WEIGHTED_SLIP and VECTOR_LAGRANGE_MULTIPLIER (stick_slide.py reads two such dumps). Other
+parts: --parts, e.g. Contact_right Contact_left for the self-contact clamp.
 
     python iterates.py --code mortarcontact CASE_DIR STEP K OUT.json [--set KEY.PATH=JSON ...]
     $MORTARCONTACT_KRATOS_VENV/bin/python iterates.py --code kratos CASE_DIR STEP K OUT.json
@@ -25,7 +26,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 import case_runner
 
 
-def interface_state(model, get_variable, active_flag, parts) -> list[dict]:
+def interface_state(model, get_variable, active_flag, slip_flag, parts) -> list[dict]:
     root = model.GetModelPart("Structure")
     rows = []
     for part in parts:
@@ -36,13 +37,20 @@ def interface_state(model, get_variable, active_flag, parts) -> list[dict]:
                     return float(node.GetSolutionStepValue(variable) if historical else node.GetValue(variable))
                 except Exception:  # absent in this code, formulation or node
                     return None
+            def vector(name, node=node):
+                try:
+                    return [float(c) for c in node.GetSolutionStepValue(get_variable(name))]
+                except Exception:  # frictionless or absent in this code
+                    return None
             rows.append({"part": part, "id": node.Id, "x": node.X0, "y": node.Y0, "z": node.Z0,
                          "active": bool(node.Is(active_flag)),
                          "lm": value("LAGRANGE_MULTIPLIER_CONTACT_PRESSURE"), "gap": value("WEIGHTED_GAP"),
                          "augmented": value("AUGMENTED_NORMAL_CONTACT_PRESSURE", False),
                          "nodal_area": value("NODAL_AREA", False),
                          "u": [float(c) for c in node.GetSolutionStepValue(get_variable("DISPLACEMENT"))],
-                         "normal": [float(c) for c in node.GetSolutionStepValue(get_variable("NORMAL"))]})
+                         "normal": [float(c) for c in node.GetSolutionStepValue(get_variable("NORMAL"))],
+                         "slip": bool(node.Is(slip_flag)), "weighted_slip": vector("WEIGHTED_SLIP"),
+                         "lm_vector": vector("VECTOR_LAGRANGE_MULTIPLIER")})
     return rows
 
 
@@ -62,9 +70,9 @@ def main(argv=None) -> int:
     parameters_path = os.path.join(case_dir, "ProjectParameters.json")
     os.chdir(case_dir)
 
-    def write(model, get_variable, active_flag):
+    def write(model, get_variable, active_flag, slip_flag):
         with open(output, "w") as f:
-            json.dump(interface_state(model, get_variable, active_flag, args.parts), f)
+            json.dump(interface_state(model, get_variable, active_flag, slip_flag, args.parts), f)
 
     if args.code == "kratos":
         import KratosMultiphysics as KM
@@ -80,7 +88,7 @@ def main(argv=None) -> int:
             text = case_runner.kratos_parameters(case_runner.overridden(f.read(), args.set), case_dir)
         model = KM.Model()
         stage_class, parameters = StructuralMechanicsAnalysis, KM.Parameters(text)
-        get_variable, active_flag = KM.KratosGlobals.GetVariable, KM.ACTIVE
+        get_variable, active_flag, slip_flag = KM.KratosGlobals.GetVariable, KM.ACTIVE, KM.SLIP
 
         def strategy(stage):
             return stage._GetSolver()._GetSolutionStrategy()
@@ -97,7 +105,7 @@ def main(argv=None) -> int:
         model = mc.Model()
         stage_class = StructuralMechanicsAnalysis
         parameters = case_runner.mortarcontact_parameters(parameters_path, None, args.set)
-        get_variable, active_flag = mc.GetVariable, mc.ACTIVE
+        get_variable, active_flag, slip_flag = mc.GetVariable, mc.ACTIVE, mc.SLIP
 
         def strategy(stage):
             return stage.solver.strategy
@@ -119,13 +127,13 @@ def main(argv=None) -> int:
             strategy(self).SetMaxIterationNumber(max(args.iterations, 1))
             if args.iterations == 0:
                 def stop():
-                    write(model, get_variable, active_flag)
+                    write(model, get_variable, active_flag, slip_flag)
                     raise Stopped
                 solver(self).SolveSolutionStep = stop
 
         def FinalizeSolutionStep(self):
             if step_of(self) == args.step:
-                write(model, get_variable, active_flag)
+                write(model, get_variable, active_flag, slip_flag)
                 raise Stopped
             super().FinalizeSolutionStep()
 
