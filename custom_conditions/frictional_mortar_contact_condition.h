@@ -47,6 +47,8 @@ class FrictionalMortarContactCondition : public MortarContactCondition<TDim, TNu
   void Check(const ProcessInfo& info) const override;
 
  protected:
+  /// The weighted slip compares D and M with the step start's: both from one fan.
+  bool HoldsFanStart() const override { return true; }
   /// The augmented tangent pressure of slave node j, whose direction is the slip direction.
   virtual Eigen::Matrix<double, TDim, 1> AugmentedTangentPressure(const Data& data, int j) const = 0;
 

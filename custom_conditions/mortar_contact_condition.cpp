@@ -102,7 +102,7 @@ MortarIntegrationSettings MortarContactCondition<TDim, TNumNodes, TNumNodesMaste
     settings.consider_tessellation = GetProperties().GetValue(CONSIDER_TESSELLATION);
   settings.axisymmetric = IsAxisymmetric();
   const double time = info.GetValue(TIME);
-  if (fan_history_.time != time) fan_history_ = MortarFanHistory{time};
+  if (fan_history_.time != time) fan_history_ = MortarFanHistory{time, HoldsFanStart()};
   settings.fan_history = &fan_history_;
   return settings;
 }

@@ -83,6 +83,9 @@ class MortarContactCondition : public PairedCondition {
 
   /// Whether the mortar integrals are weighted by 2 pi r (axisymmetric variants).
   virtual bool IsAxisymmetric() const { return false; }
+  /// Whether the 3D fan start of the step's first evaluation is kept through the step
+  /// (MortarFanHistory::hold) rather than following Kratos' rule.
+  virtual bool HoldsFanStart() const { return false; }
   /// Integration settings of the pair (properties, ProcessInfo, IsAxisymmetric()).
   MortarIntegrationSettings IntegrationSettings(const ProcessInfo& info) const;
   /// Current slave / master coordinates.

@@ -19,9 +19,11 @@ struct MortarFanStart {
 
 /// The fan starts of one pair within a step (TIME `time`): the current one and those it left.
 /// ExactMortarIntegrationUtility::Compute follows Kratos' rule but never goes back to a start the
-/// step has left: that is the Newton cycle of a vertex on the other face's edge (below).
+/// step has left: that is the Newton cycle of a vertex on the other face's edge (below). With
+/// `hold`, the start of the step's first evaluation is kept through the step instead.
 struct MortarFanHistory {
   double time = 0.0;
+  bool hold = false;
   MortarFanStart current;
   std::array<MortarFanStart, 3> left{};
   int left_count = 0;
@@ -41,7 +43,8 @@ struct MortarIntegrationSettings {
   /// revolution, each weight times 2 pi r at the point (MortarPairKinematics applies it).
   bool axisymmetric = false;
   /// When set, the fan starts of this 3D pair in the step so far: Kratos' rule, except that a
-  /// start the step has left is not taken again (see ExactMortarIntegrationUtility::Compute).
+  /// start the step has left is not taken again, or with `hold` the step's first start throughout
+  /// (see ExactMortarIntegrationUtility::Compute).
   MortarFanHistory* fan_history = nullptr;
 };
 
