@@ -70,6 +70,7 @@ def test_the_multipliers_count_towards_the_threshold(petsc):
     {"settings": '{"solver_type": "umfpack"}'},  # the user's explicit choice
     {"settings": '{"solver_type": "klu"}'},
     {"settings": '{"solver_type": "sparse_lu", "scaling": true}'},
+    {"settings": '{"solver_type": "sparse_lu", "reuse_factorization": false}'},
     {"nodes": ABOVE - 2},
     {"domain_size": 2},
     {"mortar_type": "ALMContactFrictional"},
