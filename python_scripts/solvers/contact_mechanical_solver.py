@@ -54,10 +54,10 @@ KEYS_WITHOUT_EFFECT = {
 KRATOS_DIRECT_SOLVERS = {"skyline_lu_factorization", "sparse_lu", "pardiso_lu", "pardiso_ldlt", "super_lu",
                          "pastix", "mumps"}
 #: Estimated equations (3 per node, one multiplier per contact node) from which such a 3D problem is
-#: solved by LARGE_3D_LINEAR_SOLVER. The field split took 0.78 x UMFPACK's CPU time on 6.1k
-#: equations, 0.62 x (and 0.58 x the memory) on 14.9k, 0.23 x on 51k, in the same Newton iterations
-#: (benchmarks/hertz/results_3d_multigrid.md); below 10k the exact direct solve is kept: a second
-#: or two either way.
+#: solved by LARGE_3D_LINEAR_SOLVER. The field split took 0.83 x UMFPACK's CPU time on 6.1k
+#: equations, 0.63 x (and 0.57 x the memory) on 14.9k, 22 s against 337 s on 51k, in the same
+#: Newton iterations (benchmarks/hertz/results_3d_multigrid.md); below 10k the exact direct solve
+#: is kept: a second or two either way.
 LARGE_3D_EQUATIONS = 10000
 #: PETSc's field split with the rigid-body modes for the multigrid of the displacements (issue 14).
 LARGE_3D_LINEAR_SOLVER = """{
