@@ -17,21 +17,6 @@ import mortarcontact as mc
 from mortarcontact.solvers import contact_mechanical_solver as contact_solver
 
 
-def _petsc_available() -> bool:
-    try:
-        mc._core.CreateLinearSolver(mc.Parameters('{"solver_type": "petsc"}'))
-    except mc._core.NotImplementedFeatureError:
-        return False
-    return True
-
-
-@pytest.fixture
-def petsc():
-    # Checked here, not at collection: loading the plugin brings MPI into the test process.
-    if not _petsc_available():
-        pytest.skip("the PETSc plugin is not built (Debian's petsc-dev missing): make deps-petsc, then make install")
-
-
 def _solver_of(nodes: int, domain_size: int = 3, mortar_type: str = "ALMContactFrictionless", contact: int = 0):
     """What _large_3d_linear_solver reads of a contact solver: its model part, dimension and formulation."""
     part = mc.Model().CreateModelPart("Structure", domain_size)
