@@ -1,7 +1,8 @@
 """Issue 14: a large 3D contact problem of the scalar frictionless multipliers whose case names no
 linear solver, or one of Kratos' direct ones, is solved by PETSc's field split instead of UMFPACK
 (one line of output says so); naming "umfpack" keeps the direct solver. The rules on a model part
-of the right size, and (slow) the same Newton iterations and answers as UMFPACK on hertz3d_15k."""
+of the right size, and (slow) UMFPACK's Newton iterations and answers, within the Newton
+tolerances, on hertz3d_15k."""
 from __future__ import annotations
 
 import importlib.util
