@@ -97,6 +97,35 @@ void EnsureInitialized() {
   Check(status, "PetscInitialize");
 }
 
+// Current coordinates of the node of each block of `rows` (block consecutive rows per node), when
+// every block holds its node's displacement components in the order x, y[, z]; else empty.
+std::vector<double> BlockCoordinates(const std::vector<Dof*>& dofs, const std::vector<PetscInt>& rows, int block) {
+  static constexpr const char* kComponents[] = {"DISPLACEMENT_X", "DISPLACEMENT_Y", "DISPLACEMENT_Z"};
+  if (block != 2 && block != 3) return {};
+  std::vector<double> coordinates;
+  coordinates.reserve(rows.size());
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    const Dof* dof = dofs[static_cast<std::size_t>(rows[k])];
+    const std::size_t component = k % static_cast<std::size_t>(block);
+    if (dof->variable->Name() != kComponents[component]) return {};
+    coordinates.push_back(dof->node->Coordinates()[component]);
+  }
+  return coordinates;
+}
+
+// The rigid-body modes (3 in 2D, 6 in 3D) of the nodes at `coordinates` (dimension per node).
+MatNullSpace RigidBodyModes(MPI_Comm comm, const std::vector<double>& coordinates, int dimension) {
+  Vec points = nullptr;
+  const auto local = static_cast<PetscInt>(coordinates.size());
+  Check(VecCreateMPIWithArray(comm, dimension, local, PETSC_DECIDE, coordinates.data(), &points),
+        "VecCreateMPIWithArray");
+  MatNullSpace modes = nullptr;
+  const PetscErrorCode code = MatNullSpaceCreateRigidBody(points, &modes);
+  VecDestroy(&points);
+  Check(code, "MatNullSpaceCreateRigidBody");
+  return modes;
+}
+
 }  // namespace
 
 struct PetscSolver::Handles {
@@ -298,6 +327,12 @@ void PetscSolver::Solve(const SparseMatrix& A, Vector& x, const Vector& b) {
   PetscInt iterations = 0;
   KSPGetIterationNumber(handles_->ksp, &iterations);
   iterations_ = std::max<int>(1, static_cast<int>(iterations));
+  if (IsDirect()) {
+    ++counters_.factorizations;
+  } else {
+    ++counters_.krylov_solves;
+    counters_.krylov_iterations += iterations;
+  }
   if (reason == KSP_DIVERGED_PC_FAILED) {
     PC pc = nullptr;
     KSPGetPC(handles_->ksp, &pc);
@@ -367,6 +402,7 @@ void PetscSolver::Clear() {
 void PetscSolver::SetFieldSplits(KSP ksp) {
   PC pc = nullptr;
   Check(KSPGetPC(ksp, &pc), "KSPGetPC");
+  rigid_body_modes_ = 0;
   if (primal_rows_.empty() && multiplier_rows_.empty()) return;  // before ProvideAdditionalData: see Solve
   if (multiplier_rows_.empty()) {
     // No contact multipliers (yet): the displacement preconditioner, with its own options
@@ -375,6 +411,7 @@ void PetscSolver::SetFieldSplits(KSP ksp) {
     Check(PCSetFromOptions(pc), "PCSetFromOptions");
     return;
   }
+  const MPI_Comm comm = communicator_ ? communicator_->Comm() : PETSC_COMM_SELF;
   auto set = [&](const char* name, const std::vector<int>& rows, int block) {
     // Distributed: each rank names the rows it owns (whole nodes: the partition cuts between them).
     std::vector<PetscInt> indices;
@@ -382,10 +419,21 @@ void PetscSolver::SetFieldSplits(KSP ksp) {
     for (const int row : rows)
       if (!communicator_ || partition_.Owns(row)) indices.push_back(row);
     IS is = nullptr;
-    Check(ISCreateGeneral(communicator_ ? communicator_->Comm() : PETSC_COMM_SELF,
-                          static_cast<PetscInt>(indices.size()), indices.data(), PETSC_COPY_VALUES, &is),
+    Check(ISCreateGeneral(comm, static_cast<PetscInt>(indices.size()), indices.data(), PETSC_COPY_VALUES, &is),
           "ISCreateGeneral");
     if (block > 1) Check(ISSetBlockSize(is, block), "ISSetBlockSize");
+    if (block > 1) {
+      // The field split hands a near-nullspace composed on a split's IS to its block's matrix,
+      // where smoothed-aggregation multigrid (GAMG) takes its coarse spaces from (BoomerAMG
+      // ignores it unless told to interpolate vectors).
+      const std::vector<double> coordinates = BlockCoordinates(dofs_, indices, block);
+      if (!coordinates.empty()) {
+        MatNullSpace modes = RigidBodyModes(comm, coordinates, block);
+        PetscObjectCompose(reinterpret_cast<PetscObject>(is), "nearnullspace", reinterpret_cast<PetscObject>(modes));
+        MatNullSpaceDestroy(&modes);
+        rigid_body_modes_ = block == 3 ? 6 : 3;
+      }
+    }
     const PetscErrorCode code = PCFieldSplitSetIS(pc, name, is);
     ISDestroy(&is);
     Check(code, "PCFieldSplitSetIS");

@@ -70,6 +70,8 @@ class PetscSolver : public LinearSolver {
   void Solve(const SparseMatrix& A, Vector& x, const Vector& b) override;
   void Clear() override;
   int IterationsNumber() const override { return iterations_; }
+  /// Solves by a Krylov method and their iterations, or factorizations (ksp_type preonly).
+  WorkCounters Counters() const override { return counters_; }
   /// Only the field split needs the DoF of each row.
   bool AdditionalPhysicalDataIsNeeded() const override { return field_split_; }
   void ProvideAdditionalData(const SparseMatrix& A, const std::vector<Dof*>& dof_of_equation) override;
@@ -81,6 +83,9 @@ class PetscSolver : public LinearSolver {
   const std::vector<int>& MultiplierRows() const { return multiplier_rows_; }
   /// DoFs per node in the primal field (1 when the nodes' rows are not contiguous).
   int PrimalBlockSize() const { return primal_block_size_; }
+  /// Rigid-body modes given to the displacement field at the last set-up as its near-nullspace
+  /// (6 in 3D, 3 in 2D; 0 when the primal blocks are not the nodes' displacements).
+  int RigidBodyModeCount() const { return rigid_body_modes_; }
 
  private:
   struct Handles;  // PETSc's Mat and KSP (keeps the PETSc headers private)
@@ -96,11 +101,13 @@ class PetscSolver : public LinearSolver {
   SparsePattern pattern_;
   SparseMatrix compressed_;
   int iterations_ = 0;
+  WorkCounters counters_;
   bool field_split_ = false;
   std::vector<Dof*> dofs_;  ///< of the last ProvideAdditionalData, whose split depends on nothing else
   std::vector<int> primal_rows_;
   std::vector<int> multiplier_rows_;
   int primal_block_size_ = 1;
+  int rigid_body_modes_ = 0;
   /// PETSc reads the options of nested solvers (the fields' KSPs) at their first set-up, inside
   /// the first KSPSolve: this solver's options stay in PETSc's database until then.
   bool options_pending_ = false;

@@ -177,14 +177,6 @@ def test_free_components_are_null_in_the_constraints(case_2d):
             assert (value is None) == (not fixed), parameters["model_part_name"]
 
 
-def _petsc_available() -> bool:
-    try:
-        mc._core.CreateLinearSolver(mc.Parameters('{"solver_type": "petsc"}'))
-    except mc._core.NotImplementedFeatureError:
-        return False
-    return True
-
-
 PETSC_SOLVERS = {
     "mumps": ({"solver_type": "petsc"}, 1e-9),
     # Schur complement of the multipliers with BoomerAMG on the displacements (the solver for
@@ -195,14 +187,10 @@ PETSC_SOLVERS = {
 
 
 @pytest.mark.parametrize("variant", sorted(PETSC_SOLVERS))
-def test_petsc_linear_solver_gives_the_umfpack_contact_solution(case_2d, tmp_path, variant):
+def test_petsc_linear_solver_gives_the_umfpack_contact_solution(petsc, case_2d, tmp_path, variant):
     """Issue 4: linear_solver_settings {"solver_type": "petsc"} (MUMPS LU through PETSc, or the
     field split with algebraic multigrid) runs the Hertz contact case to the UMFPACK solution in
     the same Newton iterations."""
-    # Checked here, not at collection: loading the plugin brings MPI into the test process.
-    if not _petsc_available():
-        pytest.skip("the PETSc plugin is not built (Debian's petsc-dev missing): make deps-petsc, then make install")
-
     folder, _ = case_2d
     settings, tolerance = PETSC_SOLVERS[variant]
     records = {}

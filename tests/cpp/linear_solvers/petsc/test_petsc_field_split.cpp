@@ -60,6 +60,33 @@ TEST(PetscFieldSplit, ContactSystemSplitByDofsSolvesToTheDirectSolution) {
   EXPECT_LT(RelativeDifference(x, 0.5 * direct), 1e-9);
 }
 
+TEST(PetscFieldSplit, SmoothedAggregationGetsTheRigidBodyModesOfTheDisplacements) {
+  AssembledSystem<ContactSystem<3, 4, 4>> assembled(std::vector<bool>{true, true, false, true});
+  auto& [system, A, b, dofs] = assembled;
+  b.setLinSpaced(b.size(), 1.0, -2.0);
+  PetscSolver::Options gamg = FieldSplitOptions();
+  gamg.petsc_options.emplace_back("fieldsplit_u_pc_type", "gamg");
+  PetscSolver petsc(gamg);
+  petsc.ProvideAdditionalData(A, dofs);
+  Vector x;
+  petsc.Solve(A, x, b);
+  EXPECT_EQ(petsc.RigidBodyModeCount(), 6);
+  EXPECT_LT(RelativeDifference(x, DirectSolution(A, b)), 1e-9);
+
+  // Primal rows that are not each node's x, y, z displacements in order get no modes.
+  std::vector<Dof*> swapped = dofs;
+  for (std::size_t i = 0; i + 1 < swapped.size(); ++i)
+    if (swapped[i]->variable->Name() == "DISPLACEMENT_X" && swapped[i + 1]->variable->Name() == "DISPLACEMENT_Y") {
+      std::swap(swapped[i], swapped[i + 1]);
+      break;
+    }
+  PetscSolver unnamed(gamg);
+  unnamed.ProvideAdditionalData(A, swapped);
+  unnamed.Solve(A, x, b);
+  EXPECT_EQ(unnamed.PrimalBlockSize(), 3);
+  EXPECT_EQ(unnamed.RigidBodyModeCount(), 0);
+}
+
 TEST(PetscFieldSplit, WithoutMultipliersTheDisplacementPreconditionerTakesTheSystem) {
   AssembledSystem<ContactSystem<3, 4, 4>> assembled(std::vector<bool>{false, false, false, false});
   auto& [system, full, b_full, all] = assembled;
