@@ -15,6 +15,7 @@ from __future__ import annotations
 import json
 import os
 
+import numpy as np
 import pytest
 from test_contact_cases import SnapshotAnalysis, run_csma_case
 
@@ -22,6 +23,7 @@ import mortarcontact as mc
 from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
 from mortarcontact.project_parameters import read_project_parameters
 
+from case_builder import fix_process, project_parameters, run_analysis, structured_quads, write_case, write_mdpa
 from csma_cases import CSMA_CASES, KRATOS_SNAPSHOTS, reference_nodes, reference_values
 
 CASE_3D = "mpc_contact_tests/3D_contact_simplest_patch_matching_test"
@@ -276,3 +278,76 @@ def test_hertz_sphere_mpc_against_alm(tmp_path, monkeypatch):
         assert ours[key] == pytest.approx(alm[key], rel=1e-3), key
     assert abs(ours["p0_fit_error"]) < 0.03 and abs(ours["half_width_fit_error"]) < 0.01
     assert _at_most_one_more(iterations, alm_iterations)
+
+
+def _write_chain(folder) -> str:
+    """Blocks B and C (1 x 1) pressed down onto the two halves of a base A (2 x 1, clamped at its
+    bottom) by their tops (B 0.01, C 0.02, x held): interface 0 has B's bottom as slave on A's left
+    half, interface 1 A's right half as slave under C (shifted by 0.1). A's top node at x = 1 is a
+    master of interface 0 and a slave of interface 1 in the same component, u_y."""
+    blocks = {"A": ((0.0, 0.0), (2.0, 1.0), (4, 2)), "B": ((0.0, 1.0), (1.0, 1.0), (2, 2)),
+              "C": ((1.1, 1.0), (1.0, 1.0), (2, 2))}
+    coords, cells, parts = [], [], {}
+    for name, ((x0, y0), (lx, ly), (nx, ny)) in blocks.items():
+        xy, connectivity = structured_quads(nx, ny, lx, ly)
+        xy += np.array([x0, y0])
+        ids = np.arange(len(coords) + 1, len(coords) + len(xy) + 1)
+        first = len(cells) + 1
+        cells += [tuple(int(i) + len(coords) for i in c) for c in connectivity]
+        top, bottom = np.abs(xy[:, 1] - y0 - ly) < 1e-12, np.abs(xy[:, 1] - y0) < 1e-12
+        parts.update({f"Parts_{name}": {"nodes": ids, "elements": range(first, len(cells) + 1)},
+                      f"{name}_bottom": {"nodes": ids[bottom]}, f"{name}_top": {"nodes": ids[top]}})
+        if name == "A":
+            parts["A_top_left"] = {"nodes": ids[top & (xy[:, 0] <= 1.0 + 1e-12)]}
+            parts["A_top_right"] = {"nodes": ids[top & (xy[:, 0] >= 1.0 - 1e-12)]}
+        coords += list(xy)
+    write_mdpa(os.path.join(folder, "chain.mdpa"), coords, {"SmallDisplacementElement2D4N": cells}, sub_parts=parts)
+    params = project_parameters("chain", 2, constraints=[
+        fix_process("Structure.A_bottom", [0.0, 0.0, 0.0]), fix_process("Structure.B_top", [0.0, -0.01, 0.0]),
+        fix_process("Structure.C_top", [0.0, -0.02, 0.0])],
+        solver={"mpc_contact_settings": {"contact_type": "Frictionless"}, "compute_reactions": True})
+    params["processes"]["contact_process_list"] = [{
+        "python_module": "mpc_contact_process",
+        "kratos_module": "KratosMultiphysics.ContactStructuralMechanicsApplication",
+        "Parameters": {"model_part_name": "Structure",
+                       "contact_model_part": {"0": ["B_bottom", "A_top_left"], "1": ["A_top_right", "C_bottom"]},
+                       "assume_master_slave": {"0": ["B_bottom"], "1": ["A_top_right"]}}}]
+    variables = {"YOUNG_MODULUS": 1e6, "POISSON_RATIO": 0.3, "THICKNESS": 1.0}
+    return write_case(folder, "chain", params, {"properties": [
+        {"model_part_name": f"Structure.Parts_{name}", "properties_id": k + 1,
+         "Material": {"constitutive_law": {"name": "LinearElasticPlaneStrain2DLaw"}, "Variables": variables,
+                      "Tables": {}}} for k, name in enumerate("ABC")]})
+
+
+def test_node_on_two_interfaces(tmp_path):
+    """A node that is a master of one interface and a slave of the other (MPCContactConstraints::
+    TiedRelations substitutes its tie; before, the builder stopped at 'chained constraints'): both
+    interfaces close, every slave node is active, and the base carries both blocks' forces."""
+    analysis = run_analysis(tmp_path, _write_chain(tmp_path))
+    assert _iterations(analysis) == [2]
+    root = analysis.model["Structure"]
+    left, right = ({n.Id for n in root.GetSubModelPart(part).Nodes} for part in ("A_top_left", "A_top_right"))
+    assert len(left & right) == 1
+    reaction = mc.GetVariable("REACTION_Y")
+    force = {part: sum(n.GetSolutionStepValue(reaction) for n in root.GetSubModelPart(part).Nodes)
+             for part in ("A_bottom", "B_top", "C_top")}
+    assert force["B_top"] < 0.0 and force["C_top"] < 0.0
+    assert force["A_bottom"] == pytest.approx(-(force["B_top"] + force["C_top"]), rel=1e-9)
+    displacement = mc.GetVariable("DISPLACEMENT")
+
+    def surface(part):
+        nodes = root.GetSubModelPart(part).Nodes
+        return np.array(sorted((n.X0 + n.GetSolutionStepValue(displacement)[0],
+                                n.Y0 + n.GetSolutionStepValue(displacement)[1]) for n in nodes))
+
+    # Each slave node on its master surface to 0.5 % of the indentation (measured 2.4e-6 under B,
+    # 3.7e-5 under C): the ties hold the gaps weighted over non-matching faces that slide as the
+    # blocks spread, not node by node.
+    for slave, master in (("B_bottom", "A_top"), ("A_top_right", "C_bottom")):
+        nodes, surface_points = surface(slave), surface(master)
+        inside = (nodes[:, 0] >= surface_points[0, 0]) & (nodes[:, 0] <= surface_points[-1, 0])
+        gaps = nodes[inside, 1] - np.interp(nodes[inside, 0], surface_points[:, 0], surface_points[:, 1])
+        print(f"{slave} on {master}: largest gap {np.abs(gaps).max():.1e}")
+        assert np.abs(gaps).max() < 1e-4
+    assert all(n.Is(mc.ACTIVE) for part in ("B_bottom", "A_top_right") for n in root.GetSubModelPart(part).Nodes)
+
