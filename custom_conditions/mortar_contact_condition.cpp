@@ -10,6 +10,7 @@
 #include "custom_conditions/mortar_geometry_token.h"
 #include "custom_utilities/contact_variables.h"
 #include "custom_utilities/mortar_geometry_cases.h"
+#include "custom_utilities/mortar_pair_coordinates.h"
 #include "custom_utilities/normal_calculation_utilities.h"
 
 namespace mc {
@@ -126,10 +127,7 @@ void MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::GatherSlaveNormal
 template <int TDim, int TNumNodes, int TNumNodesMaster>
 void MortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::GatherCoordinates(
     typename Kinematics::SlaveMatrix& x1, typename Kinematics::MasterMatrix& x2) const {
-  const Geometry& slave = GetGeometry();
-  const Geometry& master = GetPairedGeometry();
-  for (int i = 0; i < TNumNodes; ++i) x1.row(i) = slave[i].Coordinates().template head<TDim>().transpose();
-  for (int l = 0; l < TNumNodesMaster; ++l) x2.row(l) = master[l].Coordinates().template head<TDim>().transpose();
+  MortarPairCoordinates<TDim, TNumNodes, TNumNodesMaster>(GetGeometry(), GetPairedGeometry(), x1, x2);
 }
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>

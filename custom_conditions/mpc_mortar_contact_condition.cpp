@@ -5,6 +5,7 @@
 
 #include "custom_conditions/mortar_geometry_token.h"
 #include "custom_utilities/contact_variables.h"
+#include "custom_utilities/mortar_pair_coordinates.h"
 #include "custom_utilities/normal_calculation_utilities.h"
 
 namespace mc {
@@ -19,12 +20,9 @@ bool ComputeKinematics(const PairedCondition& pair, const ProcessInfo& info,
   typename Kinematics::SlaveMatrix x1, n1;
   typename Kinematics::MasterMatrix x2;
   const Geometry& slave = pair.GetGeometry();
-  const Geometry& master = pair.GetPairedGeometry();
-  for (int j = 0; j < TNumNodes; ++j) {
-    x1.row(j) = slave[j].Coordinates().template head<TDim>().transpose();
+  MortarPairCoordinates<TDim, TNumNodes, TNumNodesMaster>(slave, pair.GetPairedGeometry(), x1, x2);
+  for (int j = 0; j < TNumNodes; ++j)
     n1.row(j) = NormalCalculationUtilities::GetNodalNormal(slave[j]).template head<TDim>().transpose();
-  }
-  for (int l = 0; l < TNumNodesMaster; ++l) x2.row(l) = master[l].Coordinates().template head<TDim>().transpose();
   return kinematics.ComputeValues(x1, x2, n1, pair.PairIntegrationSettings(info));
 }
 

@@ -9,6 +9,7 @@
 #include "core/utilities/error.h"
 #include "core/utilities/logger.h"
 #include "core/variables/variable_registry.h"
+#include "custom_utilities/mortar_pair_coordinates.h"
 #include "custom_utilities/mortar_pair_kinematics.h"
 #include "custom_utilities/nodal_normal_support.h"
 
@@ -89,11 +90,8 @@ bool AddPair(const Geometry& slave, const Geometry& master, const PairContext& c
   static thread_local Kinematics kinematics;  // large (derivative arrays); values only are used
   typename Kinematics::SlaveMatrix x1, n1;
   typename Kinematics::MasterMatrix x2;
-  for (int j = 0; j < TSlave; ++j) {
-    x1.row(j) = slave[j].Coordinates().template head<TDim>().transpose();
-    n1.row(j) = context.normals->Of(slave, j).template head<TDim>().transpose();
-  }
-  for (int l = 0; l < TMaster; ++l) x2.row(l) = master[l].Coordinates().template head<TDim>().transpose();
+  MortarPairCoordinates<TDim, TSlave, TMaster>(slave, master, x1, x2);
+  for (int j = 0; j < TSlave; ++j) n1.row(j) = context.normals->Of(slave, j).template head<TDim>().transpose();
   const Array3 normal = slave.UnitNormal(Array3::Zero());
   if (std::abs((master.Center() - slave.Center()).dot(normal)) > context.distance_threshold) return false;
   if (!kinematics.ComputeValues(x1, x2, n1, context.settings)) return false;
