@@ -408,10 +408,11 @@ bool PetscSolver::RaiseMumpsWorkspace() {
     if (it->first == key) given = it;
   }
   if (!mumps) return false;
-  // MUMPS' default is 20 %; each retry allows four times as much, up to 1280 %.
+  // MUMPS' default is 20 %; each retry allows four times as much, at most 1280 %.
+  constexpr int largest = 1280;
   const int percent = given == options_.petsc_options.end() ? 20 : std::atoi(given->second.c_str());
-  if (percent <= 0 || percent >= 1280) return false;
-  const std::string raised = std::to_string(percent * 4);
+  if (percent <= 0 || percent >= largest) return false;
+  const std::string raised = std::to_string(std::min(percent * 4, largest));
   if (given == options_.petsc_options.end())
     options_.petsc_options.emplace_back(key, raised);
   else
