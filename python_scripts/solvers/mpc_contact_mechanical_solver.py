@@ -32,8 +32,10 @@ class MPCContactMechanicalSolver(MechanicalSolver):
         super().__init__(model, settings, **kwargs)
         if self.explicit:
             raise _core.NotImplementedFeatureError(
-                f"{settings['time_integration_method'].Where()}: explicit MPC contact is not implemented; the MPC "
-                "contact solvers are static or implicit dynamic")
+                f"{settings['time_integration_method'].Where()}: \"explicit\" with mpc_contact_settings: explicit MPC "
+                "contact is not implemented (nor in Kratos); use \"implicit\" (scheme_type \"bossak\", \"newmark\") "
+                "for dynamic MPC contact, or contact_settings with explicit_penalty_contact_process for explicit "
+                "contact")
 
     def AddVariables(self) -> None:
         super().AddVariables()
@@ -51,7 +53,9 @@ class MPCContactMechanicalSolver(MechanicalSolver):
                 "loop to find the active set; use \"non_linear\"")
         if s["step_splitting"].size() > 0:
             raise _core.NotImplementedFeatureError(
-                f"{s.Where()}.step_splitting: step splitting is not implemented for MPC contact")
+                f"{s.Where()}.step_splitting: step splitting is not implemented with mpc_contact_settings; remove it "
+                "and give a smaller time_stepping.time_step, or use ALM contact (contact_settings, whose "
+                "adaptative_strategy, split_factor and max_number_splits split a step that does not converge)")
         builder = create_builder_and_solver(s, _core.CreateLinearSolver(s["linear_solver_settings"]))
         return _core.ResidualBasedNewtonRaphsonMPCContactStrategy(
             part, self._create_scheme(part), self._create_criteria(), builder, settings=s["mpc_contact_settings"],

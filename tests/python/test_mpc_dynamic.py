@@ -10,6 +10,7 @@ from __future__ import annotations
 import os
 
 import numpy as np
+import pytest
 
 import mortarcontact as mc
 from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
@@ -21,7 +22,7 @@ GAP, SPEED, DT, STEPS = 0.045, 1.0, 0.01, 20
 LAW = "LinearElasticPlaneStrain2DLaw"
 
 
-def _impact_case(folder: str, mpc: bool) -> str:
+def _impact_case(folder: str, mpc: bool, edit=None) -> str:
     """Base [0,1]x[0,1] (slave face on top), block [0.1,0.9]x[1+GAP, 2+GAP] moving down at SPEED (x held)."""
     c1, q1 = structured_quads(4, 2, 1.0, 1.0)
     c2, q2 = structured_quads(3, 2, 0.8, 1.0)
@@ -54,6 +55,8 @@ def _impact_case(folder: str, mpc: bool) -> str:
         "Parameters": {"model_part_name": "Structure", "assume_master_slave": {"0": ["base_top"]},
                        "contact_model_part": {"0": ["base_top", "block_bottom"]}, "contact_type": "Frictionless",
                        "search_parameters": {"active_check_factor": 0.01}}}]
+    if edit:
+        edit(params)
     mats = materials("Structure.base", LAW, 1e4, 0.3, DENSITY=1.0)
     mats["properties"].append({**materials("Structure.block", LAW, 1e4, 0.3, DENSITY=1.0)["properties"][0],
                                "properties_id": 2})
@@ -76,9 +79,9 @@ class _Recording(StructuralMechanicsAnalysis):
         self.active.append(sorted(n.Id for n in root.GetSubModelPart("base_top").Nodes if n.Is(mc.ACTIVE)))
 
 
-def _run(folder, mpc: bool) -> _Recording:
+def _run(folder, mpc: bool, edit=None) -> _Recording:
     folder.mkdir()
-    path = _impact_case(str(folder), mpc)
+    path = _impact_case(str(folder), mpc, edit)
     cwd = os.getcwd()
     os.chdir(folder)
     try:
@@ -116,3 +119,20 @@ def test_bossak_impact_mpc_against_alm(tmp_path):
     root = mpc.model.GetModelPart("Structure")
     velocity = [n.GetSolutionStepValue(mc.VELOCITY)[1] for n in root.GetSubModelPart("block").Nodes]
     assert min(velocity) > 0.0
+
+
+def test_what_mpc_dynamics_does_not_do(tmp_path):
+    """Explicit MPC contact and step splitting name the option and what to use instead."""
+    def explicit(params):
+        params["solver_settings"]["time_integration_method"] = "explicit"
+        params["solver_settings"]["scheme_type"] = "central_differences"
+
+    with pytest.raises(mc.NotImplementedFeatureError,
+                       match=r"time_integration_method: \"explicit\" with mpc_contact_settings.*use \"implicit\""):
+        _run(tmp_path / "explicit", True, explicit)
+
+    def split(params):
+        params["solver_settings"]["step_splitting"] = {"max_number_splits": 2}
+
+    with pytest.raises(mc.NotImplementedFeatureError, match=r"step_splitting: .*smaller time_stepping\.time_step"):
+        _run(tmp_path / "split", True, split)
