@@ -3,14 +3,24 @@ structural solver with the MPC contact strategy, whose contact constraints repla
 from __future__ import annotations
 
 from .. import _core
-from ..contact_processes.mpc_contact_process import mpc_formulation
+from ..contact_processes.mpc_contact_process import MESH_TYING, mpc_formulation
 from ..contact_strategies.strategy_factory import create_builder_and_solver
+from ..utilities import warn_about_keys_without_effect
 from .mechanical_solver import MechanicalSolver
 
 #: Keys accepted without effect (issue 18): (sub-block or "", key) -> why; warned by the solver settings'
 #: validation, whichever solver runs.
 KEYS_WITHOUT_EFFECT = {
     ("", "enforce_ntn"): "Kratos 10.4 accepts it without effect too (its node-to-node enforcement is disabled)",
+}
+
+_NO_ACTIVE_SET = "mesh tying (contact_type \"MeshTying\") has no active set: the relations are built once and the " \
+                 "Newton loop runs on them"
+#: Keys of mpc_contact_settings without effect with contact_type "MeshTying".
+MESH_TYING_KEYS_WITHOUT_EFFECT = {
+    ("", "simplified_semi_smooth_newton"): _NO_ACTIVE_SET,
+    ("", "inner_loop_iterations"): _NO_ACTIVE_SET,
+    ("", "update_each_nl_iteration"): "mesh tying ties the faces as they were meshed: the relations are built once",
 }
 
 
@@ -26,6 +36,8 @@ class MPCContactMechanicalSolver(MechanicalSolver):
     def __init__(self, model, settings, **kwargs):
         mpc = settings["mpc_contact_settings"]
         self.formulation = mpc_formulation(mpc["contact_type"], "the MPC contact solver")
+        if self.formulation.contact_type == MESH_TYING:
+            warn_about_keys_without_effect(mpc, mpc_contact_settings_defaults(), MESH_TYING_KEYS_WITHOUT_EFFECT)
         # The active set is decided from the reactions; the DoF numbering follows the constraints.
         for key in ("compute_reactions", "clear_storage", "reform_dofs_at_each_step"):
             settings[key].SetBool(True)

@@ -188,15 +188,17 @@ def test_shared_2d_case_tied(monkeypatch):
 
 def test_mesh_tying_input(monkeypatch, capfd):
     """A scalar variable is mesh_tying_process' (ScalarMeshTying); a tie whose process and solver disagree is
-    named; reaction_check_stiffness_factor, which releases contact nodes, warns that a tie is never
-    released."""
+    named; reaction_check_stiffness_factor (a tie is never released) and update_each_nl_iteration (the
+    relations are built once) warn that they have no effect."""
     monkeypatch.chdir(OWN_CASES)
     params = read_project_parameters(os.path.join(OWN_CASES, f"{CASE}_parameters.json"))
     params["processes"]["contact_process_list"][0]["Parameters"].AddValue(
         "reaction_check_stiffness_factor", mc.Parameters("1.0"))
+    params["solver_settings"]["mpc_contact_settings"].AddValue("update_each_nl_iteration", mc.Parameters("true"))
     capfd.readouterr()
     StructuralMechanicsAnalysis(mc.Model(), params, progress=False).Run()
-    assert "key 'reaction_check_stiffness_factor' = 1.0" in capfd.readouterr().err
+    log = capfd.readouterr().err
+    assert "key 'reaction_check_stiffness_factor' = 1.0" in log and "key 'update_each_nl_iteration' = true" in log
     params = read_project_parameters(os.path.join(OWN_CASES, f"{CASE}_parameters.json"))
     params["processes"]["contact_process_list"][0]["Parameters"].AddValue(
         "variable_name", mc.Parameters('"TEMPERATURE"'))
