@@ -14,8 +14,8 @@ KEYS_WITHOUT_EFFECT = {
     ("", "enforce_ntn"): "Kratos 10.4 accepts it without effect too (its node-to-node enforcement is disabled)",
 }
 
-_NO_ACTIVE_SET = "mesh tying (contact_type \"MeshTying\") has no active set: the relations are built once and the " \
-                 "Newton loop runs on them"
+_NO_ACTIVE_SET = ("mesh tying (contact_type \"MeshTying\") has no active set: the relations are built once and "
+                  "the Newton loop runs on them")
 #: Keys of mpc_contact_settings without effect with contact_type "MeshTying".
 MESH_TYING_KEYS_WITHOUT_EFFECT = {
     ("", "simplified_semi_smooth_newton"): _NO_ACTIVE_SET,

@@ -334,8 +334,10 @@ def _cantilever(folder, name, tied, length=10.0, height=1.0, load=-10.0, mpc=Fal
     return np.mean([u[1] for u in _cantilever_run(folder, name, tied, length, height, load, mpc)[1]])
 
 
-def _cantilever_run(folder, name, tied, length=10.0, height=1.0, load=-10.0, mpc=False):
-    """_cantilever's analysis and the displacements of its tip nodes."""
+def _cantilever_run(folder, name, tied, length=10.0, height=1.0, load=-10.0, mpc=False, dynamic=None,
+                    analysis_class=None):
+    """_cantilever's analysis and the displacements of its tip nodes; dynamic: (time step, end time) of an
+    implicit Bossak run (DENSITY 1), the load applied suddenly."""
     halves = [(40, 8, 0.0), (40, 10, length / 2)] if tied else [(80, 10, 0.0)]
     coords, quads, owners = [], [], []
     for k, (nx, ny, x0) in enumerate(halves):
@@ -362,12 +364,19 @@ def _cantilever_run(folder, name, tied, length=10.0, height=1.0, load=-10.0, mpc
     cb.write_mdpa(os.path.join(folder, f"{name}.mdpa"), coords, {"SmallDisplacementElement2D4N": quads},
                   {"LineLoadCondition2D2N": lines}, parts)
     solver = _tying_solver(mpc) if tied else {"convergence_criterion": "residual_criterion"}
-    params = cb.project_parameters(name, 2, solver=solver, **processes)
+    extra = {}
+    if dynamic:
+        # |r| stalls near 1e-10 at some steps (round-off of a dynamic residual): the absolute tolerance is above
+        solver.update({"solver_type": "Dynamic", "time_integration_method": "implicit", "scheme_type": "bossak",
+                       "residual_absolute_tolerance": 1e-9})
+        extra = {"time_step": dynamic[0], "end_time": dynamic[1]}
+    params = cb.project_parameters(name, 2, solver=solver, **processes, **extra)
     if tied:
         params["processes"]["contact_process_list"] = [_tying_process("Left", mpc)]
+    density = {"DENSITY": 1.0} if dynamic else {}
     path = cb.write_case(folder, name, params, cb.materials("Structure", "LinearElasticPlaneStress2DLaw", E, NU,
-                                                            THICKNESS=1.0))
-    analysis = cb.run_analysis(folder, path)
+                                                            THICKNESS=1.0, **density))
+    analysis = cb.run_analysis(folder, path, analysis_class)
     root = analysis.model["Structure"]
     return analysis, [np.asarray(root.GetNode(int(i)).GetSolutionStepValue(mc.DISPLACEMENT)) for i in end]
 

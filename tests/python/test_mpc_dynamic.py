@@ -41,11 +41,14 @@ def _impact_case(folder: str, mpc: bool, edit=None) -> str:
                    fix_process("Structure.block", [0.0, None, None], (True, False, False)),
                    fix_process("Structure.block", [None, -SPEED, None], (False, False, False), variable="VELOCITY",
                                interval=(0.0, 0.0))]
-    contact = {"mpc_contact_settings": {"contact_type": "Frictionless"}, "convergence_criterion": "residual_criterion"} \
-        if mpc else {"contact_settings": {"mortar_type": "ALMContactFrictionless",
-                                          "contact_residual_relative_tolerance": 1e-10,
-                                          "contact_residual_absolute_tolerance": 1e-14},
-                     "convergence_criterion": "contact_residual_criterion"}
+    if mpc:
+        contact = {"mpc_contact_settings": {"contact_type": "Frictionless"},
+                   "convergence_criterion": "residual_criterion"}
+    else:
+        contact = {"contact_settings": {"mortar_type": "ALMContactFrictionless",
+                                        "contact_residual_relative_tolerance": 1e-10,
+                                        "contact_residual_absolute_tolerance": 1e-14},
+                   "convergence_criterion": "contact_residual_criterion"}
     params = project_parameters("impact", 2, constraints=constraints, end_time=STEPS * DT, time_step=DT, solver={
         "solver_type": "Dynamic", "time_integration_method": "implicit", "scheme_type": "bossak",
         "residual_relative_tolerance": 1e-8, "residual_absolute_tolerance": 1e-12, "max_iteration": 30, **contact})

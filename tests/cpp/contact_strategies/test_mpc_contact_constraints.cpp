@@ -111,7 +111,8 @@ TEST(MPCContactConstraints, MeshTyingTiesEveryFreeComponent) {
   const auto s = [&](const Node& node) { return node.X0().dot(tangent); };
   const Array3 a(0.03, -0.07, 0.0), b(0.011, 0.005, 0.0);
   for (IndexType id : {11, 12})
-    for (int c = 0; c < 2; ++c) SetDofValue(pair.root.GetNode(id).GetDof(*kU[c]), a[c] + b[c] * s(pair.root.GetNode(id)));
+    for (int c = 0; c < 2; ++c)
+      SetDofValue(pair.root.GetNode(id).GetDof(*kU[c]), a[c] + b[c] * s(pair.root.GetNode(id)));
   for (const auto& [node, relation] : constraints.Relations()) {
     EXPECT_EQ(relation->Constant(), 0.0);
     EXPECT_FALSE(relation->Slave().fixed);
