@@ -113,6 +113,27 @@ void MPCContactConstraints::Relate() {
   }
 }
 
+void MPCContactConstraints::RelateAllComponents() {
+  relations_.clear();
+  for (auto& [node, row] : rows_) {
+    if (!(row.d > 0.0)) continue;
+    for (int c = 0; c < dimension_; ++c) {
+      Dof& slave = node->GetDof(*kDisplacement[c]);
+      if (slave.fixed) continue;
+      std::vector<Dof*> masters;
+      std::vector<double> weights;
+      for (const auto& [master, m] : row.m) {
+        const double p = m / row.d;
+        if (p == 0.0) continue;
+        masters.push_back(&master->GetDof(*kDisplacement[c]));
+        weights.push_back(p);
+      }
+      relations_.emplace_back(node, std::make_shared<MasterSlaveConstraint>(node->Id(), slave, std::move(masters),
+                                                                            std::move(weights), 0.0));
+    }
+  }
+}
+
 void MPCContactConstraints::Apply(BuilderAndSolver& builder) {
   std::vector<const MasterSlaveConstraint*> active;
   for (const auto& [node, relation] : relations_)
@@ -129,7 +150,9 @@ std::vector<std::shared_ptr<const MasterSlaveConstraint>> MPCContactConstraints:
   std::vector<std::pair<Node*, std::shared_ptr<MasterSlaveConstraint>>> active;
   for (const auto& [node, relation] : relations_)
     if (node->Is(ACTIVE)) active.emplace_back(node, relation);
-  std::sort(active.begin(), active.end(), [](const auto& a, const auto& b) { return a.first->Id() < b.first->Id(); });
+  // Stable: a node's relations (one per component in mesh tying) keep their component order.
+  std::stable_sort(active.begin(), active.end(),
+                   [](const auto& a, const auto& b) { return a.first->Id() < b.first->Id(); });
   const auto where = [&](std::size_t i) {
     return Concat("MPC contact: slave node ", active[i].first->Id(), ", ", active[i].second->Slave().variable->Name());
   };

@@ -37,6 +37,14 @@ class MPCContactConstraints {
   /// The relation of every slave node an overlap reaches, from the last Measure, at the current
   /// displacements.
   void Relate();
+  /// Mesh tying (mpc_contact_process contact_type "MeshTying"), instead of Relate: one relation per free
+  /// displacement component c of every slave node an overlap reaches, tying it to the same component of
+  /// the mortar projection of the master, in total displacements,
+  ///   u_jc = sum_i P_ji u_ic,
+  /// with P measured at the configuration of the last Measure (the initial one when the strategy ties at
+  /// the first step): the faces are glued as they were meshed, any gap or offset between them kept (as
+  /// Kratos 10.4 does). A fixed component is held by its support and gets no relation.
+  void RelateAllComponents();
   /// Hands the relations of the ACTIVE slave nodes to `builder` (replacing the earlier ones), with the
   /// dependent ties resolved (see TiedRelations).
   void Apply(BuilderAndSolver& builder);
@@ -58,7 +66,8 @@ class MPCContactConstraints {
 
   /// Nodal gap g_j = WEIGHTED_GAP / NODAL_MAUX of the last Measure (0 for a node no pair reaches).
   double NodalGap(const Node& node) const;
-  /// (slave node, its relation) of the last Relate.
+  /// (slave node, its relation) of the last Relate (a node has one per component after
+  /// RelateAllComponents).
   const std::vector<std::pair<Node*, std::shared_ptr<MasterSlaveConstraint>>>& Relations() const noexcept {
     return relations_;
   }

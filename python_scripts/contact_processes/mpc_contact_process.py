@@ -2,7 +2,9 @@
 searches are those of the other contact processes; the pairs are ``MPCMortarContactCondition<geometry>``,
 which add nothing to the system: the MPC strategy ties each active slave node's normal displacement to
 the mortar projection of the master (D^-1 M) with a master-slave constraint, and releases it when its
-reaction pulls (``reaction_check_stiffness_factor``)."""
+reaction pulls (``reaction_check_stiffness_factor``). With ``contact_type`` "MeshTying" every
+displacement component of every slave node is tied from the first step, for good (mesh tying by
+constraints, the multiplier-free counterpart of mesh_tying_process' ComponentsMeshTying)."""
 from __future__ import annotations
 
 import math
@@ -33,18 +35,20 @@ KEYS_WITHOUT_EFFECT = {
                                             "mpc_contact_settings.update_each_nl_iteration)",
 }
 
+#: Keys without effect with contact_type "MeshTying" only.
+MESH_TYING_KEYS_WITHOUT_EFFECT = {
+    ("", "reaction_check_stiffness_factor"): "mesh tying has no active set: a tie is never released (Kratos 10.4 "
+                                             "releases a tie that pulls, a defect)",
+}
+
 
 def mpc_formulation(contact_type, where: str):
-    """The formulation of an MPC ``contact_type`` (a Parameters string): Frictionless, or Frictional
-    with Kratos' suffixes (PureSlip, WithNormalUpdate), which is not implemented yet; MeshTying
-    (Kratos' tying by constraints) is not either."""
+    """The formulation of an MPC ``contact_type`` (a Parameters string): Frictionless, MeshTying (every
+    displacement component tied, root flag RIGID), or Frictional with Kratos' suffixes (PureSlip,
+    WithNormalUpdate), which is not implemented yet."""
     name = contact_type.GetString()
     base = name[:-len(NORMAL_UPDATE)] if name.endswith(NORMAL_UPDATE) else name
     base = base[:-len(PURE_SLIP)] if base.endswith(PURE_SLIP) else base
-    if base == MESH_TYING:
-        raise _core.NotImplementedFeatureError(
-            f"{contact_type.Where()}: '{name}' (mesh tying by multipoint constraints) is not implemented; "
-            "mesh_tying_process ties meshes with dual mortar multipliers")
     return _core.ContactFormulation.OfProcess("mpc_contact_process", base, f"{where}: {contact_type.Where()} '{name}'")
 
 
@@ -71,6 +75,14 @@ class MPCContactProcess(SearchBaseProcess):
         })
         return _settings.to_parameters(common)
 
+    def __init__(self, model, settings=None):
+        if settings is not None and settings.Has("variable_name"):
+            raise _core.NotImplementedFeatureError(
+                f"{settings['variable_name'].Where()}: mpc_contact_process ties the displacements only (contact_type "
+                "\"MeshTying\" ties every component); a nodal scalar is tied by mesh_tying_process (its "
+                "variable_name, solver_settings.contact_settings.mortar_type \"ScalarMeshTying\")")
+        super().__init__(model, settings)
+
     def _check_types(self) -> None:
         s = self.settings
         self.formulation = mpc_formulation(s["contact_type"], self.python_module)
@@ -90,6 +102,8 @@ class MPCContactProcess(SearchBaseProcess):
             raise _core.InputError(f"{s['tangent_factor'].Where()}: must be a positive number, "
                                    f"got {s['tangent_factor'].GetDouble()!r}")
         warn_about_keys_without_effect(s, self.GetDefaultParameters(), KEYS_WITHOUT_EFFECT)
+        if self.formulation.contact_type == MESH_TYING:
+            warn_about_keys_without_effect(s, self.GetDefaultParameters(), MESH_TYING_KEYS_WITHOUT_EFFECT)
 
     def check_solver_variables(self) -> None:
         """The solver must be the MPC contact solver (solver_settings.mpc_contact_settings)."""
@@ -108,6 +122,8 @@ class MPCContactProcess(SearchBaseProcess):
         for part in (self.root, self.root.GetSubModelPart("Contact"), self.root.GetSubModelPart("ComputingContact")):
             part.Set(_core.CONTACT, True)
             part.Set(_core.SLIP, False)
+        # As Kratos: the root flag RIGID makes the MPC strategy tie every component, with no active set.
+        self.root.Set(_core.RIGID, self.formulation.contact_type == MESH_TYING)
 
     def ExecuteFinalizeSolutionStep(self) -> None:
         """Nothing: CONTACT_FORCE and NORMAL_CONTACT_STRESS are written by the MPC strategy's active-set
