@@ -15,6 +15,7 @@ nodes touch and stick.
   (|r_u|^2 ratios 8.1e-4, 4.1e-4, 7.6e-5, 5.6e-7; FrictionalMortarContactCondition)."""
 from __future__ import annotations
 
+import itertools
 import os
 
 import numpy as np
@@ -173,6 +174,6 @@ def test_first_contact_stick_steps_converge_quadratically(normal_variation):
         assert ratios[1] < 1e-3 and ratios[2] < 1e-16
         if normal_variation == "nodal_elemental_derivatives":
             # The increments too: e_k+1 <= 10 e_k^2 while above round-off (step 3: 2.2e-4, 2.5e-9).
-            for previous, current in zip(increments[1:], increments[2:]):
+            for previous, current in itertools.pairwise(increments[1:]):
                 if current > 1e-13:
                     assert current < 10.0 * previous**2
