@@ -19,6 +19,10 @@ namespace {
 
 const Variable<double>* const kDisplacement[3] = {&DISPLACEMENT_X, &DISPLACEMENT_Y, &DISPLACEMENT_Z};
 
+// The triangle rule of this order (6 points) is exact to degree 4: dual basis times master shape
+// function of flat quadrilaterals (IntegratesQuadrilateralsExactly).
+constexpr int kExactQuadrilateralOrder = 3;
+
 // The kinematics object holds the derivative arrays (a few kB): one per thread, reused by
 // every pair of that thread.
 template <class TKinematics>
@@ -102,6 +106,9 @@ MortarIntegrationSettings MortarContactCondition<TDim, TNumNodes, TNumNodesMaste
   if (HasProperties() && GetProperties().Has(CONSIDER_TESSELLATION))
     settings.consider_tessellation = GetProperties().GetValue(CONSIDER_TESSELLATION);
   settings.axisymmetric = IsAxisymmetric();
+  if constexpr (TDim == 3 && (TNumNodes == 4 || TNumNodesMaster == 4))
+    if (IntegratesQuadrilateralsExactly())
+      settings.integration_order = std::max(settings.integration_order, kExactQuadrilateralOrder);
   const double time = info.GetValue(TIME);
   if (fan_history_.time != time) fan_history_ = MortarFanHistory{time, HoldsFanStart()};
   settings.fan_history = &fan_history_;

@@ -86,6 +86,10 @@ class MortarContactCondition : public PairedCondition {
   /// Whether the 3D fan start of the step's first evaluation is kept through the step
   /// (MortarFanHistory::hold) rather than following Kratos' rule.
   virtual bool HoldsFanStart() const { return false; }
+  /// Whether the overlap of a 3D pair with a quadrilateral is integrated at least with the
+  /// degree-4 triangle rule (order 3), exact for the bilinear integrands of flat quadrilaterals,
+  /// whatever INTEGRATION_ORDER_CONTACT asks (see FrictionalMortarContactCondition).
+  virtual bool IntegratesQuadrilateralsExactly() const { return false; }
   /// Integration settings of the pair (properties, ProcessInfo, IsAxisymmetric()).
   MortarIntegrationSettings IntegrationSettings(const ProcessInfo& info) const;
   /// Current slave / master coordinates.

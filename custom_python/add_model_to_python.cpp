@@ -594,6 +594,15 @@ void AddModelToPython(py::module_& m) {
           },
           py::arg("process_info"),
           "(LHS, RHS): LHS = d(residual)/d(unknowns), RHS = external - internal forces, in GetDofList order.")
+      .def(
+          "GetDofList",
+          [](const Entity& e, const ProcessInfo& info) {
+            DofsVectorType dofs;
+            e.GetDofList(dofs, info);
+            return dofs;
+          },
+          py::arg("process_info"), py::return_value_policy::reference,
+          "Its Dofs in the order of CalculateLocalSystem's rows (e.g. to assemble a tangent by hand).")
       .def("__repr__", [](const Entity& e) { return Concat("<", e.Info(), " ", e.Id(), ">"); });
   BindFlags(BindValues(entity));
   py::class_<Element, Entity>(m, "Element", "A finite element of the domain, created by its registered name.");

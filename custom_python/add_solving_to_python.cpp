@@ -181,6 +181,9 @@ void AddSolvingToPython(py::module_& m) {
           "At the start of a step (DoF set-up on the first one).")
       .def(
           "Predict", [](SolvingStrategy& s) { WithoutGil([&] { s.Predict(); }); }, "First guess of the step.")
+      .def("MoveMesh", &SolvingStrategy::MoveMesh,
+           "Sets every node's coordinates to X0 + DISPLACEMENT, as after each Newton update (e.g. after setting "
+           "DISPLACEMENT by hand).")
       .def(
           "SolveSolutionStep", [](SolvingStrategy& s) { return WithoutGil([&] { return s.SolveSolutionStep(); }); },
           "Solves the step; False when it did not converge (the model keeps the last iterate).")

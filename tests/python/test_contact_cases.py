@@ -272,15 +272,23 @@ def tangential_tractions(analysis) -> list[tuple[int, np.ndarray, np.ndarray]]:
     return rows
 
 
+#: The friction block's first step: 25 nodes turn from stick to slip at its first iteration, and the
+#: system of the second is singular across the slip direction of the nodes at the Coulomb limit
+#: (slip_augmentation_coefficient 0, issue 12); round-off decides how far that step goes. With the
+#: overlaps of the frictional pairs integrated exactly (degree 4) it goes to |r_u|^2 ratio 1.2e14 and
+#: the step takes 7 iterations; at the degree-2 rule it took 4 (every later step the same).
+FIRST_STEP_ITERATIONS = 7
+
+
 def test_friction_block(csma_cases, monkeypatch):
-    """The 3D friction block up to its first check: every step converges in at most 4 Newton
-    iterations (Kratos 10.4: 3 to 5), every slave node slides, and its tangential multiplier is at
-    the Coulomb limit mu |lbar_n| to 1e-5 and opposes the sliding."""
+    """The 3D friction block up to its first check: every step after the first converges in at most 4
+    Newton iterations (Kratos 10.4: 3 to 5), every slave node slides, and its tangential multiplier
+    is at the Coulomb limit mu |lbar_n| to 1e-5 and opposes the sliding."""
     monkeypatch.chdir(csma_cases)
     analysis = friction_block(0.1)
     iterations = [it for _, _, it, _, _ in analysis.step_log]
     assert len(iterations) == 20 and all(converged for _, _, _, converged, _ in analysis.step_log)
-    assert max(iterations) <= 4
+    assert iterations[0] <= FIRST_STEP_ITERATIONS and max(iterations[1:]) <= 4
     part = analysis.model["Structure"]
     k = part.ProcessInfo.GetValue(mc.GetVariable("SCALE_FACTOR"))
     slave = [n for n in part.Nodes if n.Is(mc.SLAVE)]
@@ -297,14 +305,15 @@ def test_friction_block(csma_cases, monkeypatch):
 @pytest.mark.slow
 def test_friction_block_whole_run(csma_cases, monkeypatch):
     """The whole friction block (to t = 1.405, where the block climbs the lower one's ramp):
-    every step converges in at most 5 iterations (1004 in all). Before the fan start of the
-    mortar segmentation was held through a step, t = 1.125 and 1.13 took 10 (the limit) and did
-    not converge: Newton cycled through three iterates with fixed active and slip sets."""
+    every step after the first converges in at most 5 iterations (1007 in all, 1004 at the degree-2
+    rule: FIRST_STEP_ITERATIONS). Before the fan start of the mortar segmentation was held through
+    a step, t = 1.125 and 1.13 took 10 (the limit) and did not converge: Newton cycled through
+    three iterates with fixed active and slip sets."""
     monkeypatch.chdir(csma_cases)
     analysis = friction_block(1.405)
     iterations = [it for _, _, it, _, _ in analysis.step_log]
     assert len(iterations) >= 281 and all(converged for _, _, _, converged, _ in analysis.step_log)
-    assert max(iterations) <= 5
+    assert iterations[0] <= FIRST_STEP_ITERATIONS and max(iterations[1:]) <= 5
 
 
 @pytest.mark.parametrize("friction, most", [(0.0, 6), (0.01, 5)])
