@@ -52,8 +52,9 @@ struct ContactSearchSlot {
 ///  3. `*_with_obb`: drop masters whose oriented box (grown by bounding_box_factor * L) does not
 ///     meet s's (separating-axis test) — removes far-but-in-radius faces;
 ///  4. check_gap: `mapping_check` (default, also "check_mapping") keeps m when its projection
-///     on s's plane overlaps or touches s; `direct_check` projects s on m's plane; `no_check` keeps all;
-///     with consider_gap_threshold, masters farther than DISTANCE_THRESHOLD are dropped.
+///     on s's plane overlaps s, or comes within 0.1 L_s of it when some master overlaps s (it may
+///     slide onto m within the step); `direct_check` projects s on m's plane; `no_check` keeps
+///     all; with consider_gap_threshold, masters farther than DISTANCE_THRESHOLD are dropped.
 /// Then slave nodes without any pair are flagged ISOLATED (and inactive), and at every search
 /// (every step) a slave node is predicted ACTIVE when its normal gap (along its nodal normal to
 /// a paired master, stored in NORMAL_GAP; when the normal misses every paired master, to the
