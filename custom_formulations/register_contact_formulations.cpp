@@ -170,7 +170,6 @@ void RegisterAll() {
       .enforcement = "MPC",
       .variables = {"WEIGHTED_GAP"},
       .active_set_criterion = mpc_criterion,
-      .not_implemented = "frictional multipoint-constraint contact: stick and slip relations",
   });
 
   // As in Kratos, the condensing solver wraps the solver of linear_solver_settings and is chosen

@@ -37,6 +37,9 @@ struct MPCContactStrategySettings {
 /// earlier iteration (not the previous one), the union of the sets of the cycle is held active for the
 /// rest of the step (a held node may carry a small pull).
 ///
+/// Frictional (contact_type Frictional), a sticking node is tied in every component and a slipping one
+/// in the normal, with its Coulomb force in the system (see MPCContactCriteria for the switch).
+///
 /// Kratos checks the reactions twice per iteration (the strategy's own MPCContactCriteria, and a second
 /// one the Python solver puts in an AndCriteria with the mechanical criterion): a defect, the second
 /// check only repeats the first. Here the strategy owns the one MPCContactCriteria, and the criterion it
@@ -75,6 +78,9 @@ class ResidualBasedNewtonRaphsonMPCContactStrategy : public NewtonRaphsonStrateg
   /// constraints transmit), the operators measured again, and the criterion's update of the active set;
   /// true when no node changed.
   bool UpdateActiveSet();
+  /// The relations of the current set to the builder, and frictional, the Coulomb force of the
+  /// slipping nodes (MPCContactConstraints::CoulombTerms) with the directions of the last update.
+  void ApplyConstraints();
   /// After a change of the set in full semi-smooth Newton: the cycle guard (see the class comment); true
   /// while the held set stands in for the criterion's.
   bool HoldCycle();
