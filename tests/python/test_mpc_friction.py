@@ -9,7 +9,8 @@ Frictional, Coulomb, 2D).
   round-off (the Coulomb force is in the system with its exact tangent);
 - the shared 2D frictional MPC case: the right state is stick (the interface needs 3e-5 of the normal
   force tangentially, mu = 0.1); ours passes the reference file to 1e-3. Kratos 10.4 ties every
-  component without closing the 0.001 gap, 0.5 % from that reference.
+  component without closing the 0.001 gap, 0.5 % from that reference;
+- Cattaneo-Mindlin in 2D against ALM frictional on the same mesh (about 12 s for both runs).
 """
 from __future__ import annotations
 
@@ -155,13 +156,16 @@ def test_pure_slip_and_3d_are_not_implemented(csma_cases, monkeypatch):
 
 
 class _MPCPartialSlip(StructuralMechanicsAnalysis):
-    """Records, after each step, what cattaneo_mindlin.evaluate_step reads; the traction of an MPC node is
-    its CONTACT_FORCE over its share of the overlap (NODAL_MAUX), as the ALM multiplier is a traction."""
+    """Records, after each step, what cattaneo_mindlin.evaluate_step reads. The traction of an MPC node is
+    its CONTACT_FORCE over its share of the overlap (NODAL_MAUX, also its area), as the ALM multiplier is
+    a traction; its normal is that of its relation, built at the step's start: the previous step's last
+    NORMAL (measured at the converged coordinates the next step starts from)."""
 
     def __init__(self, model, params, symmetry: int):
         super().__init__(model, params, progress=False)
         self.symmetry = symmetry
         self.steps = []
+        self.start_normals = None
 
     def FinalizeSolutionStep(self):
         super().FinalizeSolutionStep()
@@ -176,21 +180,24 @@ class _MPCPartialSlip(StructuralMechanicsAnalysis):
             + np.array([n.GetSolutionStepValue(V("DISPLACEMENT")) for n in slave]),
             "active": np.array([n.Is(mc.ACTIVE) for n in slave]),
             "slip": np.array([n.Is(mc.SLIP) for n in slave]),
-            "area": np.array([n.GetValue(V("NODAL_AREA")) for n in slave]),
-            "normal": np.array([n.GetSolutionStepValue(V("NORMAL")) for n in slave]),
+            "area": share,
+            "normal": self.start_normals,
             "traction": np.divide(force, share[:, None], out=np.zeros_like(force), where=share[:, None] > 0),
         }
+        self.start_normals = np.array([n.GetSolutionStepValue(V("NORMAL")) for n in slave])
+        if nodes["normal"] is None:
+            nodes["normal"] = self.start_normals
         self.steps.append({"time": part.GetProcessInfo().GetValue(V("TIME")),
                            "iterations": len(self.solver.LastIterationHistory()),
                            "force": -self.symmetry * reaction, "nodes": nodes})
 
 
-@pytest.mark.slow
 @pytest.mark.skipif(importlib.util.find_spec("gmsh") is None, reason="gmsh is not installed")
 def test_cattaneo_mindlin_2d_against_alm(tmp_path):
     """The 2D Cattaneo-Mindlin run (hertz2d_8k pressed, then shifted) with frictional MPC against ALM
-    frictional on the same mesh: the stick-zone size and the tangential tractions of both against the
-    closed form, and the Newton iterations per step of both."""
+    frictional on the same mesh. Measured: the stick zone c/a is ALM's at every shift step (0.937 ...
+    0.346, closed form 0.940 ... 0.359), the tangential tractions are as close to the closed form (rms
+    0.036-0.043 mu p0 for both), in 3 Newton iterations per shift step (ALM: 3, and 4 at the last)."""
     from test_cattaneo_mindlin import run as run_alm
 
     from mortarcontact.cases import cattaneo_mindlin as cm
@@ -219,7 +226,10 @@ def test_cattaneo_mindlin_2d_against_alm(tmp_path):
     assert len(ours) == len(alm)
     for mine, theirs in zip(ours, alm):
         assert mine["load_ratio"] == pytest.approx(theirs["load_ratio"], abs=0.02)
-        assert mine["slip_rule_error"] < 1e-8
-        assert abs(mine["c_error"]) < 0.05
-        assert abs(mine["c"] - theirs["c"]) < 0.05 * theirs["a"]
-        assert mine["traction_error_rms"] < 0.1
+        # Coulomb holds in the relation's normal up to the Newton tolerance (measured: 1.2e-8 p0 at most)
+        assert mine["slip_rule_error"] < 1e-6
+        assert abs(mine["c_error"]) < 0.03
+        assert abs(mine["c"] - theirs["c"]) < 0.01 * theirs["a"]
+        assert mine["traction_error_rms"] < 0.05
+        assert abs(mine["traction_error_rms"] - theirs["traction_error_rms"]) < 0.005
+        assert mine["iterations"] <= theirs["iterations"]
