@@ -171,6 +171,16 @@ void RegisterAll() {
       .variables = {"WEIGHTED_GAP"},
       .active_set_criterion = mpc_criterion,
   });
+  // Mesh tying by constraints (spec 4.7, contact_type "MeshTying"; the process sets the root flag RIGID):
+  // every displacement component of the slave nodes tied, no active set.
+  ContactFormulation::Register(D{
+      .mortar_type = "MPCMeshTying",
+      .process = "mpc_contact_process",
+      .contact_type = "MeshTying",
+      .enforcement = "MPC",
+      .variables = {"WEIGHTED_GAP"},
+      .active_set_criterion = mpc_criterion,
+  });
 
   // As in Kratos, the condensing solver wraps the solver of linear_solver_settings and is chosen
   // by contact_settings.mixed_ulm_solver_parameters; as a linear solver of its own it has nothing

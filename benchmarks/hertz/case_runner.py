@@ -217,6 +217,7 @@ def run_mortarcontact(parameters_path: str, dim: int, record: dict, linear_solve
                                            case_dir=os.path.dirname(parameters_path))
     analysis.Initialize()
     record["setup_seconds"] = time.perf_counter() - started
+    record["setup_rss_mb"] = _peak_rss_mb()  # imports, plugins, the model read, processes set up
     analysis.RunSolutionLoop()
     builder = analysis.solver.strategy.GetBuilderAndSolver()
     record["dofs"] = builder.NumberOfDofs()  # Finalize frees them

@@ -172,6 +172,12 @@ void MPCContactConstraints::RelateStick(Node* node, const SlaveRow& row, const A
     now -= m / row.d * master->FastGetSolutionStepValue(DISPLACEMENT);
   }
   const Array3 constant = start - normal.dot(start) * normal + (gap + normal.dot(now)) * normal;
+  TieEveryComponent(node, row, constant, stick_relations_);
+}
+
+void MPCContactConstraints::TieEveryComponent(
+    Node* node, const SlaveRow& row, const Array3& constant,
+    std::vector<std::pair<Node*, std::shared_ptr<MasterSlaveConstraint>>>& out) const {
   for (int c = 0; c < dimension_; ++c) {
     Dof& slave = node->GetDof(*kDisplacement[c]);
     if (slave.fixed) continue;  // the support holds this component
@@ -182,8 +188,8 @@ void MPCContactConstraints::RelateStick(Node* node, const SlaveRow& row, const A
       masters.push_back(&master->GetDof(*kDisplacement[c]));
       weights.push_back(m / row.d);
     }
-    stick_relations_.emplace_back(node, std::make_shared<MasterSlaveConstraint>(node->Id(), slave, std::move(masters),
-                                                                                std::move(weights), constant[c]));
+    out.emplace_back(node, std::make_shared<MasterSlaveConstraint>(node->Id(), slave, std::move(masters),
+                                                                   std::move(weights), constant[c]));
   }
 }
 
@@ -195,6 +201,15 @@ std::vector<std::pair<Node*, std::shared_ptr<MasterSlaveConstraint>>> MPCContact
   for (const auto& entry : stick_relations_)
     if (entry.first->Is(ACTIVE) && sticks(entry.first)) active.push_back(entry);
   return active;
+}
+
+void MPCContactConstraints::RelateAllComponents() {
+  relations_.clear();
+  relation_normals_.clear();
+  related_rows_.clear();
+  stick_relations_.clear();
+  for (auto& [node, row] : rows_)
+    if (row.d > 0.0) TieEveryComponent(node, row, Array3::Zero(), relations_);
 }
 
 void MPCContactConstraints::Apply(BuilderAndSolver& builder) {
@@ -210,6 +225,8 @@ void MPCContactConstraints::Apply(BuilderAndSolver& builder) {
 
 std::vector<std::shared_ptr<const MasterSlaveConstraint>> MPCContactConstraints::TiedRelations() const {
   auto active = ActiveRelations();
+  // Stable: a node's relations (one per component in mesh tying or while it sticks) keep their
+  // component order.
   std::stable_sort(active.begin(), active.end(),
                    [](const auto& a, const auto& b) { return a.first->Id() < b.first->Id(); });
   const auto where = [&](std::size_t i) {

@@ -46,6 +46,14 @@ class MPCContactConstraints {
   /// The relation of every slave node an overlap reaches, from the last Measure, at the current
   /// displacements.
   void Relate();
+  /// Mesh tying (mpc_contact_process contact_type "MeshTying"), instead of Relate: one relation per free
+  /// displacement component c of every slave node an overlap reaches, tying it to the same component of
+  /// the mortar projection of the master, in total displacements,
+  ///   u_jc = sum_i P_ji u_ic,
+  /// with P measured at the configuration of the last Measure (the initial one when the strategy ties at
+  /// the first step): the faces are glued as they were meshed, any gap or offset between them kept (as
+  /// Kratos 10.4 does). A fixed component is held by its support and gets no relation.
+  void RelateAllComponents();
   /// Hands the relations of the ACTIVE slave nodes (frictional: a sticking node's per-component ones) to
   /// `builder` (replacing the earlier ones), with the
   /// dependent ties resolved (see TiedRelations).
@@ -90,7 +98,8 @@ class MPCContactConstraints {
 
   /// Nodal gap g_j = WEIGHTED_GAP / NODAL_MAUX of the last Measure (0 for a node no pair reaches).
   double NodalGap(const Node& node) const;
-  /// (slave node, its relation) of the last Relate.
+  /// (slave node, its relation) of the last Relate (a node has one per component after
+  /// RelateAllComponents).
   const std::vector<std::pair<Node*, std::shared_ptr<MasterSlaveConstraint>>>& Relations() const noexcept {
     return relations_;
   }
@@ -104,6 +113,10 @@ class MPCContactConstraints {
 
   /// The per-component relations of a sticking node (frictional).
   void RelateStick(Node* node, const SlaveRow& row, const Array3& normal, double gap);
+  /// Appends to `out` one relation per free displacement component c of `node`,
+  /// u_jc = sum_i P_ji u_ic + constant_c (a sticking node's tie and mesh tying's).
+  void TieEveryComponent(Node* node, const SlaveRow& row, const Array3& constant,
+                         std::vector<std::pair<Node*, std::shared_ptr<MasterSlaveConstraint>>>& out) const;
   /// (slave node, relation) of the ACTIVE nodes: the normal relation, or a sticking node's per-component
   /// ones (frictional).
   std::vector<std::pair<Node*, std::shared_ptr<MasterSlaveConstraint>>> ActiveRelations() const;

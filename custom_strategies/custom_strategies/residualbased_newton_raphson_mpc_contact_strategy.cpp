@@ -5,6 +5,8 @@
 #include "core/utilities/logger.h"
 #include "core/variables/kernel_variables.h"
 #include "custom_strategies/custom_convergencecriterias/contact_criteria_utilities.h"
+#include "custom_utilities/contact_variables.h"
+#include "custom_utilities/normal_calculation_utilities.h"
 
 namespace mc {
 
@@ -53,12 +55,33 @@ void ResidualBasedNewtonRaphsonMPCContactStrategy::Initialize() {
 void ResidualBasedNewtonRaphsonMPCContactStrategy::InitializeSolutionStep() {
   NewtonRaphsonStrategy::InitializeSolutionStep();
   passes_ = 0;
+  tying_ = model_part_.GetRootModelPart().Is(RIGID);
+  if (tying_) {
+    TieInterface();
+    return;
+  }
   constraints_->Measure();
   constraints_->Relate();
 }
 
+void ResidualBasedNewtonRaphsonMPCContactStrategy::TieInterface() {
+  if (!tied_) {
+    constraints_->Measure();
+    constraints_->RelateAllComponents();
+    if (constraints_->Relations().empty())
+      throw InputError(Concat(Name(), ": mesh tying: no slave node of ", contact_->FullName(),
+                              " faces a master face (or every slave component is fixed): nothing to tie; check ",
+                              "contact_model_part, assume_master_slave and search_parameters of mpc_contact_process"));
+    tied_ = true;
+  }
+  // The search of each step guesses the set from the gaps: the tied nodes stay active whatever it says.
+  for (Node* node : contact_->Nodes()) node->Set(ACTIVE, false);
+  for (const auto& [node, relation] : constraints_->Relations()) node->Set(ACTIVE, true);
+}
+
 void ResidualBasedNewtonRaphsonMPCContactStrategy::Predict() {
   NewtonRaphsonStrategy::Predict();
+  if (tying_) return;  // no active set to predict
   // One constrained linear solve on the search's guess of the set, whose reactions give the set Newton
   // starts from. The solve only decides the set: Newton starts from the predicted state again, so that
   // its first residual (the residual criterion's reference) is the step's, not the round-off left by
@@ -72,6 +95,10 @@ void ResidualBasedNewtonRaphsonMPCContactStrategy::Predict() {
 }
 
 bool ResidualBasedNewtonRaphsonMPCContactStrategy::NewtonIteration(int iteration) {
+  if (tying_) {
+    ApplyConstraints();
+    return NewtonRaphsonStrategy::NewtonIteration(iteration);
+  }
   if (settings_.update_each_nl_iteration && iteration > 1) {
     constraints_->Measure();
     constraints_->Relate();
@@ -92,6 +119,12 @@ void ResidualBasedNewtonRaphsonMPCContactStrategy::ApplyConstraints() {
 }
 
 bool ResidualBasedNewtonRaphsonMPCContactStrategy::SolveStepAttempt() {
+  if (tying_) {
+    passes_ = 1;
+    if (!NewtonRaphsonStrategy::SolveStepAttempt()) return false;
+    WriteTyingForces();
+    return true;
+  }
   const int passes = settings_.simplified_semi_smooth_newton ? settings_.inner_loop_iterations : 1;
   cycle_ = ContactStateCycle(ContactStates(*contact_));
   held_ = false;
@@ -105,6 +138,14 @@ bool ResidualBasedNewtonRaphsonMPCContactStrategy::SolveStepAttempt() {
 
 bool ResidualBasedNewtonRaphsonMPCContactStrategy::UpdateActiveSet() {
   builder_->BuildRHS(*scheme_, model_part_);
+  WriteInterfaceReactions();
+  constraints_->Measure();
+  const auto& dofs = builder_->GetDofSet();
+  return mpc_criteria_->PostCriteria(model_part_, dofs, builder_->SystemMatrix(), builder_->Increment(),
+                                     builder_->Residual());
+}
+
+void ResidualBasedNewtonRaphsonMPCContactStrategy::WriteInterfaceReactions() {
   const Vector& raw = builder_->RawResidual();
   const Variable<double>* const reactions[3] = {&REACTION_X, &REACTION_Y, &REACTION_Z};
   const Variable<double>* const displacements[3] = {&DISPLACEMENT_X, &DISPLACEMENT_Y, &DISPLACEMENT_Z};
@@ -115,10 +156,19 @@ bool ResidualBasedNewtonRaphsonMPCContactStrategy::UpdateActiveSet() {
         if (dof.equation_id >= 0 && dof.equation_id < raw.size())
           node->FastGetSolutionStepValue(*reactions[c]) = -raw[dof.equation_id];
       }
-  constraints_->Measure();
-  const auto& dofs = builder_->GetDofSet();
-  return mpc_criteria_->PostCriteria(model_part_, dofs, builder_->SystemMatrix(), builder_->Increment(),
-                                     builder_->Residual());
+}
+
+void ResidualBasedNewtonRaphsonMPCContactStrategy::WriteTyingForces() {
+  builder_->BuildRHS(*scheme_, model_part_);
+  WriteInterfaceReactions();
+  for (Node* node : contact_->Nodes()) {
+    if (!node->Is(SLAVE)) continue;
+    const double area = node->GetValue(NODAL_MAUX);
+    const Array3 force = node->Is(ACTIVE) ? node->FastGetSolutionStepValue(REACTION) : Array3(Array3::Zero());
+    node->SetValue(CONTACT_FORCE, force);
+    node->SetValue(NORMAL_CONTACT_STRESS,
+                   area > 0.0 ? force.dot(NormalCalculationUtilities::GetNodalNormal(*node)) / area : 0.0);
+  }
 }
 
 bool ResidualBasedNewtonRaphsonMPCContactStrategy::HoldCycle() {

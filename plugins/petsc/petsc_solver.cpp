@@ -340,6 +340,11 @@ void PetscSolver::Solve(const SparseMatrix& A, Vector& x, const Vector& b) {
     PCGetFailedReason(pc, &failed);
     if (failed == PC_FACTOR_NUMERIC_ZEROPIVOT || failed == PC_FACTOR_STRUCT_ZEROPIVOT)
       throw SingularMatrixError("PETSc: singular matrix, zero pivot in the factorization", -1);
+    if (failed == PC_FACTOR_OUTMEMORY && RaiseMumpsWorkspace()) {
+      Clear();  // set up again with the larger workspace
+      Solve(A, x, b);
+      return;
+    }
     throw SolutionError(Concat("PETSc: the preconditioner failed (", PCFailedReasons[failed], ")"));
   }
   Check(solved, "KSPSolve");
@@ -392,6 +397,27 @@ void PetscSolver::FillDistributedMatrix() {
   }
   Check(MatAssemblyBegin(matrix, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
   Check(MatAssemblyEnd(matrix, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+}
+
+bool PetscSolver::RaiseMumpsWorkspace() {
+  constexpr const char* key = "mat_mumps_icntl_14";
+  bool mumps = false;
+  auto given = options_.petsc_options.end();
+  for (auto it = options_.petsc_options.begin(); it != options_.petsc_options.end(); ++it) {
+    if (it->first == "pc_factor_mat_solver_type") mumps = it->second == "mumps";
+    if (it->first == key) given = it;
+  }
+  if (!mumps) return false;
+  // MUMPS' default is 20 %; each retry allows four times as much, at most 1280 %.
+  constexpr int largest = 1280;
+  const int percent = given == options_.petsc_options.end() ? 20 : std::atoi(given->second.c_str());
+  if (percent <= 0 || percent >= largest) return false;
+  const std::string raised = std::to_string(std::min(percent * 4, largest));
+  if (given == options_.petsc_options.end())
+    options_.petsc_options.emplace_back(key, raised);
+  else
+    given->second = raised;
+  return true;
 }
 
 void PetscSolver::Clear() {

@@ -91,6 +91,11 @@ class PetscSolver : public LinearSolver {
   struct Handles;  // PETSc's Mat and KSP (keeps the PETSc headers private)
   void SetFieldSplits(_p_KSP* ksp);
   void ClearOptions();
+  /// After MUMPS ran out of the workspace it estimated (its pivots delayed more than the analysis
+  /// foresaw, as in a saddle-point system on 4 ranks): raises its allowance (ICNTL(14)) in the
+  /// options for a new set-up; false when the factorization is not MUMPS' or the allowance is
+  /// already large. The error is MUMPS' global one, so every rank retries together.
+  bool RaiseMumpsWorkspace();
   void CreateDistributedMatrix(Handles& handles) const;
   void FillDistributedMatrix();
   Options options_;

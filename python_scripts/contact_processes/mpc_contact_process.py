@@ -4,7 +4,9 @@ which add nothing to the system: the MPC strategy ties each active slave node's 
 the mortar projection of the master (D^-1 M) with a master-slave constraint, and releases it when its
 reaction pulls (``reaction_check_stiffness_factor``). ``contact_type`` Frictional (Coulomb, 2D): a
 sticking node is tied in every component, a slipping one in the normal with its Coulomb force in the
-system (MPCContactCriteria decides stick and slip from the reactions)."""
+system (MPCContactCriteria decides stick and slip from the reactions). With ``contact_type`` "MeshTying"
+every displacement component of every slave node is tied from the first step, for good (mesh tying by
+constraints, the multiplier-free counterpart of mesh_tying_process' ComponentsMeshTying)."""
 from __future__ import annotations
 
 import math
@@ -15,7 +17,8 @@ from . import _settings
 from .alm_contact_process import NORMAL_UPDATE, NORMAL_VARIATIONS
 from .search_base_process import SearchBaseProcess
 
-#: contact_type values Kratos recognises for MPC (spec 4.7) that are not formulations of their own
+#: contact_type values Kratos recognises for MPC (spec 4.7): MeshTying (a formulation of its own, root flag RIGID)
+#: and the suffix PureSlip
 MESH_TYING = "MeshTying"
 PURE_SLIP = "PureSlip"
 
@@ -35,21 +38,24 @@ KEYS_WITHOUT_EFFECT = {
                                             "mpc_contact_settings.update_each_nl_iteration)",
 }
 
+#: Keys without effect with contact_type "MeshTying" only.
+MESH_TYING_KEYS_WITHOUT_EFFECT = {
+    ("", "reaction_check_stiffness_factor"): "mesh tying has no active set: a tie is never released (Kratos 10.4 "
+                                             "releases a tie that pulls, a defect)",
+}
+
 
 def mpc_formulation(contact_type, where: str):
-    """The formulation of an MPC ``contact_type`` (a Parameters string): Frictionless or Frictional,
-    with Kratos' suffix WithNormalUpdate (the normals are always those of the configuration the
-    relations are built at); PureSlip and MeshTying (Kratos' tying by constraints) are not implemented."""
+    """The formulation of an MPC ``contact_type`` (a Parameters string): Frictionless, Frictional or
+    MeshTying (every displacement component tied, root flag RIGID), with Kratos' suffix WithNormalUpdate
+    (the normals are always those of the configuration the relations are built at); PureSlip is not
+    implemented."""
     name = contact_type.GetString()
     base = name[:-len(NORMAL_UPDATE)] if name.endswith(NORMAL_UPDATE) else name
     if base.endswith(PURE_SLIP):
         raise _core.NotImplementedFeatureError(
             f"{contact_type.Where()}: '{name}' (frictional MPC contact where every active node slips) is not "
             "implemented; 'Frictional' decides stick and slip from the reactions")
-    if base == MESH_TYING:
-        raise _core.NotImplementedFeatureError(
-            f"{contact_type.Where()}: '{name}' (mesh tying by multipoint constraints) is not implemented; "
-            "mesh_tying_process ties meshes with dual mortar multipliers")
     return _core.ContactFormulation.OfProcess("mpc_contact_process", base, f"{where}: {contact_type.Where()} '{name}'")
 
 
@@ -76,6 +82,14 @@ class MPCContactProcess(SearchBaseProcess):
         })
         return _settings.to_parameters(common)
 
+    def __init__(self, model, settings=None):
+        if settings is not None and settings.Has("variable_name"):
+            raise _core.NotImplementedFeatureError(
+                f"{settings['variable_name'].Where()}: mpc_contact_process ties the displacements only (contact_type "
+                "\"MeshTying\" ties every component); a nodal scalar is tied by mesh_tying_process (its "
+                "variable_name, solver_settings.contact_settings.mortar_type \"ScalarMeshTying\")")
+        super().__init__(model, settings)
+
     def _check_types(self) -> None:
         s = self.settings
         self.formulation = mpc_formulation(s["contact_type"], self.python_module)
@@ -98,6 +112,8 @@ class MPCContactProcess(SearchBaseProcess):
         without_effect = dict(KEYS_WITHOUT_EFFECT)
         if not self.frictional:
             without_effect.update({("", "friction_coefficients"): _FRICTIONAL, ("", "frictional_law"): _FRICTIONAL})
+        if self.formulation.contact_type == MESH_TYING:
+            without_effect.update(MESH_TYING_KEYS_WITHOUT_EFFECT)
         warn_about_keys_without_effect(s, self.GetDefaultParameters(), without_effect)
 
     def check_solver_variables(self) -> None:
@@ -122,6 +138,8 @@ class MPCContactProcess(SearchBaseProcess):
         for part in (self.root, self.root.GetSubModelPart("Contact"), self.root.GetSubModelPart("ComputingContact")):
             part.Set(_core.CONTACT, True)
             part.Set(_core.SLIP, self.frictional)
+        # As Kratos: the root flag RIGID makes the MPC strategy tie every component, with no active set.
+        self.root.Set(_core.RIGID, self.formulation.contact_type == MESH_TYING)
 
     def ExecuteFinalizeSolutionStep(self) -> None:
         """Nothing: CONTACT_FORCE and NORMAL_CONTACT_STRESS are written by the MPC strategy's active-set

@@ -41,16 +41,18 @@ MESH_TYING_CASES = [
 ]
 
 #: The MPC contact cases (issue 13), run as written ("mpc": mpc_contact_settings, mpc_contact_process). The
-#: 2D one has no reference file; the zero-gap copy of it is ours (tests/cases/mpc/README.md).
+#: 2D one has no reference file; the zero-gap and mesh-tying copies of it are ours (tests/cases/mpc/README.md).
 MPC_CASES = [
     ("mpc_contact_tests/3D_contact_simplest_patch_matching_test", ("mpc",)),
     ("mpc_contact_tests/2D_contact_simplest_patch_matching_test", ("mpc",)),
     ("../mpc/2D_zero_gap_patch_test", ("mpc",)),
+    ("../mpc/2D_mesh_tying_patch_test", ("mpc",)),
 ]
 _MPC_2D_NODES = {f"NODE_{i}": ["DISPLACEMENT_X", "DISPLACEMENT_Y"] for i in range(3, 9)}
 #: (time, nodes) of the Kratos snapshot of a case without a reference file
 SNAPSHOT_REQUESTS = {"mpc_contact_tests/2D_contact_simplest_patch_matching_test": (1.0, _MPC_2D_NODES),
-                     "../mpc/2D_zero_gap_patch_test": (1.0, _MPC_2D_NODES)}
+                     "../mpc/2D_zero_gap_patch_test": (1.0, _MPC_2D_NODES),
+                     "../mpc/2D_mesh_tying_patch_test": (1.0, _MPC_2D_NODES)}
 
 #: Cases whose reference time is never reached with their own time stepping: the reference file
 #: (t = 1.1) and the parameters (dt 0.5 up to 0.99) come from different Kratos revisions. The

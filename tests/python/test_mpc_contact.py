@@ -205,8 +205,6 @@ def test_mpc_contact_process_keys(csma_cases, monkeypatch, tmp_path):
         _run_2d(tmp_path, _process_settings(contact_type="Frictionles"))
     with pytest.raises(mc.NotImplementedFeatureError, match=r"contact_type.*FrictionalPureSlip"):
         _run_2d(tmp_path, _process_settings(contact_type="FrictionalPureSlip"))
-    with pytest.raises(mc.NotImplementedFeatureError, match=r"contact_type.*MeshTying"):
-        _run_2d(tmp_path, _process_settings(contact_type="MeshTying"))
     with pytest.raises(mc.InputError, match=r"normal_variation: unknown value"):
         _run_2d(tmp_path, _process_settings(normal_variation="nodal"))
     with pytest.raises(mc.InputError, match=r"mpc_contact_process needs solver_settings\.mpc_contact_settings"):

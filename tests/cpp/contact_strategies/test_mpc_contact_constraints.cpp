@@ -5,7 +5,8 @@
 // nodal gap is the distance, and the relation of each slave node, evaluated for any master translation
 // and any tangential slave motion, puts the slave node on the master face (the gap measured again is 0).
 // Dependent ties: a node on two interfaces (slave of one, master of the other), both faces of an
-// interface slave, and a DoF the model part's own constraint already ties.
+// interface slave, and a DoF the model part's own constraint already ties. Mesh tying: every free
+// component tied.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -94,6 +95,38 @@ TEST(MPCContactConstraints, RelationPutsTheSlaveNodeOnTheMasterFace) {
   constraints.Measure();
   EXPECT_NEAR(constraints.NodalGap(pair.root.GetNode(1)), 0.0, 1e-12);
   EXPECT_NEAR(constraints.NodalGap(pair.root.GetNode(2)), 0.0, 1e-12);
+}
+
+// Mesh tying: one relation per free component, u_jc = sum_i P_ji u_ic with no constant; P reproduces a
+// linear field of the (inclined, 0.1 apart) faces' tangential coordinate and sums to 1, so any master
+// field u = a + b s (s the arc length along the face) gives every slave node the same field at its s: the
+// gap is kept, a rigid motion and a uniform stretch of the master carry the slave along.
+TEST(MPCContactConstraints, MeshTyingTiesEveryFreeComponent) {
+  InclinedPair pair(0.5);
+  MPCContactConstraints constraints(pair.contact, pair.computing);
+  constraints.Measure();
+  pair.root.GetNode(2).Fix(DISPLACEMENT_Y);  // held by its support: no relation
+  constraints.RelateAllComponents();
+  ASSERT_EQ(constraints.Relations().size(), 3u);
+  const Array3 tangent(std::cos(0.5), std::sin(0.5), 0.0);
+  const auto s = [&](const Node& node) { return node.X0().dot(tangent); };
+  const Array3 a(0.03, -0.07, 0.0), b(0.011, 0.005, 0.0);
+  for (IndexType id : {11, 12})
+    for (int c = 0; c < 2; ++c)
+      SetDofValue(pair.root.GetNode(id).GetDof(*kU[c]), a[c] + b[c] * s(pair.root.GetNode(id)));
+  for (const auto& [node, relation] : constraints.Relations()) {
+    EXPECT_EQ(relation->Constant(), 0.0);
+    EXPECT_FALSE(relation->Slave().fixed);
+    const int c = relation->Slave().variable == &DISPLACEMENT_X ? 0 : 1;
+    double value = 0.0, weights = 0.0;
+    for (std::size_t i = 0; i < relation->Masters().size(); ++i) {
+      EXPECT_EQ(relation->Masters()[i]->variable, relation->Slave().variable);
+      value += relation->Weights()[i] * relation->Masters()[i]->Value();
+      weights += relation->Weights()[i];
+    }
+    EXPECT_NEAR(weights, 1.0, 1e-12);
+    EXPECT_NEAR(value, a[c] + b[c] * s(*node), 1e-12) << "node " << node->Id() << " component " << c;
+  }
 }
 
 /// Three parallel faces y = 0 (nodes 1, 2), 0.1 (11, 12) and 0.2 (21, 22) with the pairs (slave, master)

@@ -106,6 +106,20 @@ TEST(PetscSolver, ZeroPivotAndNonConvergenceAreReported) {
   }
 }
 
+// MUMPS' workspace is its analysis' estimate plus ICNTL(14) percent; pivots delayed beyond the
+// estimate (the saddle point's zero diagonals kept in place: ICNTL(6) 0) stop it with
+// FACTOR_OUTMEMORY, as the friction block did on 4 ranks. The solver sets up again with more.
+TEST(PetscSolver, MumpsOutOfItsWorkspaceIsFactoredAgainWithMore) {
+  const SparseMatrix A = SaddlePoint(40);
+  const Vector exact = ManufacturedSolution(A.rows());
+  PetscSolver::Options options;
+  options.petsc_options = {{"mat_mumps_icntl_14", "1"}, {"mat_mumps_icntl_6", "0"}, {"mat_mumps_icntl_8", "0"}};
+  PetscSolver petsc(options);
+  const Vector x = SolveWith(petsc, A, A * exact);
+  EXPECT_LT(RelativeError(x, exact), 1e-10);
+  EXPECT_GE(petsc.Counters().factorizations, 2) << "MUMPS did not run out of its workspace: the test tests nothing";
+}
+
 TEST(PetscSolver, FromLinearSolverSettingsThroughThePluginEntryPoint) {
   auto create = [](const char* json) {
     Parameters settings(json);
