@@ -118,11 +118,15 @@ std::vector<BuilderAndSolver::ResidualTerm> MPCContactConstraints::CoulombTerms(
   return terms;
 }
 
-void MPCContactConstraints::Relate() {
+void MPCContactConstraints::ClearRelations() {
   relations_.clear();
   relation_normals_.clear();
   related_rows_.clear();
   stick_relations_.clear();
+}
+
+void MPCContactConstraints::Relate() {
+  ClearRelations();
   for (auto& [node, row] : rows_) {
     if (!(row.d > 0.0)) continue;
     const Array3 normal = NormalCalculationUtilities::GetNodalNormal(*node);
@@ -204,10 +208,7 @@ std::vector<std::pair<Node*, std::shared_ptr<MasterSlaveConstraint>>> MPCContact
 }
 
 void MPCContactConstraints::RelateAllComponents() {
-  relations_.clear();
-  relation_normals_.clear();
-  related_rows_.clear();
-  stick_relations_.clear();
+  ClearRelations();
   for (auto& [node, row] : rows_)
     if (row.d > 0.0) TieEveryComponent(node, row, Array3::Zero(), relations_);
 }

@@ -111,6 +111,8 @@ class MPCContactConstraints {
     int slave_conditions = 0;
   };
 
+  /// Forgets the relations of the last Relate / RelateAllComponents (and their normals and operators).
+  void ClearRelations();
   /// The per-component relations of a sticking node (frictional).
   void RelateStick(Node* node, const SlaveRow& row, const Array3& normal, double gap);
   /// Appends to `out` one relation per free displacement component c of `node`,
