@@ -170,7 +170,6 @@ void RegisterAll() {
       .enforcement = "MPC",
       .variables = {"WEIGHTED_GAP"},
       .active_set_criterion = mpc_criterion,
-      .not_implemented = "frictional multipoint-constraint contact: stick and slip relations",
   });
   // Mesh tying by constraints (spec 4.7, contact_type "MeshTying"; the process sets the root flag RIGID):
   // every displacement component of the slave nodes tied, no active set.

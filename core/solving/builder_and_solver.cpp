@@ -167,6 +167,33 @@ void BuilderAndSolver::ClearConstraints() {
   constraints_changed_ = true;
 }
 
+void BuilderAndSolver::SetResidualCombination(std::vector<ResidualTerm> terms) { combination_ = std::move(terms); }
+
+void BuilderAndSolver::BuildCombinationMatrix() {
+  std::vector<Eigen::Triplet<double, int>> entries;
+  std::vector<std::pair<int, int>> structure;
+  const auto n = static_cast<std::int64_t>(n_assembled_);
+  for (const ResidualTerm& term : combination_) {
+    if (term.to->equation_id < 0 || term.from->equation_id < 0 ||
+        term.to->equation_id >= static_cast<std::int64_t>(dofs_.size()) ||
+        term.from->equation_id >= static_cast<std::int64_t>(dofs_.size()))
+      throw Error(
+          Concat("residual combination: ", DofName(*term.to), " <- ", DofName(*term.from), " is outside the DoF set"));
+    // A fixed DoF without a row (elimination) has no matrix entry; its residual still combines.
+    if (term.to->equation_id >= n || term.from->equation_id >= n) continue;
+    entries.emplace_back(static_cast<int>(term.to->equation_id), static_cast<int>(term.from->equation_id), term.weight);
+    structure.emplace_back(static_cast<int>(term.to->equation_id), static_cast<int>(term.from->equation_id));
+  }
+  C_ = SparseMatrix(static_cast<Eigen::Index>(n_assembled_), static_cast<Eigen::Index>(n_assembled_));
+  C_.setFromTriplets(entries.begin(), entries.end());
+  C_.makeCompressed();
+  std::sort(structure.begin(), structure.end());
+  if (structure != C_structure_) {
+    C_structure_ = std::move(structure);
+    ++combination_version_;
+  }
+}
+
 // Pattern ---------------------------------------------------------------------------------------
 
 void BuilderAndSolver::PrepareBuild() {
@@ -415,6 +442,11 @@ void BuilderAndSolver::SumResidualOverRanks() {
 
 void BuilderAndSolver::FinishResidual() {
   rhs_effective_ = rhs_raw_;
+  if (!combination_.empty() && constraints_.empty())
+    throw Error(Concat(Name(), " builder: a residual combination needs master-slave constraints"));
+  if (!combination_.empty()) BuildCombinationMatrix();
+  for (const ResidualTerm& term : combination_)
+    rhs_effective_[term.to->equation_id] += term.weight * rhs_raw_[term.from->equation_id];
   for (const auto& c : constraints_) {
     if (!c->IsActive()) continue;
     const auto s = c->Slave().equation_id;
@@ -437,14 +469,21 @@ void BuilderAndSolver::ReduceSystem(Mode mode) {
   g_.setZero();
   for (const auto& c : constraints_)
     if (c->IsActive()) g_[c->Slave().equation_id] = c->Violation();
+  if (!combination_.empty()) BuildCombinationMatrix();
+  const bool combined = !combination_.empty();
   if (lhs) {
-    const SparseMatrix KT = K_ * T_;
+    SparseMatrix KT = K_ * T_;
+    if (combined) KT = KT + C_ * KT;
     A_ = T_.transpose() * KT;
     A_.makeCompressed();
   }
   if (rhs) {
     Vector r = rhs_raw_.head(static_cast<Eigen::Index>(n_assembled_));
     r.noalias() -= K_ * g_;
+    if (combined) {
+      const Vector combined_part = C_ * r;
+      r += combined_part;
+    }
     b_system_.noalias() = T_.transpose() * r;
   }
 }
@@ -547,10 +586,11 @@ void BuilderAndSolver::SolveSystem() {
   if (!linear_solver_) throw Error(Concat(Name(), " builder: no linear solver was given"));
   {
     ScopedTimer timer(timings_.solve);
-    if (solver_pattern_version_ != pattern_version_) {
+    if (solver_pattern_version_ != pattern_version_ || solver_combination_version_ != combination_version_) {
       if (communicator_) linear_solver_->SetRowPartition(partition_);
       linear_solver_->Initialize(A_);
       solver_pattern_version_ = pattern_version_;
+      solver_combination_version_ = combination_version_;
     }
     // System row i is the equation of dofs_by_equation_[i]. With master-slave constraints the
     // row of a master also holds its slaves' rows (T^T K T): a solver that splits the system by

@@ -95,6 +95,21 @@ class BuilderAndSolver {
   void ClearConstraints();
   const std::vector<std::shared_ptr<const MasterSlaveConstraint>>& Constraints() const noexcept { return constraints_; }
 
+  /// One term of a linear combination of the assembled residual rows: the row of `to` receives
+  /// `weight` times the row of `from` (see SetResidualCombination).
+  struct ResidualTerm {
+    const Dof* to;
+    const Dof* from;
+    double weight;
+  };
+  /// A force that is a linear combination of the entities' residual rows, r <- (I + C) r, with its
+  /// exact matrix (I + C) K: A = T^T (I + C) K T, b = T^T (I + C) (r - K g). Only with constraints
+  /// (frictional MPC contact: a slipping node's Coulomb force is mu times its normal reaction, a
+  /// combination of its own rows, and its masters take the opposite force). RawResidual() stays the
+  /// entities'; Residual() and the reactions include the force. The terms replace the earlier ones
+  /// (an empty list removes them) and hold for the next builds; their DoFs must be in the DoF set.
+  void SetResidualCombination(std::vector<ResidualTerm> terms);
+
   // Build and solve -----------------------------------------------------------------------------
   void Build(Scheme& scheme, ModelPart& model_part);
   void BuildLHS(Scheme& scheme, ModelPart& model_part);
@@ -191,6 +206,8 @@ class BuilderAndSolver {
   void AddElementMatrixProduct(const SparseMatrix& target, double sign, Vector& out);
   void FinishResidual();
   void ReduceSystem(Mode mode);
+  /// C_ from combination_ at the current numbering; a new structure makes the solver analyse again.
+  void BuildCombinationMatrix();
   void CheckEmptyColumns() const;
   bool TouchesOwnRows(const Entity& entity, const ProcessInfo& info) const;
   void SumResidualOverRanks();
@@ -213,8 +230,13 @@ class BuilderAndSolver {
   long pattern_version_ = 0;
   long solver_pattern_version_ = -1;
 
-  SparseMatrix K_;        ///< assembled matrix when constraints are reduced into A_
-  SparseMatrix T_;        ///< n_assembled x n_system constraint map
+  SparseMatrix K_;                                ///< assembled matrix when constraints are reduced into A_
+  SparseMatrix T_;                                ///< n_assembled x n_system constraint map
+  std::vector<ResidualTerm> combination_;         ///< SetResidualCombination
+  SparseMatrix C_;                                ///< n_assembled x n_assembled, from combination_
+  std::vector<std::pair<int, int>> C_structure_;  ///< (row, column) of C_'s entries
+  long combination_version_ = 0;                  ///< changes with C_structure_
+  long solver_combination_version_ = -1;
   Vector g_;              ///< constraint violations (n_assembled)
   Vector rhs_raw_;        ///< f_ext - f_int for every DoF
   Vector rhs_effective_;  ///< rhs_raw_ with slave entries moved to the masters

@@ -76,8 +76,57 @@ double MPCContactConstraints::NodalGap(const Node& node) const {
   return it == gaps_.end() ? 0.0 : it->second;
 }
 
-void MPCContactConstraints::Relate() {
+Array3 MPCContactConstraints::TangentialSlip(const Node& node) const {
+  const auto it = rows_.find(const_cast<Node*>(&node));
+  if (it == rows_.end() || !(it->second.d > 0.0)) return Array3::Zero();
+  const auto step = [](const Node& n) {
+    return Array3(n.FastGetSolutionStepValue(DISPLACEMENT) - n.FastGetSolutionStepValue(DISPLACEMENT, 1));
+  };
+  Array3 relative = step(node);
+  for (const auto& [master, m] : it->second.m) relative -= m / it->second.d * step(*master);
+  const Array3 normal = RelationNormal(node);
+  return relative - normal.dot(relative) * normal;
+}
+
+Array3 MPCContactConstraints::RelationNormal(const Node& node) const {
+  const auto it = relation_normals_.find(&node);
+  return it != relation_normals_.end() ? it->second : NormalCalculationUtilities::GetNodalNormal(node);
+}
+
+std::vector<BuilderAndSolver::ResidualTerm> MPCContactConstraints::CoulombTerms(
+    const std::unordered_map<const Node*, Array3>& directions) const {
+  std::vector<BuilderAndSolver::ResidualTerm> terms;
+  for (const auto& [node, relation] : relations_) {
+    const auto direction = directions.find(node);
+    if (!node->Is(ACTIVE) || !node->Is(SLIP) || direction == directions.end()) continue;
+    // The relation's operators, not a later Measure's: the force is transmitted as the tie is.
+    const SlaveRow& row = related_rows_.at(node);
+    const Array3 n = relation_normals_.at(node);
+    const Array3 s = direction->second;
+    const double mu = node->GetValue(FRICTION_COEFFICIENT);
+    for (int d = 0; d < dimension_; ++d) {
+      if (n[d] == 0.0) continue;
+      const Dof* from = &node->GetDof(*kDisplacement[d]);
+      for (int c = 0; c < dimension_; ++c) {
+        if (s[c] == 0.0) continue;
+        terms.push_back({&node->GetDof(*kDisplacement[c]), from, -mu * s[c] * n[d]});
+        for (const auto& [master, m] : row.m)
+          if (m != 0.0) terms.push_back({&master->GetDof(*kDisplacement[c]), from, mu * m / row.d * s[c] * n[d]});
+      }
+    }
+  }
+  return terms;
+}
+
+void MPCContactConstraints::ClearRelations() {
   relations_.clear();
+  relation_normals_.clear();
+  related_rows_.clear();
+  stick_relations_.clear();
+}
+
+void MPCContactConstraints::Relate() {
+  ClearRelations();
   for (auto& [node, row] : rows_) {
     if (!(row.d > 0.0)) continue;
     const Array3 normal = NormalCalculationUtilities::GetNodalNormal(*node);
@@ -87,6 +136,11 @@ void MPCContactConstraints::Relate() {
     for (int c = 0; c < dimension_; ++c)
       if (!node->GetDof(*kDisplacement[c]).fixed && (k < 0 || std::abs(normal[c]) > std::abs(normal[k]))) k = c;
     if (k < 0 || std::abs(normal[k]) < 1e-3 * normal.head(dimension_).norm()) continue;
+    relation_normals_[node] = normal;
+    if (frictional_) {
+      related_rows_[node] = row;
+      RelateStick(node, row, normal, gaps_.at(node));
+    }
     const Array3 u = node->FastGetSolutionStepValue(DISPLACEMENT);
     double constant = gaps_.at(node) + normal.head(dimension_).dot(u.head(dimension_));
     std::vector<Dof*> masters;
@@ -113,31 +167,55 @@ void MPCContactConstraints::Relate() {
   }
 }
 
-void MPCContactConstraints::RelateAllComponents() {
-  relations_.clear();
-  for (auto& [node, row] : rows_) {
-    if (!(row.d > 0.0)) continue;
-    for (int c = 0; c < dimension_; ++c) {
-      Dof& slave = node->GetDof(*kDisplacement[c]);
-      if (slave.fixed) continue;
-      std::vector<Dof*> masters;
-      std::vector<double> weights;
-      for (const auto& [master, m] : row.m) {
-        const double p = m / row.d;
-        if (p == 0.0) continue;
-        masters.push_back(&master->GetDof(*kDisplacement[c]));
-        weights.push_back(p);
-      }
-      relations_.emplace_back(node, std::make_shared<MasterSlaveConstraint>(node->Id(), slave, std::move(masters),
-                                                                            std::move(weights), 0.0));
-    }
+void MPCContactConstraints::RelateStick(Node* node, const SlaveRow& row, const Array3& normal, double gap) {
+  // (u_j - P u) at the step's start (its tangential part kept) and now (its normal part closed by the gap).
+  Array3 start = node->FastGetSolutionStepValue(DISPLACEMENT, 1);
+  Array3 now = node->FastGetSolutionStepValue(DISPLACEMENT);
+  for (const auto& [master, m] : row.m) {
+    start -= m / row.d * master->FastGetSolutionStepValue(DISPLACEMENT, 1);
+    now -= m / row.d * master->FastGetSolutionStepValue(DISPLACEMENT);
   }
+  const Array3 constant = start - normal.dot(start) * normal + (gap + normal.dot(now)) * normal;
+  TieEveryComponent(node, row, constant, stick_relations_);
+}
+
+void MPCContactConstraints::TieEveryComponent(
+    Node* node, const SlaveRow& row, const Array3& constant,
+    std::vector<std::pair<Node*, std::shared_ptr<MasterSlaveConstraint>>>& out) const {
+  for (int c = 0; c < dimension_; ++c) {
+    Dof& slave = node->GetDof(*kDisplacement[c]);
+    if (slave.fixed) continue;  // the support holds this component
+    std::vector<Dof*> masters;
+    std::vector<double> weights;
+    for (const auto& [master, m] : row.m) {
+      if (m == 0.0) continue;
+      masters.push_back(&master->GetDof(*kDisplacement[c]));
+      weights.push_back(m / row.d);
+    }
+    out.emplace_back(node, std::make_shared<MasterSlaveConstraint>(node->Id(), slave, std::move(masters),
+                                                                   std::move(weights), constant[c]));
+  }
+}
+
+std::vector<std::pair<Node*, std::shared_ptr<MasterSlaveConstraint>>> MPCContactConstraints::ActiveRelations() const {
+  std::vector<std::pair<Node*, std::shared_ptr<MasterSlaveConstraint>>> active;
+  const auto sticks = [&](const Node* node) { return frictional_ && !node->Is(SLIP); };
+  for (const auto& entry : relations_)
+    if (entry.first->Is(ACTIVE) && !sticks(entry.first)) active.push_back(entry);
+  for (const auto& entry : stick_relations_)
+    if (entry.first->Is(ACTIVE) && sticks(entry.first)) active.push_back(entry);
+  return active;
+}
+
+void MPCContactConstraints::RelateAllComponents() {
+  ClearRelations();
+  for (auto& [node, row] : rows_)
+    if (row.d > 0.0) TieEveryComponent(node, row, Array3::Zero(), relations_);
 }
 
 void MPCContactConstraints::Apply(BuilderAndSolver& builder) {
   std::vector<const MasterSlaveConstraint*> active;
-  for (const auto& [node, relation] : relations_)
-    if (node->Is(ACTIVE)) active.push_back(relation.get());
+  for (const auto& [node, relation] : ActiveRelations()) active.push_back(relation.get());
   // Unchanged relations keep the builder's numbering and pattern.
   if (active == applied_) return;
   const auto tied = TiedRelations();
@@ -147,10 +225,9 @@ void MPCContactConstraints::Apply(BuilderAndSolver& builder) {
 }
 
 std::vector<std::shared_ptr<const MasterSlaveConstraint>> MPCContactConstraints::TiedRelations() const {
-  std::vector<std::pair<Node*, std::shared_ptr<MasterSlaveConstraint>>> active;
-  for (const auto& [node, relation] : relations_)
-    if (node->Is(ACTIVE)) active.emplace_back(node, relation);
-  // Stable: a node's relations (one per component in mesh tying) keep their component order.
+  auto active = ActiveRelations();
+  // Stable: a node's relations (one per component in mesh tying or while it sticks) keep their
+  // component order.
   std::stable_sort(active.begin(), active.end(),
                    [](const auto& a, const auto& b) { return a.first->Id() < b.first->Id(); });
   const auto where = [&](std::size_t i) {

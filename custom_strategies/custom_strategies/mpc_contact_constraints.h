@@ -21,6 +21,15 @@ namespace mc {
 /// linearised gap is zero. The constraint eliminates the free displacement component k of node j with
 /// the largest |n_jk|; the other components of the node are masters with weight -n_l / n_k.
 ///
+/// Frictional (SetFrictional, Coulomb), an ACTIVE slave node that sticks (not SLIP) is tied in every
+/// free component instead, to the mortar projection of the master with no tangential relative motion
+/// since the step's start u^n:
+///   u_j - sum_i P_ji u_i = (I - n n^T)(u_j^n - sum_i P_ji u_i^n) + n (g_j + n . (u_j* - sum_i P_ji u_i*)),
+/// one relation per component (their normal part is the normal relation above). A slipping node keeps
+/// the normal relation, and its Coulomb force is a combination of its residual rows (CoulombTerms).
+/// Kratos 10.4 ties a frictional node's components to D^-1 M without the gap (u_j = P u) whatever its
+/// reaction: every active node sticks, and an initial gap stays open.
+///
 /// Kratos 10.4 ties the displacements without the gap (u_n slave = P u_n master): an initial gap
 /// stays open and an initial penetration stays; its own older reference (mpc_contact_tests 3D, whose
 /// interface starts 1e-5 inside) shows the gap closed, as here.
@@ -45,7 +54,8 @@ class MPCContactConstraints {
   /// the first step): the faces are glued as they were meshed, any gap or offset between them kept (as
   /// Kratos 10.4 does). A fixed component is held by its support and gets no relation.
   void RelateAllComponents();
-  /// Hands the relations of the ACTIVE slave nodes to `builder` (replacing the earlier ones), with the
+  /// Hands the relations of the ACTIVE slave nodes (frictional: a sticking node's per-component ones) to
+  /// `builder` (replacing the earlier ones), with the
   /// dependent ties resolved (see TiedRelations).
   void Apply(BuilderAndSolver& builder);
   /// The relations of the ACTIVE slave nodes as the builder can take them (one slave per DoF, no
@@ -64,6 +74,28 @@ class MPCContactConstraints {
   /// node, the component and the constraint.
   std::vector<std::shared_ptr<const MasterSlaveConstraint>> TiedRelations() const;
 
+  /// Frictional contact: sticking nodes tied in every component, see the class comment.
+  void SetFrictional(bool frictional) noexcept { frictional_ = frictional; }
+  bool IsFrictional() const noexcept { return frictional_; }
+  /// The tangential slip of the step at a slave node of the last Measure, (I - n n^T) of the relative
+  /// displacement since u^n, (u_j - u_j^n) - sum_i P_ji (u_i - u_i^n), n its relation's normal; zero
+  /// for a node no pair reaches.
+  Array3 TangentialSlip(const Node& node) const;
+  /// The normal of a slave node's relations (of the last Relate; the current nodal normal for a node
+  /// without one): the normal / tangential split of its reaction must be the relation's, not that of
+  /// the deformed configuration a later Measure sees.
+  Array3 RelationNormal(const Node& node) const;
+  /// The Coulomb force of the ACTIVE, SLIP nodes with a normal relation, as a combination of residual
+  /// rows for BuilderAndSolver::SetResidualCombination. At such a node j, with n its relation's normal,
+  /// s its unit slip direction (`directions`, held within an iteration), mu its FRICTION_COEFFICIENT
+  /// and f_n = n . R_j its normal force (R_j = f_int - f_ext of its rows, negative when pressed), the
+  /// force on j is mu f_n s = -mu |f_n| s and on each master node i it is -P_ji mu f_n s: in rows,
+  /// r_jc += -mu s_c n_d r_jd and r_ic += mu P_ji s_c n_d r_jd (r = f_ext - f_int). Linear in the rows,
+  /// so the builder's matrix (I + C) K is its exact tangent (the normal, P and s held); f_n is taken
+  /// as signed (no |.|): an active node is pressed, and one that pulls is released by the criterion.
+  std::vector<BuilderAndSolver::ResidualTerm> CoulombTerms(
+      const std::unordered_map<const Node*, Array3>& directions) const;
+
   /// Nodal gap g_j = WEIGHTED_GAP / NODAL_MAUX of the last Measure (0 for a node no pair reaches).
   double NodalGap(const Node& node) const;
   /// (slave node, its relation) of the last Relate (a node has one per component after
@@ -79,12 +111,29 @@ class MPCContactConstraints {
     int slave_conditions = 0;
   };
 
+  /// Forgets the relations of the last Relate / RelateAllComponents (and their normals and operators).
+  void ClearRelations();
+  /// The per-component relations of a sticking node (frictional).
+  void RelateStick(Node* node, const SlaveRow& row, const Array3& normal, double gap);
+  /// Appends to `out` one relation per free displacement component c of `node`,
+  /// u_jc = sum_i P_ji u_ic + constant_c (a sticking node's tie and mesh tying's).
+  void TieEveryComponent(Node* node, const SlaveRow& row, const Array3& constant,
+                         std::vector<std::pair<Node*, std::shared_ptr<MasterSlaveConstraint>>>& out) const;
+  /// (slave node, relation) of the ACTIVE nodes: the normal relation, or a sticking node's per-component
+  /// ones (frictional).
+  std::vector<std::pair<Node*, std::shared_ptr<MasterSlaveConstraint>>> ActiveRelations() const;
+
   ModelPart& contact_;
   ModelPart& computing_contact_;
   int dimension_ = 3;
   std::unordered_map<Node*, SlaveRow> rows_;
   std::unordered_map<const Node*, double> gaps_;
   std::vector<std::pair<Node*, std::shared_ptr<MasterSlaveConstraint>>> relations_;
+  std::unordered_map<const Node*, Array3> relation_normals_;
+  std::unordered_map<const Node*, SlaveRow> related_rows_;  ///< frictional: the operators of the last Relate
+  /// Frictional: the per-component relations of every related node, applied while it sticks.
+  std::vector<std::pair<Node*, std::shared_ptr<MasterSlaveConstraint>>> stick_relations_;
+  bool frictional_ = false;
   std::vector<const MasterSlaveConstraint*> applied_;  ///< what the builder holds (Apply)
 };
 

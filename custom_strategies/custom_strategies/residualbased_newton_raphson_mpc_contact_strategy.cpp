@@ -47,6 +47,8 @@ void ResidualBasedNewtonRaphsonMPCContactStrategy::Initialize() {
     throw InputError(Concat(Name(), ": ", root.Name(),
                             " has no Contact interface: the MPC contact solver needs an mpc_contact_process"));
   constraints_ = std::make_shared<MPCContactConstraints>(*contact_, root.GetSubModelPart("ComputingContact"));
+  // mpc_contact_process flags the root SLIP for contact_type Frictional.
+  constraints_->SetFrictional(root.Is(SLIP));
   mpc_criteria_ = std::make_shared<MPCContactCriteria>(constraints_);
 }
 
@@ -84,7 +86,7 @@ void ResidualBasedNewtonRaphsonMPCContactStrategy::Predict() {
   // starts from. The solve only decides the set: Newton starts from the predicted state again, so that
   // its first residual (the residual criterion's reference) is the step's, not the round-off left by
   // a linear solve that already solved a linear problem.
-  constraints_->Apply(*builder_);
+  ApplyConstraints();
   builder_->BuildAndSolve(*scheme_, model_part_);
   const Vector increment = builder_->Increment();
   UpdateAndMoveMesh(increment);
@@ -94,20 +96,26 @@ void ResidualBasedNewtonRaphsonMPCContactStrategy::Predict() {
 
 bool ResidualBasedNewtonRaphsonMPCContactStrategy::NewtonIteration(int iteration) {
   if (tying_) {
-    constraints_->Apply(*builder_);
+    ApplyConstraints();
     return NewtonRaphsonStrategy::NewtonIteration(iteration);
   }
   if (settings_.update_each_nl_iteration && iteration > 1) {
     constraints_->Measure();
     constraints_->Relate();
   }
-  constraints_->Apply(*builder_);
+  ApplyConstraints();
   const bool converged = NewtonRaphsonStrategy::NewtonIteration(iteration);
   if (settings_.simplified_semi_smooth_newton) return converged;
   const bool unchanged = UpdateActiveSet() || HoldCycle();
   history_.back().converged = converged && unchanged;
   history_.back().criteria.push_back(mpc_criteria_->LastValues().front());
   return history_.back().converged;
+}
+
+void ResidualBasedNewtonRaphsonMPCContactStrategy::ApplyConstraints() {
+  constraints_->Apply(*builder_);
+  if (constraints_->IsFrictional())
+    builder_->SetResidualCombination(constraints_->CoulombTerms(mpc_criteria_->SlipDirections()));
 }
 
 bool ResidualBasedNewtonRaphsonMPCContactStrategy::SolveStepAttempt() {

@@ -37,15 +37,17 @@ struct MPCContactStrategySettings {
 /// earlier iteration (not the previous one), the union of the sets of the cycle is held active for the
 /// rest of the step (a held node may carry a small pull).
 ///
+/// Frictional (contact_type Frictional), a sticking node is tied in every component and a slipping one
+/// in the normal, with its Coulomb force in the system (see MPCContactCriteria for the switch).
+///
 /// Mesh tying (root flag RIGID, set by mpc_contact_process with contact_type "MeshTying"): at the first
 /// step every slave node an overlap reaches is tied in every free displacement component
 /// (MPCContactConstraints::RelateAllComponents) and ACTIVE for good; the relations are kept for every
 /// later step (the faces stay glued where they were meshed: the tie is between material points; a
 /// resumed run measures them again at the state it resumes, as the relations are not in a checkpoint),
-/// there is no
-/// predictor solve, no active set and no release. CONTACT_FORCE is the slave node's reaction (all its
-/// components) and NORMAL_CONTACT_STRESS its normal part over NODAL_MAUX. Kratos 10.4 runs its reaction
-/// check on tied nodes too, and releases a tie that pulls: a defect (a tie holds in tension).
+/// there is no predictor solve, no active set and no release. CONTACT_FORCE is the slave node's reaction
+/// (all its components) and NORMAL_CONTACT_STRESS its normal part over NODAL_MAUX. Kratos 10.4 runs its
+/// reaction check on tied nodes too, and releases a tie that pulls: a defect (a tie holds in tension).
 ///
 /// Kratos checks the reactions twice per iteration (the strategy's own MPCContactCriteria, and a second
 /// one the Python solver puts in an AndCriteria with the mechanical criterion): a defect, the second
@@ -85,6 +87,9 @@ class ResidualBasedNewtonRaphsonMPCContactStrategy : public NewtonRaphsonStrateg
   /// constraints transmit), the operators measured again, and the criterion's update of the active set;
   /// true when no node changed.
   bool UpdateActiveSet();
+  /// The relations of the current set to the builder, and frictional, the Coulomb force of the
+  /// slipping nodes (MPCContactConstraints::CoulombTerms) with the directions of the last update.
+  void ApplyConstraints();
   /// REACTION of the Contact nodes' displacement DoFs from the raw residual of the current state.
   void WriteInterfaceReactions();
   /// Mesh tying: ties the interface at the first step, marks its tied slave nodes ACTIVE.

@@ -50,11 +50,13 @@ SHIFT = {2: 7.0e-3, 3: 5.0e-3}
 
 
 def write_case(dim: int, label: str, out_dir: str, friction: float = FRICTION_COEFFICIENT,
-               mortar_type: str = "ALMContactFrictional", shift: float | None = None) -> str:
+               mortar_type: str = "ALMContactFrictional", shift: float | None = None, mpc: bool = False) -> str:
     """Writes the Hertz case ``hertz2d_<label>`` (2D) or the half model of ``hertz3dgrid_<label>``
-    (3D), made frictional and followed by the tangential shift; returns its folder."""
+    (3D), made frictional and followed by the tangential shift; returns its folder. With ``mpc``:
+    frictional MPC contact (mpc_contact_settings and mpc_contact_process, contact_type Frictional)
+    instead of ``mortar_type``."""
     family = "hertz2d" if dim == 2 else "hertz3dgrid"
-    folder = hertz.write_case(family, label, out_dir, half=dim == 3)
+    folder = hertz.write_case(family, label, out_dir, half=dim == 3, mpc=mpc)
     name = os.path.basename(folder)
     materials_file = os.path.join(folder, f"{name}_materials.json")
     with open(materials_file) as f:
@@ -65,13 +67,16 @@ def write_case(dim: int, label: str, out_dir: str, friction: float = FRICTION_CO
     with open(parameters_file) as f:
         parameters = json.load(f)
     solver = parameters["solver_settings"]
-    solver["contact_settings"]["mortar_type"] = mortar_type
+    if mpc:
+        solver["mpc_contact_settings"]["contact_type"] = "Frictional"
+    else:
+        solver["contact_settings"]["mortar_type"] = mortar_type
     solver["buffer_size"] = 3
     dt = 1.0 / (NORMAL_STEPS + TANGENTIAL_STEPS)
     t_normal = NORMAL_STEPS * dt
     solver["time_stepping"]["time_step"] = dt
     contact = parameters["processes"]["contact_process_list"][0]["Parameters"]
-    contact["contact_type"] = "FrictionalPureSlip" if mortar_type.endswith("PureSlip") else "Frictional"
+    contact["contact_type"] = "FrictionalPureSlip" if mortar_type.endswith("PureSlip") and not mpc else "Frictional"
     constraints = parameters["processes"]["constraints_process_list"]
     top = next(p for p in constraints if p["Parameters"]["model_part_name"] == "Structure.DISPLACEMENT_top")
     with open(os.path.join(folder, "hertz.json")) as f:

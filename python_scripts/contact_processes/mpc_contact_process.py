@@ -2,8 +2,10 @@
 searches are those of the other contact processes; the pairs are ``MPCMortarContactCondition<geometry>``,
 which add nothing to the system: the MPC strategy ties each active slave node's normal displacement to
 the mortar projection of the master (D^-1 M) with a master-slave constraint, and releases it when its
-reaction pulls (``reaction_check_stiffness_factor``). With ``contact_type`` "MeshTying" every
-displacement component of every slave node is tied from the first step, for good (mesh tying by
+reaction pulls (``reaction_check_stiffness_factor``). ``contact_type`` Frictional (Coulomb, 2D): a
+sticking node is tied in every component, a slipping one in the normal with its Coulomb force in the
+system (MPCContactCriteria decides stick and slip from the reactions). With ``contact_type`` "MeshTying"
+every displacement component of every slave node is tied from the first step, for good (mesh tying by
 constraints, the multiplier-free counterpart of mesh_tying_process' ComponentsMeshTying)."""
 from __future__ import annotations
 
@@ -15,17 +17,18 @@ from . import _settings
 from .alm_contact_process import NORMAL_UPDATE, NORMAL_VARIATIONS
 from .search_base_process import SearchBaseProcess
 
-#: contact_type values Kratos recognises for MPC (spec 4.7) that are not formulations of their own
+#: contact_type values Kratos recognises for MPC (spec 4.7): MeshTying (a formulation of its own, root flag RIGID)
+#: and the suffix PureSlip
 MESH_TYING = "MeshTying"
 PURE_SLIP = "PureSlip"
 
-_FRICTIONAL = "only frictional MPC contact (not implemented) reads it"
+_FRICTIONAL = "only frictional MPC contact reads it"
 #: Keys accepted without effect (issue 18): (sub-block or "", key) -> why.
 KEYS_WITHOUT_EFFECT = {
-    ("", "friction_coefficients"): _FRICTIONAL,
-    ("", "not_normal_update_frictional"): _FRICTIONAL,
-    ("", "frictional_law"): _FRICTIONAL,
-    ("", "tangent_factor"): _FRICTIONAL,
+    ("", "not_normal_update_frictional"): "the relations are rebuilt from the nodal normals of the configuration "
+                                          "they are built at, frictional or not",
+    ("", "tangent_factor"): "a sticking node is tied exactly (no tangential penalty to scale) and a slipping one "
+                            "carries the Coulomb force itself",
     ("", "normal_variation"): "the constraints are linear in the displacements, built from the nodal normals of the "
                               "configuration they are built at: there is no tangent of the normal to include",
     ("", "clear_inactive_for_post"): "an inactive node transmits no force: its CONTACT_FORCE and "
@@ -43,12 +46,16 @@ MESH_TYING_KEYS_WITHOUT_EFFECT = {
 
 
 def mpc_formulation(contact_type, where: str):
-    """The formulation of an MPC ``contact_type`` (a Parameters string): Frictionless, MeshTying (every
-    displacement component tied, root flag RIGID), or Frictional with Kratos' suffixes (PureSlip,
-    WithNormalUpdate), which is not implemented yet."""
+    """The formulation of an MPC ``contact_type`` (a Parameters string): Frictionless, Frictional or
+    MeshTying (every displacement component tied, root flag RIGID), with Kratos' suffix WithNormalUpdate
+    (the normals are always those of the configuration the relations are built at); PureSlip is not
+    implemented."""
     name = contact_type.GetString()
     base = name[:-len(NORMAL_UPDATE)] if name.endswith(NORMAL_UPDATE) else name
-    base = base[:-len(PURE_SLIP)] if base.endswith(PURE_SLIP) else base
+    if base.endswith(PURE_SLIP):
+        raise _core.NotImplementedFeatureError(
+            f"{contact_type.Where()}: '{name}' (frictional MPC contact where every active node slips) is not "
+            "implemented; 'Frictional' decides stick and slip from the reactions")
     return _core.ContactFormulation.OfProcess("mpc_contact_process", base, f"{where}: {contact_type.Where()} '{name}'")
 
 
@@ -86,6 +93,7 @@ class MPCContactProcess(SearchBaseProcess):
     def _check_types(self) -> None:
         s = self.settings
         self.formulation = mpc_formulation(s["contact_type"], self.python_module)
+        self.frictional = self.formulation.contact_type == "Frictional"
         self.condition_stem = self.formulation.ConditionStem(False, False)
         variation = s["normal_variation"].GetString().lower()
         if variation not in NORMAL_VARIATIONS:
@@ -101,9 +109,12 @@ class MPCContactProcess(SearchBaseProcess):
         if not 0.0 < s["tangent_factor"].GetDouble() < math.inf:
             raise _core.InputError(f"{s['tangent_factor'].Where()}: must be a positive number, "
                                    f"got {s['tangent_factor'].GetDouble()!r}")
-        warn_about_keys_without_effect(s, self.GetDefaultParameters(), KEYS_WITHOUT_EFFECT)
+        without_effect = dict(KEYS_WITHOUT_EFFECT)
+        if not self.frictional:
+            without_effect.update({("", "friction_coefficients"): _FRICTIONAL, ("", "frictional_law"): _FRICTIONAL})
         if self.formulation.contact_type == MESH_TYING:
-            warn_about_keys_without_effect(s, self.GetDefaultParameters(), MESH_TYING_KEYS_WITHOUT_EFFECT)
+            without_effect.update(MESH_TYING_KEYS_WITHOUT_EFFECT)
+        warn_about_keys_without_effect(s, self.GetDefaultParameters(), without_effect)
 
     def check_solver_variables(self) -> None:
         """The solver must be the MPC contact solver (solver_settings.mpc_contact_settings)."""
@@ -119,9 +130,14 @@ class MPCContactProcess(SearchBaseProcess):
         info = self.root.GetProcessInfo()
         info.SetValue(_core.REACTION_CHECK_STIFFNESS_FACTOR,
                       self.settings["reaction_check_stiffness_factor"].GetDouble())
+        if self.frictional and info.GetValue(_core.DOMAIN_SIZE) == 3:
+            raise _core.NotImplementedFeatureError(
+                f"{self.settings['contact_type'].Where()}: '{self.settings['contact_type'].GetString()}' in 3D: "
+                "frictional MPC contact is implemented in 2D (in 3D the slip direction turns within a step)")
+        # SLIP of the root tells the MPC strategy the contact is frictional.
         for part in (self.root, self.root.GetSubModelPart("Contact"), self.root.GetSubModelPart("ComputingContact")):
             part.Set(_core.CONTACT, True)
-            part.Set(_core.SLIP, False)
+            part.Set(_core.SLIP, self.frictional)
         # As Kratos: the root flag RIGID makes the MPC strategy tie every component, with no active set.
         self.root.Set(_core.RIGID, self.formulation.contact_type == MESH_TYING)
 

@@ -129,7 +129,8 @@ def write_block_on_base(folder, name: str, *, block: tuple, base: tuple, cells: 
                         ramp: float = 0.0) -> str:
     """A block (nx, ny cells) resting on the top of a base clamped at its bottom (bx, by cells),
     plane strain, linear quadrilaterals, both E = 1e6, nu = 0.3, rho = 1, FRICTION_COEFFICIENT
-    `friction`; the block's bottom is the slave. `gravity` = (modulus, direction) on the block,
+    `friction`; the block's bottom is the slave, its top-left corner node the sub-part block_corner and
+    its left side's node at mid-height (when ny is even) block_side. `gravity` = (modulus, direction) on the block,
     raised linearly from 0 over the time `ramp` when it is positive; `contact` = (python_module,
     extra Parameters) of the contact process; `solver` updates the solver settings."""
     nx, ny, bx, by = cells
@@ -141,6 +142,9 @@ def write_block_on_base(folder, name: str, *, block: tuple, base: tuple, cells: 
     coords = np.vstack([block_xy, base_xy])
     ids = np.arange(1, len(coords) + 1)
     on_block_bottom = np.abs(block_xy[:, 1]) < 1e-12
+    on_block_left = np.abs(block_xy[:, 0] + block[0] / 2) < 1e-12
+    block_corner = ids[:nb][on_block_left & (np.abs(block_xy[:, 1] - block[1]) < 1e-12)]
+    block_side = ids[:nb][on_block_left & (np.abs(block_xy[:, 1] - block[1] / 2) < 1e-12)]
     on_base_top = np.abs(base_xy[:, 1]) < 1e-12
     on_base_bottom = np.abs(base_xy[:, 1] + base[1]) < 1e-12
     n_block_cells = len(block_cells)
@@ -151,6 +155,8 @@ def write_block_on_base(folder, name: str, *, block: tuple, base: tuple, cells: 
                           "Parts_base": {"nodes": ids[nb:],
                                          "elements": range(n_block_cells + 1, n_block_cells + len(base_cells) + 1)},
                           "Contact_slave": {"nodes": ids[:nb][on_block_bottom]},
+                          "block_corner": {"nodes": block_corner},
+                          "block_side": {"nodes": block_side},
                           "Contact_master": {"nodes": ids[nb:][on_base_top]},
                           "DISPLACEMENT_bottom": {"nodes": ids[nb:][on_base_bottom]}})
     variables = {"YOUNG_MODULUS": 1.0e6, "POISSON_RATIO": 0.3, "DENSITY": 1.0, "THICKNESS": 1.0,

@@ -22,12 +22,18 @@ pytestmark = pytest.mark.skipif(importlib.util.find_spec("gmsh") is None, reason
 
 
 class PartialSlipAnalysis(StructuralMechanicsAnalysis):
-    """Records, after each step, the total force on the curved body and the slave nodes' state."""
+    """Records, after each step, the total force on the curved body and the slave nodes' state. With
+    `mpc` (frictional MPC contact, no multipliers) a node's traction is its CONTACT_FORCE over its share
+    of the overlap (NODAL_MAUX, also its area), and its normal that of its relation, built at the step's
+    start: the previous step's last NORMAL (measured at the converged coordinates the next step starts
+    from)."""
 
-    def __init__(self, model, params, symmetry: int):
+    def __init__(self, model, params, symmetry: int, mpc: bool = False):
         super().__init__(model, params, progress=False)
         self.symmetry = symmetry
+        self.mpc = mpc
         self.steps = []
+        self.start_normals = None
 
     def FinalizeSolutionStep(self):
         super().FinalizeSolutionStep()
@@ -35,28 +41,38 @@ class PartialSlipAnalysis(StructuralMechanicsAnalysis):
         get = mc.GetVariable
         reaction = sum(np.array(n.GetSolutionStepValue(get("REACTION")))
                        for n in part.GetSubModelPart("DISPLACEMENT_bottom").Nodes)
-        scale = part.GetProcessInfo().GetValue(get("SCALE_FACTOR"))
         slave = list(part.GetSubModelPart("Contact_slave").Nodes)
+        normals = np.array([n.GetSolutionStepValue(get("NORMAL")) for n in slave])
         nodes = {
             "x": np.array([[n.X0, n.Y0, n.Z0] for n in slave])
             + np.array([n.GetSolutionStepValue(get("DISPLACEMENT")) for n in slave]),
             "active": np.array([n.Is(mc.ACTIVE) for n in slave]),
             "slip": np.array([n.Is(mc.SLIP) for n in slave]),
             "area": np.array([n.GetValue(get("NODAL_AREA")) for n in slave]),
-            "normal": np.array([n.GetSolutionStepValue(get("NORMAL")) for n in slave]),
-            "traction": scale * np.array([n.GetSolutionStepValue(get("VECTOR_LAGRANGE_MULTIPLIER")) for n in slave]),
+            "normal": normals,
         }
+        if self.mpc:
+            share = np.array([n.GetValue(get("NODAL_MAUX")) for n in slave])
+            force = np.array([n.GetValue(get("CONTACT_FORCE")) for n in slave])
+            nodes.update(area=share, normal=normals if self.start_normals is None else self.start_normals,
+                         traction=np.divide(force, share[:, None], out=np.zeros_like(force), where=share[:, None] > 0))
+            self.start_normals = normals
+        else:
+            scale = part.GetProcessInfo().GetValue(get("SCALE_FACTOR"))
+            nodes["traction"] = scale * np.array([n.GetSolutionStepValue(get("VECTOR_LAGRANGE_MULTIPLIER"))
+                                                  for n in slave])
         self.steps.append({"time": part.GetProcessInfo().GetValue(get("TIME")),
                            "iterations": len(self.solver.LastIterationHistory()),
                            "force": -self.symmetry * reaction, "nodes": nodes})
 
 
-def run(dim: int, label: str, folder: str) -> tuple[list[dict], dict]:
-    case = cm.write_case(dim, label, folder)
+def run(dim: int, label: str, folder: str, mpc: bool = False) -> tuple[list[dict], dict]:
+    """The shift steps against the closed forms (ALM frictional, or frictional MPC with `mpc`)."""
+    case = cm.write_case(dim, label, folder, mpc=mpc)
     reference = hertz.load_reference(case)
     with contextlib.chdir(case):
         analysis = PartialSlipAnalysis(mc.Model(), read_project_parameters("ProjectParameters.json"),
-                                       reference["symmetry_factor"])
+                                       reference["symmetry_factor"], mpc)
         analysis.Run()
     results = []
     for step in analysis.steps[cm.NORMAL_STEPS:]:

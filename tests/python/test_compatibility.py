@@ -29,7 +29,7 @@ def test_parameters_files_validate(path, monkeypatch):
                               "ALMContactFrictionalPureSlip", "PenaltyContactFrictional",
                               "ComponentsMeshTying", "ScalarMeshTying") \
         and (not solver_settings.Has("mpc_contact_settings")
-             or solver_settings["mpc_contact_settings"]["contact_type"].GetString() == "Frictionless")
+             or solver_settings["mpc_contact_settings"]["contact_type"].GetString() in ("Frictionless", "Frictional"))
     if implemented:
         create_solver(mc.Model(), solver_settings)
     else:

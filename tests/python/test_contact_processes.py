@@ -20,7 +20,7 @@ from mortarcontact.solvers import create_solver
 IMPLEMENTED = {("alm_contact_process", "Frictionless"), ("penalty_contact_process", "Frictionless"),
                ("alm_contact_process", "Frictional"), ("alm_contact_process", "FrictionalPureSlip"),
                ("penalty_contact_process", "Frictional"), ("explicit_penalty_contact_process", "Frictionless"),
-               ("mpc_contact_process", "Frictionless"),
+               ("mpc_contact_process", "Frictionless"), ("mpc_contact_process", "Frictional"),
                ("mesh_tying_process", "Frictionless")}  # mesh tying has no contact_type: the key's default
 
 

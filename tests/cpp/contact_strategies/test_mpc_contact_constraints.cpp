@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <unordered_set>
 
 #include "core/utilities/error.h"
@@ -227,6 +228,49 @@ TEST(MPCContactConstraints, DofTiedByTheModelPartIsNamed) {
     EXPECT_NE(message.find("slave node 2, DISPLACEMENT_Y"), std::string::npos) << message;
     EXPECT_NE(message.find("master-slave constraint 99"), std::string::npos) << message;
   }
+}
+
+// Frictional: a slipping node's Coulomb force is -mu |f_n| s on the node and the opposite on the masters
+// (summed: the rows of M sum to D over the overlap), from its normal force only; a sticking node is tied
+// in both components with no slip of the step.
+TEST(MPCContactConstraints, CoulombForceOfASlippingNodeAndTiesOfASticking) {
+  InclinedPair pair(0.5);
+  pair.root.SetBufferSize(2);  // the stick ties keep the relative position of the step's start
+  MPCContactConstraints constraints(pair.contact, pair.computing);
+  constraints.SetFrictional(true);
+  constraints.Measure();
+  constraints.Relate();
+  Node& slipping = pair.root.GetNode(1);
+  Node& sticking = pair.root.GetNode(2);
+  for (Node* node : {&slipping, &sticking}) {
+    node->Set(ACTIVE, true);
+    node->SetValue(FRICTION_COEFFICIENT, 0.2);
+  }
+  slipping.Set(SLIP, true);
+  sticking.Set(SLIP, false);
+  const Array3 tangent(std::cos(0.5), std::sin(0.5), 0.0);
+  const auto terms = constraints.CoulombTerms({{&slipping, tangent}, {&sticking, tangent}});
+  ASSERT_FALSE(terms.empty());
+  // The force the terms add for a residual r = f_ext - f_int at the slipping node (zero elsewhere).
+  const auto forces = [&](const Array3& residual) {
+    std::map<IndexType, Array3> added;
+    for (const auto& term : terms) {
+      EXPECT_EQ(term.from->node, &slipping);
+      const int d = term.from->variable == &DISPLACEMENT_X ? 0 : 1;
+      const int c = term.to->variable == &DISPLACEMENT_X ? 0 : 1;
+      added.try_emplace(term.to->node->Id(), Array3::Zero()).first->second[c] += term.weight * residual[d];
+    }
+    return added;
+  };
+  // Pressed with f_n = n . (f_int - f_ext) = -3, plus a tangential part the force must ignore.
+  const auto added = forces(3.0 * pair.up - 7.0 * tangent);
+  EXPECT_TRUE((added.at(1) - (-0.2 * 3.0 * tangent)).norm() < 1e-12) << added.at(1).transpose();
+  const Array3 on_masters = added.at(11) + added.at(12);
+  EXPECT_TRUE((on_masters - 0.2 * 3.0 * tangent).norm() < 1e-12) << on_masters.transpose();
+  EXPECT_FALSE(added.count(2));
+  // The sticking node: both components tied (node 1 slips: its normal relation only).
+  const auto tied = constraints.TiedRelations();
+  EXPECT_EQ(tied.size(), 3u);
 }
 
 }  // namespace

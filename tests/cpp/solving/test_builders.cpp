@@ -5,6 +5,8 @@
 // constraints give the exact tied solution, singular systems name the free node/variable.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <Eigen/Dense>
 
 #include "core/linear_solvers/umfpack_solver.h"
@@ -256,6 +258,74 @@ TEST_P(BothBuilders, MasterSlaveConstraintGivesTiedSolution) {
   EXPECT_NEAR(r1, -k1 * u2, 1e-12);
   EXPECT_NEAR(r3, -k2 * (w * u2 + offset), 1e-12);
   EXPECT_EQ(builder->SystemSize(), GetParam() == "block" ? 4u : 1u);
+}
+
+// A residual combination (frictional MPC contact's Coulomb force) on a nonlinear chain with a
+// constraint: springs 1-2-3-4-5, node 1 fixed, the cubic support at node 3, u5 = 0.5 u4 + 0.01, node 2
+// taking 0.3 of node 3's residual and node 4 -0.2 of the slave node 5's. The system matrix is the
+// exact derivative of the system residual (central differences over every unknown), and Newton
+// converges quadratically to the state where the combined residual vanishes.
+TEST_P(BothBuilders, ResidualCombinationHasItsExactTangent) {
+  Model model;
+  ModelPart& mp = test::MakeModelPart(model);
+  for (IndexType i = 1; i <= 5; ++i) AddNode(mp, i, static_cast<double>(i), 0.0);
+  for (IndexType i = 1; i <= 4; ++i) AddSpring(mp, i, i, i + 1, static_cast<double>(i));
+  mp.AddCondition(std::make_unique<CubicSupport>(9, Geometry(GeometryType::Point2D, {&mp.GetNode(3)}), 5.0));
+  AddLoad(mp, 10, 4, 2.0);
+  mp.GetNode(1).Fix(DISPLACEMENT_X);
+  auto builder = MakeBuilder(GetParam());
+  const auto dof = [&](IndexType id) { return &mp.GetNode(id).GetDof(DISPLACEMENT_X); };
+  builder->AddConstraint(
+      std::make_shared<MasterSlaveConstraint>(1, *dof(5), std::vector<Dof*>{dof(4)}, std::vector<double>{0.5}, 0.01));
+  builder->SetResidualCombination({{dof(2), dof(3), 0.3}, {dof(4), dof(5), -0.2}});
+  ResidualBasedIncrementalUpdateStaticScheme scheme;
+  builder->SetUpDofSet(mp, scheme);
+  const double state[5] = {0.0, 0.1, 0.4, -0.2, 0.3};
+  for (IndexType i = 1; i <= 5; ++i) mp.GetNode(i).FastGetSolutionStepValue(DISPLACEMENT_X) = state[i - 1];
+  builder->Build(scheme, mp);
+  const Eigen::MatrixXd A(builder->SystemMatrix());
+  const double h = 1e-6;
+  double largest = 0.0, error = 0.0;
+  for (IndexType i = 2; i <= 4; ++i) {
+    double& u = mp.GetNode(i).FastGetSolutionStepValue(DISPLACEMENT_X);
+    const double u0 = u;
+    u = u0 + h;
+    builder->BuildRHS(scheme, mp);
+    const Vector plus = builder->SystemRhs();
+    u = u0 - h;
+    builder->BuildRHS(scheme, mp);
+    const Vector minus = builder->SystemRhs();
+    u = u0;
+    const Eigen::Index column = dof(i)->equation_id;
+    for (IndexType j = 2; j <= 4; ++j) {
+      const Eigen::Index row = dof(j)->equation_id;
+      const double derivative = -(plus[row] - minus[row]) / (2.0 * h);
+      largest = std::max(largest, std::abs(A(row, column)));
+      error = std::max(error, std::abs(derivative - A(row, column)));
+    }
+  }
+  EXPECT_LT(error, 1e-8 * largest);
+  // Without the combination in the matrix the difference would be of the size of its terms.
+  EXPECT_GT(largest, 1.0);
+
+  mp.CloneTimeStep(1.0);
+  NewtonRaphsonStrategy strategy(mp, std::make_shared<ResidualBasedIncrementalUpdateStaticScheme>(),
+                                 std::make_shared<DisplacementCriteria>(1e-13, 1e-16), builder, 30);
+  ASSERT_TRUE(strategy.Solve());
+  const auto& history = strategy.IterationHistory();
+  ASSERT_GE(history.size(), 4u);
+  // Quadratic: each increment at most a multiple of the square of the one before, once small.
+  for (std::size_t k = 2; k + 1 < history.size(); ++k) {
+    if (history[k - 1].increment_norm < 1e-2 && history[k].increment_norm > 1e-12) {
+      EXPECT_LT(history[k].increment_norm, 10.0 * std::pow(history[k - 1].increment_norm, 2)) << "iteration " << k;
+    }
+  }
+  // The combined residual vanishes: node 2's own row plus 0.3 of node 3's.
+  const auto u = [&](IndexType id) { return mp.GetNode(id).FastGetSolutionStepValue(DISPLACEMENT_X); };
+  const double r2 = -(1.0 * (u(2) - u(1)) - 2.0 * (u(3) - u(2)));
+  const double r3 = -(2.0 * (u(3) - u(2)) - 3.0 * (u(4) - u(3)) + 5.0 * std::pow(u(3), 3));
+  EXPECT_NEAR(r2 + 0.3 * r3, 0.0, 1e-10);
+  EXPECT_NEAR(u(5), 0.5 * u(4) + 0.01, 1e-14);
 }
 
 // The model part's constraints (what impose_rigid_movement_process adds) join the builder's at

@@ -1,0 +1,182 @@
+"""Issue 13: frictional MPC contact (mpc_contact_process and mpc_contact_settings with contact_type
+Frictional, Coulomb, 2D).
+
+- a block pressed on a clamped base by its weight and pushed sideways (an imposed displacement of a
+  node of its left side, at mid-height or at its top corner): a small push sticks (the interface
+  carries the push, below mu times the weight, no node slips); a large one slides (the push needs
+  exactly mu times the normal force, to 1e-8);
+- Newton converges: once the stick / slip state stops changing, the next iteration's residual is
+  round-off (the Coulomb force is in the system with its exact tangent);
+- the shared 2D frictional MPC case: the right state is stick (the interface needs 3e-5 of the normal
+  force tangentially, mu = 0.1); ours passes the reference file to 1e-3. Kratos 10.4 ties every
+  component without closing the 0.001 gap, 0.5 % from that reference;
+- Cattaneo-Mindlin in 2D against ALM frictional on the same mesh (about 12 s for both runs).
+"""
+from __future__ import annotations
+
+import importlib.util
+import json
+import os
+
+import numpy as np
+import pytest
+from test_contact_cases import run_csma_case
+
+import mortarcontact as mc
+from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
+from mortarcontact.project_parameters import read_project_parameters
+
+from case_builder import fix_process, run_analysis, write_block_on_base
+from csma_cases import reference_nodes
+
+V = mc.GetVariable
+FRICTION = 0.3
+GRAVITY = 1.0e3
+BLOCK, BASE = (0.5, 0.1), (1.0, 0.25)
+WEIGHT = BLOCK[0] * BLOCK[1] * GRAVITY  # density 1, thickness 1
+CASE_2D = "mpc_contact_tests/2D_contact_simplest_with_friction_patch_matching_test"
+
+
+def _pushed_block(folder, where: str, push: float):
+    """The static block pressed by its weight; the node(s) of sub-part `where` moved by `push` along x."""
+    path = write_block_on_base(
+        str(folder), "block", block=BLOCK, base=BASE, cells=(8, 4, 12, 3), friction=FRICTION,
+        gravity=(GRAVITY, (0.0, -1.0, 0.0)), end_time=1.0, time_step=1.0,
+        solver={"solver_type": "Static", "mpc_contact_settings": {"contact_type": "Frictional"},
+                "residual_relative_tolerance": 1e-12, "residual_absolute_tolerance": 1e-14, "max_iteration": 30},
+        contact=("mpc_contact_process", {"contact_type": "Frictional"}))
+    with open(os.path.join(folder, path)) as f:
+        parameters = json.load(f)
+    parameters["processes"]["constraints_process_list"].append(
+        fix_process(f"Structure.{where}", [push, 0.0, 0.0], constrained=(True, False, False)))
+    with open(os.path.join(folder, path), "w") as f:
+        json.dump(parameters, f)
+    analysis = run_analysis(str(folder), path)
+    assert all(converged for _, _, _, converged, _ in analysis.step_log)
+    return analysis
+
+
+def _interface(analysis):
+    """(slave nodes, their summed CONTACT_FORCE)."""
+    root = analysis.model["Structure"]
+    slaves = [n for n in root.GetSubModelPart("Contact").Nodes if n.Is(mc.SLAVE)]
+    force = sum(np.array(n.GetValue(V("CONTACT_FORCE"))) for n in slaves)
+    return slaves, force
+
+
+def _push(analysis, where):
+    """REACTION_X of the pushed node(s): the push the block needs."""
+    nodes = analysis.model["Structure"].GetSubModelPart(where).Nodes
+    return sum(n.GetSolutionStepValue(V("REACTION_X")) for n in nodes)
+
+
+def _history(analysis):
+    return [record.residual_norm for record in analysis.solver.strategy.GetIterationHistory()]
+
+
+@pytest.mark.parametrize("where", ["block_side", "block_corner"])
+def test_small_push_sticks(tmp_path, where):
+    """A push of 2e-6 needs less than mu times the weight: every node sticks, the interface carries the
+    push and the weight (to 1e-9), and the slave nodes keep their place on the master."""
+    analysis = _pushed_block(tmp_path, where, 2.0e-6)
+    slaves, force = _interface(analysis)
+    push = _push(analysis, where)
+    print(f"stick, pushed at {where}: push {push:.6g} (mu W = {FRICTION * WEIGHT}), "
+          f"{analysis.step_log[0][2]} Newton iterations, residuals {_history(analysis)}")
+    assert 0.0 < push < FRICTION * WEIGHT
+    assert all(n.Is(mc.ACTIVE) and not n.Is(mc.SLIP) for n in slaves)
+    assert force[0] == pytest.approx(-push, rel=1e-9)
+    assert force[1] == pytest.approx(WEIGHT, rel=1e-9)
+
+
+@pytest.mark.parametrize("where", ["block_side", "block_corner"])
+def test_large_push_slides_with_the_coulomb_force(tmp_path, where):
+    """A push of 1e-3 (the block's elastic shear at mu times the weight is of order 1e-5): every node in
+    contact slips (pushed at the top corner, the rear corner node lifts a little), the push needs mu times
+    the normal force to 1e-8, and Newton's iteration after the stick / slip state settles brings the
+    residual to round-off (the Coulomb force's tangent is exact)."""
+    analysis = _pushed_block(tmp_path, where, 1.0e-3)
+    slaves, force = _interface(analysis)
+    push = _push(analysis, where)
+    history = _history(analysis)
+    print(f"slide, pushed at {where}: push {push:.10g} (mu W = {FRICTION * WEIGHT}), "
+          f"{analysis.step_log[0][2]} Newton iterations, residuals {history}")
+    active = [n for n in slaves if n.Is(mc.ACTIVE)]
+    assert len(active) >= len(slaves) - 1 and all(n.Is(mc.SLIP) for n in active)
+    assert all(np.linalg.norm(n.GetValue(V("CONTACT_FORCE"))) == 0.0 for n in slaves if not n.Is(mc.ACTIVE))
+    assert force[1] == pytest.approx(WEIGHT, rel=1e-9)
+    assert push == pytest.approx(FRICTION * force[1], rel=1e-8)
+    assert -force[0] == pytest.approx(FRICTION * force[1], rel=1e-8)
+    assert history[-1] < 1e-12 * max(history) < history[-2]
+
+
+def test_shared_2d_frictional_case(csma_cases, monkeypatch):
+    """The shared case runs unchanged and passes its reference file (its own json check, 1e-3): the
+    interface needs a tangential force 3e-5 of the normal one, well inside mu = 0.1, so every node
+    sticks and the 0.001 gap is closed. The reference equals the frictionless answer of the older
+    Kratos that wrote it; Kratos 10.4 leaves the gap open (0.5 % from it)."""
+    monkeypatch.chdir(csma_cases)
+    analysis, _ = run_csma_case(CASE_2D, "mpc")
+    root = analysis.model["Structure"]
+    slaves = list(root.GetSubModelPart("Contact_Part_Slave").Nodes)
+    assert all(n.Is(mc.ACTIVE) and not n.Is(mc.SLIP) for n in slaves)
+    tangential = sum(abs(n.GetValue(V("CONTACT_FORCE"))[0]) for n in slaves)
+    normal = sum(abs(n.GetValue(V("CONTACT_FORCE"))[1]) for n in slaves)
+    reference = reference_nodes(CASE_2D)
+    difference = max(abs(analysis.snapshot[node][name] - value) for node, values in reference.items()
+                     for name, value in values.items()) / max(abs(v) for values in reference.values()
+                                                               for v in values.values())
+    print(f"2D frictional MPC: {[it for _, _, it, _, _ in analysis.step_log]} Newton iterations; tangential / "
+          f"normal force {tangential / normal:.2e}; to the reference {difference:.1e}")
+    assert tangential < 0.1 * normal
+    assert difference < 1e-3
+    uy = {i: root.GetNode(i).GetSolutionStepValue(V("DISPLACEMENT_Y")) for i in (3, 4, 5, 6)}
+    assert uy[4] - uy[5] == pytest.approx(0.001, abs=1e-12)
+    assert uy[3] - uy[6] == pytest.approx(0.001, abs=1e-12)
+
+
+def test_pure_slip_and_3d_are_not_implemented(csma_cases, monkeypatch):
+    """FrictionalPureSlip and frictional MPC in 3D raise a NotImplementedFeatureError naming the option."""
+    from csma_cases import CSMA_CASES
+
+    monkeypatch.chdir(csma_cases)
+    params = read_project_parameters(os.path.join(CSMA_CASES, f"{CASE_2D}_parameters.json"))
+    params["solver_settings"]["mpc_contact_settings"]["contact_type"].SetString("FrictionalPureSlip")
+    with pytest.raises(mc.NotImplementedFeatureError, match="FrictionalPureSlip"):
+        StructuralMechanicsAnalysis(mc.Model(), params).Run()
+    params = read_project_parameters(
+        os.path.join(CSMA_CASES, "mpc_contact_tests/3D_contact_simplest_patch_matching_test_parameters.json"))
+    params["solver_settings"]["mpc_contact_settings"]["contact_type"].SetString("Frictional")
+    process = params["processes"]["contact_process_list"][0]["Parameters"]
+    process.AddEmptyValue("contact_type")
+    process["contact_type"].SetString("Frictional")
+    with pytest.raises(mc.NotImplementedFeatureError, match="in 3D"):
+        StructuralMechanicsAnalysis(mc.Model(), params).Run()
+
+
+
+@pytest.mark.skipif(importlib.util.find_spec("gmsh") is None, reason="gmsh is not installed")
+def test_cattaneo_mindlin_2d_against_alm(tmp_path):
+    """The 2D Cattaneo-Mindlin run (hertz2d_8k pressed, then shifted) with frictional MPC against ALM
+    frictional on the same mesh. Measured: the stick zone c/a is ALM's at every shift step (0.937 ...
+    0.346, closed form 0.940 ... 0.359), the tangential tractions are as close to the closed form (rms
+    0.036-0.043 mu p0 for both), in 3 Newton iterations per shift step (ALM: 3, and 4 at the last)."""
+    from test_cattaneo_mindlin import run
+
+    alm, _ = run(2, "8k", str(tmp_path / "alm"))
+    ours, _ = run(2, "8k", str(tmp_path / "mpc"), mpc=True)
+    for label, results in (("ALM", alm), ("MPC", ours)):
+        print(label + ": " + "; ".join(
+            f"Q/muP {r['load_ratio']:.3f} c/a {r['c'] / r['a']:.3f} (theory {r['c_theory'] / r['a']:.3f}) "
+            f"q rms {r['traction_error_rms']:.3f} max {r['traction_error_max']:.3f} mu p0, {r['iterations']} it"
+            for r in results))
+    assert len(ours) == len(alm)
+    for mine, theirs in zip(ours, alm):
+        assert mine["load_ratio"] == pytest.approx(theirs["load_ratio"], abs=0.02)
+        # Coulomb holds in the relation's normal up to the Newton tolerance (measured: 1.2e-8 p0 at most)
+        assert mine["slip_rule_error"] < 1e-6
+        assert abs(mine["c_error"]) < 0.03
+        assert abs(mine["c"] - theirs["c"]) < 0.01 * theirs["a"]
+        assert mine["traction_error_rms"] < 0.05
+        assert abs(mine["traction_error_rms"] - theirs["traction_error_rms"]) < 0.005
+        assert mine["iterations"] <= theirs["iterations"]
