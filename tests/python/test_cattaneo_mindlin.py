@@ -110,6 +110,10 @@ def test_cattaneo_mindlin_2d(tmp_path):
 
 
 @pytest.mark.slow
+@pytest.mark.xfail(strict=True, raises=mc.SolutionError, reason=(
+    "issue 12: step 1 stops on a singular system (a sliver pair couples slave nodes 11 and 972, "
+    "MixedULM solves the whole system, and the multiplier row of node 2454 is singular); the same "
+    "since the test was written (bafd3b4) on this machine"))
 def test_cattaneo_mindlin_3d(tmp_path):
     results, _ = run(3, "15k", str(tmp_path))
     print(_table(results))
