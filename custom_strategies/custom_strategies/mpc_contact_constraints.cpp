@@ -76,14 +76,19 @@ double MPCContactConstraints::NodalGap(const Node& node) const {
   return it == gaps_.end() ? 0.0 : it->second;
 }
 
+template <class TValue>
+Array3 MPCContactConstraints::Relative(const Node& node, const SlaveRow& row, TValue value) {
+  Array3 relative = value(node);
+  for (const auto& [master, m] : row.m) relative -= m / row.d * value(*master);
+  return relative;
+}
+
 Array3 MPCContactConstraints::TangentialSlip(const Node& node) const {
   const auto it = rows_.find(const_cast<Node*>(&node));
   if (it == rows_.end() || !(it->second.d > 0.0)) return Array3::Zero();
-  const auto step = [](const Node& n) {
+  const Array3 relative = Relative(node, it->second, [](const Node& n) {
     return Array3(n.FastGetSolutionStepValue(DISPLACEMENT) - n.FastGetSolutionStepValue(DISPLACEMENT, 1));
-  };
-  Array3 relative = step(node);
-  for (const auto& [master, m] : it->second.m) relative -= m / it->second.d * step(*master);
+  });
   const Array3 normal = RelationNormal(node);
   return relative - normal.dot(relative) * normal;
 }
@@ -169,12 +174,8 @@ void MPCContactConstraints::Relate() {
 
 void MPCContactConstraints::RelateStick(Node* node, const SlaveRow& row, const Array3& normal, double gap) {
   // (u_j - P u) at the step's start (its tangential part kept) and now (its normal part closed by the gap).
-  Array3 start = node->FastGetSolutionStepValue(DISPLACEMENT, 1);
-  Array3 now = node->FastGetSolutionStepValue(DISPLACEMENT);
-  for (const auto& [master, m] : row.m) {
-    start -= m / row.d * master->FastGetSolutionStepValue(DISPLACEMENT, 1);
-    now -= m / row.d * master->FastGetSolutionStepValue(DISPLACEMENT);
-  }
+  const Array3 start = Relative(*node, row, [](const Node& n) { return n.FastGetSolutionStepValue(DISPLACEMENT, 1); });
+  const Array3 now = Relative(*node, row, [](const Node& n) { return n.FastGetSolutionStepValue(DISPLACEMENT); });
   const Array3 constant = start - normal.dot(start) * normal + (gap + normal.dot(now)) * normal;
   TieEveryComponent(node, row, constant, stick_relations_);
 }

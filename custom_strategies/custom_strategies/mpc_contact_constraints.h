@@ -111,6 +111,10 @@ class MPCContactConstraints {
     int slave_conditions = 0;
   };
 
+  /// value(j) - sum_i P_ji value(i) for a slave node j of `row` (P = M / D): a nodal quantity relative
+  /// to the mortar projection of the master.
+  template <class TValue>
+  static Array3 Relative(const Node& node, const SlaveRow& row, TValue value);
   /// Forgets the relations of the last Relate / RelateAllComponents (and their normals and operators).
   void ClearRelations();
   /// The per-component relations of a sticking node (frictional).
