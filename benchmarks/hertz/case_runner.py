@@ -165,8 +165,8 @@ def overridden(parameters_text: str, overrides: list[str]) -> str:
         key, _, value = item.partition("=")
         *parents, last = [int(part) if part.isdigit() else part for part in key.split(".")]
         target = parameters
-        for part in parents:
-            target = target[part]
+        for part in parents:  # a missing object on the path is created (e.g. search_parameters)
+            target = target.setdefault(part, {}) if isinstance(part, str) else target[part]
         target[last] = json.loads(value)
     return json.dumps(parameters)
 
