@@ -22,8 +22,8 @@ is reported as "not available"; its later repetitions are skipped.
 would take hours. ``--reuse-kratos`` takes Kratos' records of an earlier run of this script
 (results/CASE_kratos_I.json) where they exist instead of running Kratos again: Kratos does not
 change between two measurements of ours, and its 3D runs take minutes each (the machine line
-then says so; the two codes no longer alternate). ``--linear-solver`` sets mortarcontact's linear_solver_settings (the case files
-keep the Kratos spelling both codes read).
+then says so; the two codes no longer alternate). ``--linear-solver`` sets mortarcontact's
+linear_solver_settings (the case files keep the Kratos spelling both codes read).
 """
 from __future__ import annotations
 
