@@ -145,13 +145,17 @@ def plot(rows, path: str) -> bool:
 
 
 def _earlier_record(path: str) -> dict | None:
-    """A successful record written by an earlier run, or None."""
+    """A successful record written by an earlier run, or None. Its subprocess wall time, which
+    run_once measures and the file lacks, is the runner's own (process start to the end)."""
     try:
         with open(path) as f:
             record = json.load(f)
     except (OSError, ValueError):
         return None
-    return record if record.get("status") == "ok" else None
+    if record.get("status") != "ok":
+        return None
+    record.setdefault("wall_seconds", record.get("process_seconds", record["analysis_seconds"]))
+    return record
 
 
 def main(argv=None) -> int:
