@@ -28,9 +28,10 @@ from mortarcontact.cases.hertz import load_reference
 import harness
 
 #: (column title, clock key) of the parts; "other" is the phase less their sum.
-PARTS = (("symbolic analysis", "analysis"), ("pattern check", "pattern_check"), ("numeric factorization", "factorization"),
-         ("substitution after it", "direct_substitution"), ("GMRES substitutions", "krylov_substitution"),
-         ("GMRES other", "krylov_other"), ("comparison with F", "comparison"))
+PARTS = (("symbolic analysis", "analysis"), ("pattern check", "pattern_check"),
+         ("numeric factorization", "factorization"), ("substitution after it", "direct_substitution"),
+         ("GMRES substitutions", "krylov_substitution"), ("GMRES other", "krylov_other"),
+         ("comparison with F", "comparison"))
 
 
 def summarize(records: list[dict]) -> dict:
