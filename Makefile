@@ -83,6 +83,7 @@ bench: install
 	$(PYTHON) benchmarks/run_benchmarks.py
 	$(PYTHON) benchmarks/hertz/compare.py --cases hertz2d_2k,hertz2d_8k,hertz2d_30k,hertz3d_15k,hertz3dgrid_15k
 	$(PYTHON) benchmarks/hertz/reuse_ab.py
+	$(PYTHON) benchmarks/hertz/linear_phase.py --cases hertz2d_8k,hertz2d_30k,hertz3d_15k,hertz3dgrid_15k
 	$(PYTHON) benchmarks/hertz/wait_policy.py
 	$(PYTHON) benchmarks/hertz/linear_solvers.py
 	$(PYTHON) benchmarks/hertz/contact_scaling.py

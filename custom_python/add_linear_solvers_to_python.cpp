@@ -3,6 +3,7 @@
 
 #include "core/linear_solvers/assembly_communicator.h"
 #include "core/linear_solvers/linear_solver.h"
+#include "core/linear_solvers/solve_clocks.h"
 #include "core/parameters/parameters.h"
 #include "custom_python/python_module.h"
 
@@ -41,6 +42,19 @@ void AddLinearSolversToPython(py::module_& m) {
             return communicator ? communicator->Size() : 1;
           },
           "How many processes the system is distributed over (1: solved within this process).");
+  m.def(
+      "LinearSolveClocks",
+      [] {
+        const SolveClocks& c = SolveClocks::Process();
+        return py::dict(py::arg("phase") = c.phase, py::arg("analysis") = c.analysis,
+                        py::arg("pattern_check") = c.pattern_check, py::arg("factorization") = c.factorization,
+                        py::arg("direct_substitution") = c.direct_substitution,
+                        py::arg("krylov_substitution") = c.krylov_substitution,
+                        py::arg("krylov_other") = c.krylov_other, py::arg("comparison") = c.comparison);
+      },
+      "CPU seconds of the parts of the linear-solve phase so far in this process (SolveClocks): the builder's "
+      "whole solve phase, symbolic analyses, pattern checks, numeric factorizations, substitutions after a "
+      "factorization and inside GMRES, the rest of GMRES, the comparison with the factorized matrix.");
   m.def("LaunchedProcesses", &AssemblyCommunicator::LaunchedSize,
         "How many processes mpirun (or mpiexec, srun) started this one among, from its environment; 1 without.");
   m.def("LaunchedRank", &AssemblyCommunicator::LaunchedRank,

@@ -19,10 +19,10 @@ Kratos spelling that both codes read, e.g. for the 3D cases too large for a dire
 Recorded: wall time of the analysis (Initialize + solution loop + Finalize, imports excluded)
 and of its set-up, time and Newton iterations per step, mortarcontact's time per phase (search,
 mortar weighted gap and normals, contact-condition and element assembly, DoF set-up and sparsity,
-linear solve, rest) (Kratos: ProcessInfo NL_ITERATION_NUMBER
-after each step; mortarcontact: the stage's step log), convergence per step, peak resident memory
-of the process (getrusage), and at the end: per slave node the initial coordinates,
-LAGRANGE_MULTIPLIER_CONTACT_PRESSURE (historical), AUGMENTED_NORMAL_CONTACT_PRESSURE and
+linear solve, rest) and the CPU seconds of the parts of the linear solve (mc.LinearSolveClocks)
+(Kratos: ProcessInfo NL_ITERATION_NUMBER after each step; mortarcontact: the stage's step log),
+convergence per step, peak resident memory of the process (getrusage), and at the end: per slave
+node the initial coordinates, LAGRANGE_MULTIPLIER_CONTACT_PRESSURE (historical), AUGMENTED_NORMAL_CONTACT_PRESSURE and
 NORMAL_CONTACT_STRESS (MPC contact; non-historical), WEIGHTED_GAP and the ACTIVE flag; the sums of
 REACTION over the clamped bottom and the pushed top. A failure is recorded as status "not
 available" (not implemented) or "failed" with the message, and the script exits 0 so that the
@@ -229,6 +229,7 @@ def run_mortarcontact(parameters_path: str, dim: int, record: dict, linear_solve
         record["steps"].append({"time": t, "iterations": iterations, "converged": converged, "seconds": seconds})
     record["phases"] = _mortarcontact_phases(analysis, record["analysis_seconds"])
     record["linear_solver_counters"] = analysis.solver.strategy.GetBuilderAndSolver().GetLinearSolverCounters()
+    record["linear_solve_clocks"] = mc.LinearSolveClocks()  # CPU seconds per part of the solve phase
     searches = [s for p in analysis.processes for s in getattr(p, "searches", [])]
     record["contact_pairs"] = sum(s.ComputingPart().NumberOfConditions() for s in searches)
     record["searches"] = sum(s.NumberOfSearches() for s in searches)

@@ -3,12 +3,15 @@
 
 #include <cassert>
 
+#include "core/linear_solvers/solve_clocks.h"
+
 namespace mc {
 
 void DirectSolver::Initialize(const SparseMatrix& A) {
   Clear();
   if (A.rows() != A.cols())
     throw SolutionError(Concat(library_, ": matrix is ", A.rows(), "x", A.cols(), ", not square"));
+  SolveClocks::Scope clock(SolveClocks::Process().analysis);
   const SparseMatrix& M = CompressedView(A, compressed_);
   Analyze(M);
   pattern_.Assign(M);
@@ -18,16 +21,30 @@ void DirectSolver::Initialize(const SparseMatrix& A) {
 void DirectSolver::Solve(const SparseMatrix& A, Vector& x, const Vector& b) {
   assert(b.size() == A.rows());
   FactorizeNumeric(A);
+  SolveClocks::Scope clock(SolveClocks::Process().direct_substitution);
   Substitute(x, b);
 }
 
 void DirectSolver::FactorizeNumeric(const SparseMatrix& A) {
-  const SparseMatrix& M = CompressedView(A, compressed_);
-  if (pattern_.Empty() || !pattern_.Matches(M)) Initialize(M);
+  SolveClocks& clocks = SolveClocks::Process();
+  const SparseMatrix* M = nullptr;
+  bool analysed = false;
+  {
+    SolveClocks::Scope clock(clocks.pattern_check);
+    M = &CompressedView(A, compressed_);
+    analysed = !pattern_.Empty() && pattern_.Matches(*M);
+  }
+  if (!analysed) {
+    if (has_factors_ && factors_size_ == M->rows()) KeepOrderingForNextAnalysis();
+    Initialize(*M);
+  }
   has_factors_ = false;
-  Factorize(M);
+  {
+    SolveClocks::Scope clock(clocks.factorization);
+    Factorize(*M);
+  }
   has_factors_ = true;
-  factors_size_ = M.rows();
+  factors_size_ = M->rows();
   ++numeric_count_;
 }
 

@@ -26,8 +26,8 @@ class DirectSolver : public LinearSolver {
   void Clear() final;
 
   /// Numeric factorization of `A` alone (analysing its pattern first when it is not the analysed
-  /// one); `SubstituteFactors` then solves with it, also after A has changed: the factors of an
-  /// earlier matrix precondition a Krylov solve (FactorizationReuseSolver).
+  /// one, from the ordering of the factors held when the solver keeps it); `SubstituteFactors` then solves with it,
+  /// also after A has changed: the factors of an earlier matrix precondition a Krylov solve (FactorizationReuseSolver).
   void FactorizeNumeric(const SparseMatrix& A);
   /// Forward and back substitution with the factors of the last factorization.
   void SubstituteFactors(Vector& x, const Vector& b);
@@ -59,6 +59,9 @@ class DirectSolver : public LinearSolver {
   virtual void Substitute(Vector& x, const Vector& b) = 0;
   /// Frees the library's symbolic and numeric objects (no-op when there are none).
   virtual void Release() = 0;
+  /// Called before the analysis of a new pattern of the same order as the factors held: a solver
+  /// may keep their column ordering for that analysis (UMFPACK). Not called after Clear.
+  virtual void KeepOrderingForNextAnalysis() {}
 
  private:
   std::string library_;

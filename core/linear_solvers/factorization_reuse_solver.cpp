@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/linear_solvers/solve_clocks.h"
+
 namespace mc {
 
 namespace {
@@ -36,11 +38,24 @@ void FactorizationReuseSolver::Solve(const SparseMatrix& A, Vector& x, const Vec
     return;
   }
   const int budget = Budget();
-  if (ChangedRows(A) >= budget) {
+  long changed = 0;
+  {
+    SolveClocks::Scope clock(SolveClocks::Process().comparison);
+    changed = ChangedRows(A);
+  }
+  if (changed >= budget) {
     SolveDirect(A, x, b);
     return;
   }
-  const bool converged = SolveWithKrylov(A, x, b, budget);
+  SolveClocks& clocks = SolveClocks::Process();
+  const double substitutions_before = clocks.krylov_substitution;
+  double krylov = 0.0;
+  bool converged = false;
+  {
+    SolveClocks::Scope clock(krylov);
+    converged = SolveWithKrylov(A, x, b, budget);
+  }
+  clocks.krylov_other += krylov - (clocks.krylov_substitution - substitutions_before);
   krylov_iterations_ += last_iterations_;
   if (converged) {
     ++krylov_solves_;
@@ -113,7 +128,12 @@ long FactorizationReuseSolver::ChangedRows(const SparseMatrix& A) {
 
 void FactorizationReuseSolver::SolveDirect(const SparseMatrix& A, Vector& x, const Vector& b) {
   direct_->FactorizeNumeric(A);
-  direct_->SubstituteFactors(x, b);
+  SolveClocks& clocks = SolveClocks::Process();
+  {
+    SolveClocks::Scope clock(clocks.direct_substitution);
+    direct_->SubstituteFactors(x, b);
+  }
+  SolveClocks::Scope clock(clocks.comparison);
   factorized_ = A;
   RowNorms(factorized_, factorized_row_norms_);
   refactorize_ = false;
@@ -132,7 +152,11 @@ bool FactorizationReuseSolver::SolveWithKrylov(const SparseMatrix& A, Vector& x,
   sines_.setZero(budget);
   rotated_rhs_.setZero(budget + 1);
 
-  direct_->SubstituteFactors(basis_[0], b);
+  double& substitution = SolveClocks::Process().krylov_substitution;
+  {
+    SolveClocks::Scope clock(substitution);
+    direct_->SubstituteFactors(basis_[0], b);
+  }
   const double beta = basis_[0].norm();
   if (beta == 0.0) {
     x.setZero(n);
@@ -148,7 +172,10 @@ bool FactorizationReuseSolver::SolveWithKrylov(const SparseMatrix& A, Vector& x,
   for (int j = 0; j < budget; ++j) {
     work_.noalias() = A * basis_[j];
     Vector& w = basis_[j + 1];
-    direct_->SubstituteFactors(w, work_);
+    {
+      SolveClocks::Scope clock(substitution);
+      direct_->SubstituteFactors(w, work_);
+    }
     for (int pass = 0; pass < 2; ++pass) {
       for (int i = 0; i <= j; ++i) {
         const double h = basis_[i].dot(w);

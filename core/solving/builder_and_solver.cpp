@@ -8,6 +8,7 @@
 #include <map>
 #include <type_traits>
 
+#include "core/linear_solvers/solve_clocks.h"
 #include "core/model/master_slave_constraint.h"
 #include "core/model/model_part.h"
 #include "core/model/parallel_utilities.h"
@@ -586,6 +587,7 @@ void BuilderAndSolver::SolveSystem() {
   if (!linear_solver_) throw Error(Concat(Name(), " builder: no linear solver was given"));
   {
     ScopedTimer timer(timings_.solve);
+    SolveClocks::Scope clock(SolveClocks::Process().phase);
     if (solver_pattern_version_ != pattern_version_ || solver_combination_version_ != combination_version_) {
       if (communicator_) linear_solver_->SetRowPartition(partition_);
       linear_solver_->Initialize(A_);

@@ -11,8 +11,9 @@ namespace mc {
 ///
 /// Sets, on glibc only: blocks up to 32 MB (glibc's largest mmap threshold) come from the heap,
 /// which is trimmed only beyond 128 MB of free top, and grows with 16 MB of padding. Blocks above
-/// 32 MB (factors of large 3D systems) are still mapped and unmapped by the kernel; there the
-/// zero-fill is small beside the factorization. (A 1 GB trim threshold kept 100 MB more at the
+/// 32 MB are still mapped and unmapped by the kernel; for SuiteSparse's factors
+/// SuiteSparseMemory keeps them instead (hertz2d_30k: 18 % of UMFPACK's numeric time was the
+/// zero-fill of a 40 MB block). (A 1 GB trim threshold kept 100 MB more at the
 /// peak of hertz3d_50k for no gain.) The setting is process-wide; the Python module
 /// applies it on import unless MORTARCONTACT_HEAP_TUNING=0. Returns whether it was applied.
 bool TuneHeapForRepeatedFactorizations();

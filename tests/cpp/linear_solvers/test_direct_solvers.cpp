@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Linear solvers area: the direct solvers (UMFPACK, KLU, CHOLMOD, Eigen SparseLU, scaling and
 // fallback wrappers) reach the manufactured solution of SPD and non-symmetric systems to 1e-10,
-// reuse the symbolic analysis when only values change, and name the equation of a zero pivot.
+// reuse the symbolic analysis when only values change, and name the equation of a zero pivot;
+// UMFPACK analyses a new pattern from the ordering of its factors and reuses their memory.
 #include <gtest/gtest.h>
+#include <suitesparse/SuiteSparse_config.h>
 
+#include <cstring>
 #include <functional>
 #include <memory>
 
@@ -12,6 +15,7 @@
 #include "core/linear_solvers/fallback_solver.h"
 #include "core/linear_solvers/klu_solver.h"
 #include "core/linear_solvers/scaling_solver.h"
+#include "core/linear_solvers/suitesparse_memory.h"
 #include "core/linear_solvers/umfpack_solver.h"
 #include "test_matrices.h"
 
@@ -122,6 +126,74 @@ TEST(DirectSolvers, SymbolicAnalysisIsReusedWhenOnlyValuesChange) {
   ExpectSymbolicReuse(cholmod, Poisson2D(kGrid));
   EigenSparseLUSolver sparse_lu;
   ExpectSymbolicReuse(sparse_lu, ConvectionDiffusion2D(kGrid));
+}
+
+// A new pattern of the same order (the contact pairs of a new step): UMFPACK analyses it from the
+// column ordering of the factors it holds, and solves exactly; after Clear the ordering is new.
+TEST(DirectSolvers, UmfpackAnalysesANewPatternFromTheOrderingOfItsFactors) {
+  const SparseMatrix A = ConvectionDiffusion2D(kGrid);
+  SparseMatrix B = A;  // A with one more coupling: another pattern of the same order
+  B.coeffRef(0, kGrid * kGrid - 1) = -0.25;
+  B.makeCompressed();
+  const Vector exact = ManufacturedSolution(A.rows());
+  UmfpackSolver umfpack;
+  Vector x;
+  umfpack.FactorizeNumeric(A);
+  EXPECT_FALSE(umfpack.LastAnalysisKeptOrdering());
+  umfpack.FactorizeNumeric(B);
+  EXPECT_EQ(umfpack.SymbolicAnalysesNumber(), 2);
+  EXPECT_TRUE(umfpack.LastAnalysisKeptOrdering());
+  umfpack.SubstituteFactors(x, B * exact);
+  EXPECT_LT(RelativeError(x, exact), 1e-10);
+  umfpack.Clear();
+  umfpack.FactorizeNumeric(A);
+  EXPECT_FALSE(umfpack.LastAnalysisKeptOrdering());
+  umfpack.SubstituteFactors(x, A * exact);
+  EXPECT_LT(RelativeError(x, exact), 1e-10);
+}
+
+// The factors' block of one factorization serves the next one (no fresh pages), with the same
+// answer to the last bit.
+TEST(DirectSolvers, UmfpackReusesTheMemoryOfItsPreviousFactors) {
+  const SparseMatrix A = ConvectionDiffusion2D(150);
+  const Vector b = A * ManufacturedSolution(A.rows());
+  UmfpackSolver umfpack;
+  Vector first, second;
+  umfpack.FactorizeNumeric(A);
+  umfpack.SubstituteFactors(first, b);
+  const long reuses = SuiteSparseMemory::Reuses();
+  umfpack.FactorizeNumeric(A);
+  umfpack.SubstituteFactors(second, b);
+  EXPECT_GT(SuiteSparseMemory::Reuses(), reuses);
+  EXPECT_EQ(first, second);
+}
+
+TEST(SuiteSparseMemory, KeepsTheLargestFreedBlockForARequestOfAboutItsSize) {
+  SuiteSparseMemory::Install();
+  // Larger than any block the other tests leave kept, which this request therefore releases.
+  constexpr std::size_t kBig = 16 * SuiteSparseMemory::kKeptMinBytes;
+  void* block = SuiteSparse_config.malloc_func(kBig);
+  ASSERT_NE(block, nullptr);
+  std::memset(block, 1, 64);
+  // Shrinking keeps the block and its capacity (UMFPACK trims its factors after a factorization).
+  EXPECT_EQ(SuiteSparse_config.realloc_func(block, kBig / 2), block);
+  SuiteSparse_config.free_func(block);
+  EXPECT_EQ(SuiteSparseMemory::KeptBytes(), kBig);
+  // A small work array does not take it; a request of at least a quarter of its size does.
+  void* small = SuiteSparse_config.malloc_func(SuiteSparseMemory::kKeptMinBytes / 2);
+  EXPECT_NE(small, block);
+  void* again = SuiteSparse_config.calloc_func(kBig / 8, 2);
+  EXPECT_EQ(again, block);
+  EXPECT_EQ(static_cast<const char*>(again)[kBig / 4 - 1], 0);  // zeroed as calloc does
+  EXPECT_EQ(SuiteSparseMemory::KeptBytes(), 0u);
+  // Growing past the capacity moves the contents to a new block.
+  static_cast<char*>(again)[10] = 7;
+  void* grown = SuiteSparse_config.realloc_func(again, 2 * kBig);
+  ASSERT_NE(grown, nullptr);
+  EXPECT_EQ(static_cast<const char*>(grown)[10], 7);
+  SuiteSparse_config.free_func(grown);
+  SuiteSparse_config.free_func(small);
+  EXPECT_EQ(SuiteSparseMemory::KeptBytes(), 2 * kBig);
 }
 
 TEST(DirectSolvers, ZeroRowAndColumnNamesTheEquation) {
