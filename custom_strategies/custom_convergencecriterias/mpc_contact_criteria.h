@@ -26,10 +26,11 @@ namespace mc {
 /// then s = -R_t / |R_t| (the way the tie held it back). A slipping node carries the Coulomb force
 /// -mu |f_n| s (MPCContactConstraints::CoulombTerms, in the system with its exact tangent) and sticks
 /// again when its slip of the step no longer runs along s (s . slip <= 0: the friction would drive
-/// it). Converged when no node changed its active or slip state. CONTACT_FORCE is R (normal and
-/// tangential), TANGENTIAL_CONTACT_STRESS |R_t| / NODAL_MAUX. Kratos compares |R_t| / NODAL_MAUX, a
-/// pressure, with -mu f_n, a force: here both sides are forces. Only 2D: in 3D the slip direction
-/// would change within the step (not implemented, the process says so).
+/// it); while it slips, s becomes the direction of that slip (in 2D it stays; in 3D it may turn: s is
+/// held within an iteration, a fixed point, so the Coulomb force's tangent is exact but for the turn
+/// of s). Converged when no node changed its active or slip state and no direction turned by more
+/// than 1e-8. CONTACT_FORCE is R (normal and tangential), TANGENTIAL_CONTACT_STRESS |R_t| / NODAL_MAUX.
+/// Kratos compares |R_t| / NODAL_MAUX, a pressure, with -mu f_n, a force: here both sides are forces.
 ///
 /// Differences from Kratos, by design: Kratos tests both conditions on every node, but an active
 /// node's gap is the constraint's, zero up to round-off, whose sign would keep it (or not) at random;
@@ -50,6 +51,9 @@ class MPCContactCriteria : public ConvergenceCriteria {
   /// Frictional: the unit slip direction s of every active node (of a sticking one, the way it would
   /// slip), held until the next PostCriteria.
   const std::unordered_map<const Node*, Array3>& SlipDirections() const noexcept { return directions_; }
+  /// Frictional: mu |f_n| / |slip| of the slipping nodes whose direction is that of their slip of the
+  /// step (see MPCContactConstraints::CoulombTerms); E sqrt(NODAL_MAUX) for one that starts slipping.
+  const std::unordered_map<const Node*, double>& TurnStiffness() const noexcept { return turn_stiffness_; }
 
  private:
   /// Frictional: the stick / slip state of a slave node from its tangential reaction (see the class
@@ -59,6 +63,13 @@ class MPCContactCriteria : public ConvergenceCriteria {
   std::shared_ptr<const MPCContactConstraints> constraints_;
   std::size_t changes_ = 0;
   std::unordered_map<const Node*, Array3> directions_;
+  std::unordered_map<const Node*, double> turn_stiffness_;
+  double young_modulus_ = 0.0;  ///< of the last PostCriteria
+  /// Frictional: the largest change |s_new - s_old| of a slipping node's direction in the last PostCriteria.
+  double turn_ = 0.0;
+  static constexpr double kTurnTolerance = 1e-8;
+  /// A node touching down slips when its slip of the step exceeds this fraction of its size sqrt(NODAL_MAUX).
+  static constexpr double kMovingSlip = 1e-6;
 };
 
 }  // namespace mc

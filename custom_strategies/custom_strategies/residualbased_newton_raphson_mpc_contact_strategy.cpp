@@ -108,14 +108,15 @@ bool ResidualBasedNewtonRaphsonMPCContactStrategy::NewtonIteration(int iteration
   if (settings_.simplified_semi_smooth_newton) return converged;
   const bool unchanged = UpdateActiveSet() || HoldCycle();
   history_.back().converged = converged && unchanged;
-  history_.back().criteria.push_back(mpc_criteria_->LastValues().front());
+  for (const CriterionValue& value : mpc_criteria_->LastValues()) history_.back().criteria.push_back(value);
   return history_.back().converged;
 }
 
 void ResidualBasedNewtonRaphsonMPCContactStrategy::ApplyConstraints() {
   constraints_->Apply(*builder_);
-  if (constraints_->IsFrictional())
-    builder_->SetResidualCombination(constraints_->CoulombTerms(mpc_criteria_->SlipDirections()));
+  if (!constraints_->IsFrictional()) return;
+  auto coulomb = constraints_->CoulombTerms(mpc_criteria_->SlipDirections(), mpc_criteria_->TurnStiffness());
+  builder_->SetResidualCombination(std::move(coulomb.combination), std::move(coulomb.stiffness));
 }
 
 bool ResidualBasedNewtonRaphsonMPCContactStrategy::SolveStepAttempt() {

@@ -2,7 +2,7 @@
 searches are those of the other contact processes; the pairs are ``MPCMortarContactCondition<geometry>``,
 which add nothing to the system: the MPC strategy ties each active slave node's normal displacement to
 the mortar projection of the master (D^-1 M) with a master-slave constraint, and releases it when its
-reaction pulls (``reaction_check_stiffness_factor``). ``contact_type`` Frictional (Coulomb, 2D): a
+reaction pulls (``reaction_check_stiffness_factor``). ``contact_type`` Frictional (Coulomb): a
 sticking node is tied in every component, a slipping one in the normal with its Coulomb force in the
 system (MPCContactCriteria decides stick and slip from the reactions). With ``contact_type`` "MeshTying"
 every displacement component of every slave node is tied from the first step, for good (mesh tying by
@@ -130,10 +130,6 @@ class MPCContactProcess(SearchBaseProcess):
         info = self.root.GetProcessInfo()
         info.SetValue(_core.REACTION_CHECK_STIFFNESS_FACTOR,
                       self.settings["reaction_check_stiffness_factor"].GetDouble())
-        if self.frictional and info.GetValue(_core.DOMAIN_SIZE) == 3:
-            raise _core.NotImplementedFeatureError(
-                f"{self.settings['contact_type'].Where()}: '{self.settings['contact_type'].GetString()}' in 3D: "
-                "frictional MPC contact is implemented in 2D (in 3D the slip direction turns within a step)")
         # SLIP of the root tells the MPC strategy the contact is frictional.
         for part in (self.root, self.root.GetSubModelPart("Contact"), self.root.GetSubModelPart("ComputingContact")):
             part.Set(_core.CONTACT, True)

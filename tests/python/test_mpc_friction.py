@@ -26,7 +26,7 @@ import mortarcontact as mc
 from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
 from mortarcontact.project_parameters import read_project_parameters
 
-from case_builder import fix_process, run_analysis, write_block_on_base
+from case_builder import fix_process, run_analysis, write_block_on_base, write_block_on_base_3d
 from csma_cases import reference_nodes
 
 V = mc.GetVariable
@@ -135,8 +135,8 @@ def test_shared_2d_frictional_case(csma_cases, monkeypatch):
     assert uy[3] - uy[6] == pytest.approx(0.001, abs=1e-12)
 
 
-def test_pure_slip_and_3d_are_not_implemented(csma_cases, monkeypatch):
-    """FrictionalPureSlip and frictional MPC in 3D raise a NotImplementedFeatureError naming the option."""
+def test_pure_slip_is_not_implemented(csma_cases, monkeypatch):
+    """FrictionalPureSlip raises a NotImplementedFeatureError naming the option."""
     from csma_cases import CSMA_CASES
 
     monkeypatch.chdir(csma_cases)
@@ -144,15 +144,70 @@ def test_pure_slip_and_3d_are_not_implemented(csma_cases, monkeypatch):
     params["solver_settings"]["mpc_contact_settings"]["contact_type"].SetString("FrictionalPureSlip")
     with pytest.raises(mc.NotImplementedFeatureError, match="FrictionalPureSlip"):
         StructuralMechanicsAnalysis(mc.Model(), params).Run()
-    params = read_project_parameters(
-        os.path.join(CSMA_CASES, "mpc_contact_tests/3D_contact_simplest_patch_matching_test_parameters.json"))
-    params["solver_settings"]["mpc_contact_settings"]["contact_type"].SetString("Frictional")
-    process = params["processes"]["contact_process_list"][0]["Parameters"]
-    process.AddEmptyValue("contact_type")
-    process["contact_type"].SetString("Frictional")
-    with pytest.raises(mc.NotImplementedFeatureError, match="in 3D"):
-        StructuralMechanicsAnalysis(mc.Model(), params).Run()
 
+
+def _pushed_block_3d(folder, push):
+    """The 3D block (0.4 x 0.4 x 0.1 on a 0.8 x 0.8 x 0.2 base) pressed by its weight, its top face moved
+    by `push` in the plane."""
+    path = write_block_on_base_3d(
+        str(folder), "block3d", block=BLOCK_3D, base=(0.8, 0.8, 0.2), cells=(4, 4, 2, 6, 6, 2), friction=FRICTION,
+        gravity=(GRAVITY, (0.0, 0.0, -1.0)),
+        solver={"mpc_contact_settings": {"contact_type": "Frictional"},
+                "residual_relative_tolerance": 1e-12, "residual_absolute_tolerance": 1e-14, "max_iteration": 30},
+        contact=("mpc_contact_process", {"contact_type": "Frictional"}))
+    with open(os.path.join(folder, path)) as f:
+        parameters = json.load(f)
+    parameters["processes"]["constraints_process_list"].append(
+        fix_process("Structure.block_top", [*push, 0.0], constrained=(True, True, False)))
+    with open(os.path.join(folder, path), "w") as f:
+        json.dump(parameters, f)
+    analysis = run_analysis(str(folder), path)
+    assert all(converged for _, _, _, converged, _ in analysis.step_log)
+    return analysis
+
+
+BLOCK_3D = (0.4, 0.4, 0.1)
+WEIGHT_3D = BLOCK_3D[0] * BLOCK_3D[1] * BLOCK_3D[2] * GRAVITY
+
+
+@pytest.mark.parametrize("push", [(2.0e-6, 1.0e-6), (1.0e-3, 5.0e-4)], ids=["stick", "slide"])
+def test_3d_block_pushed_at_its_top(tmp_path, push):
+    """3D: the block pressed by its weight, its top face pushed along (2, 1). A small push sticks: the
+    interface carries the push, below mu W. A large one slides: every node in contact slips, its
+    tangential force mu times its normal one (1e-8) against its slip, and the forces balance the push
+    and the weight; once the state has settled, Newton converges quadratically."""
+    analysis = _pushed_block_3d(tmp_path, push)
+    slaves, force = _interface(analysis)
+    reaction = sum(np.array(n.GetSolutionStepValue(V("REACTION")))
+                   for n in analysis.model["Structure"].GetSubModelPart("block_top").Nodes)
+    history = _history(analysis)
+    print(f"3D {'stick' if push[0] < 1e-5 else 'slide'}: push {reaction[:2]} (mu W = {FRICTION * WEIGHT_3D}), "
+          f"{analysis.step_log[0][2]} Newton iterations, residuals {history}")
+    assert force[2] == pytest.approx(WEIGHT_3D, rel=1e-9)
+    assert np.linalg.norm(force[:2] + reaction[:2]) < 1e-9 * WEIGHT_3D
+    active = [n for n in slaves if n.Is(mc.ACTIVE)]
+    if push[0] < 1e-5:
+        assert len(active) == len(slaves)
+        assert np.linalg.norm(reaction[:2]) < FRICTION * WEIGHT_3D
+        # Corner nodes slip under the Poisson mismatch with s held within an iteration: superlinear
+        # (2.3, 1.8e-3, 1.1e-5, 1.4e-8, 7e-14).
+        assert analysis.step_log[0][2] <= 5
+        return
+    assert active and all(n.Is(mc.SLIP) for n in active)
+    for n in active:
+        f = np.array(n.GetValue(V("CONTACT_FORCE")))
+        assert f[2] > 0.0
+        assert np.linalg.norm(f[:2]) == pytest.approx(FRICTION * f[2], rel=1e-8, abs=1e-10 * WEIGHT_3D)
+        slip = np.array(n.GetSolutionStepValue(V("DISPLACEMENT")))[:2]
+        assert np.dot(f[:2], slip) < 0.0
+    # The Coulomb forces sum to mu W in magnitude; their directions differ slightly (the block shears).
+    total = sum(np.linalg.norm(np.array(n.GetValue(V("CONTACT_FORCE")))[:2]) for n in active)
+    assert total == pytest.approx(FRICTION * WEIGHT_3D, rel=1e-8)
+    assert np.linalg.norm(force[:2]) == pytest.approx(FRICTION * WEIGHT_3D, rel=1e-4)
+    # 7 iterations: 312, 10, 0.06, 0.32 (the state settled), 3.5e-4, 5.8e-9, 2.4e-13: quadratic.
+    assert analysis.step_log[0][2] <= 7
+    scaled = np.array(history) / history[0]
+    assert scaled[-2] < 100 * scaled[-3] ** 2
 
 
 @pytest.mark.skipif(importlib.util.find_spec("gmsh") is None, reason="gmsh is not installed")

@@ -249,7 +249,7 @@ TEST(MPCContactConstraints, CoulombForceOfASlippingNodeAndTiesOfASticking) {
   slipping.Set(SLIP, true);
   sticking.Set(SLIP, false);
   const Array3 tangent(std::cos(0.5), std::sin(0.5), 0.0);
-  const auto terms = constraints.CoulombTerms({{&slipping, tangent}, {&sticking, tangent}});
+  const auto terms = constraints.CoulombTerms({{&slipping, tangent}, {&sticking, tangent}}, {}).combination;
   ASSERT_FALSE(terms.empty());
   // The force the terms add for a residual r = f_ext - f_int at the slipping node (zero elsewhere).
   const auto forces = [&](const Array3& residual) {
