@@ -21,6 +21,15 @@ double YoungModulus(const ModelPart& root) {
   return 0.0;
 }
 
+/// The tangential reaction without its fixed components: the support carries those (on a symmetry
+/// plane the reaction includes the plane's force, which friction neither bears nor can relieve).
+Array3 FreeTangential(const Node& node, Array3 tangential) {
+  const Variable<double>* const displacements[3] = {&DISPLACEMENT_X, &DISPLACEMENT_Y, &DISPLACEMENT_Z};
+  for (int c = 0; c < 3; ++c)
+    if (node.HasDofFor(*displacements[c]) && node.GetDof(*displacements[c]).fixed) tangential[c] = 0.0;
+  return tangential;
+}
+
 }  // namespace
 
 MPCContactCriteria::MPCContactCriteria(std::shared_ptr<const MPCContactConstraints> constraints)
@@ -60,7 +69,7 @@ bool MPCContactCriteria::PostCriteria(ModelPart& model_part, const DofsArray&, c
     node->Set(ACTIVE, active);
     node->SetValue(CONTACT_FORCE, active ? Array3(force * normal) : Array3(Array3::Zero()));
     node->SetValue(NORMAL_CONTACT_STRESS, active ? pressure : 0.0);
-    if (frictional) UpdateSlip(*node, was_active, reaction - force * normal, force);
+    if (frictional) UpdateSlip(*node, was_active, FreeTangential(*node, reaction - force * normal), force);
   }
   return changes_ == 0 && turn_ <= kTurnTolerance;
 }
@@ -84,9 +93,9 @@ void MPCContactCriteria::UpdateSlip(Node& node, bool was_active, const Array3& t
       // released and caught again: a cycle).
       slip = slid > kMovingSlip * size;
     else if (held_slip)
-      slip = held->second.dot(step_slip) > 0.0;
+      slip = pure_slip_ || held->second.dot(step_slip) > 0.0;
     else
-      slip = length > mu * std::abs(normal_force);
+      slip = length > (pure_slip_ ? 0.0 : mu * std::abs(normal_force));
     if ((held_slip || (!was_active && slip)) && slid > 0.0) {
       // s is the direction of the slip of the step (in 2D the same or reversed; in 3D it may turn), also
       // for a node that turned back and sticks: if the cycle guard holds it slipping, it slips that way.

@@ -26,10 +26,20 @@ namespace mc {
 /// then s = -R_t / |R_t| (the way the tie held it back). A slipping node carries the Coulomb force
 /// -mu |f_n| s (MPCContactConstraints::CoulombTerms, in the system with its exact tangent) and sticks
 /// again when its slip of the step no longer runs along s (s . slip <= 0: the friction would drive
-/// it); while it slips, s becomes the direction of that slip (in 2D it stays; in 3D it may turn: s is
-/// held within an iteration, a fixed point, so the Coulomb force's tangent is exact but for the turn
-/// of s). Converged when no node changed its active or slip state and no direction turned by more
-/// than 1e-8. CONTACT_FORCE is R (normal and tangential), TANGENTIAL_CONTACT_STRESS |R_t| / NODAL_MAUX.
+/// it). While it slips, s is the direction of that slip (in 2D it stays; in 3D it may turn), held within
+/// an iteration with its turn stiffness (CoulombTerms); a node that turned back keeps the direction of
+/// its last slip, so that if the cycle guard holds it slipping, it slips the way it moves. A node that
+/// touches down within the step while it moves (its slip of the step above 1e-6 of its size) slips
+/// the way it moves: tied where the step started it would be dragged back the whole way. The fixed
+/// components of R_t are left out (the support carries them: a symmetry plane's force is no friction).
+/// Converged when no node changed its active or slip state and no direction turned by more than 1e-8.
+/// CONTACT_FORCE is R (normal and tangential), TANGENTIAL_CONTACT_STRESS |R_t| / NODAL_MAUX.
+///
+/// PureSlip (SetPureSlip; contact_type FrictionalPureSlip): every active node slips. A node that
+/// becomes active is tied in every component for one iteration, its trial: its tangential reaction
+/// gives s = -R_t / |R_t| (a normal-only tie would leave its tangential DoFs free, with no reaction to
+/// take a direction from); from then on it slips, s following its slip of the step, also when it
+/// reverses.
 /// Kratos compares |R_t| / NODAL_MAUX, a pressure, with -mu f_n, a force: here both sides are forces.
 ///
 /// Differences from Kratos, by design: Kratos tests both conditions on every node, but an active
@@ -46,6 +56,8 @@ class MPCContactCriteria : public ConvergenceCriteria {
   bool PostCriteria(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A, const Vector& dx,
                     const Vector& b) override;
   std::vector<CriterionValue> LastValues() const override;
+  /// Every active node slips (contact_type FrictionalPureSlip); only with frictional constraints.
+  void SetPureSlip(bool pure_slip) noexcept { pure_slip_ = pure_slip; }
   /// Active-set changes of the last PostCriteria.
   std::size_t Changes() const noexcept { return changes_; }
   /// Frictional: the unit slip direction s of every active node (of a sticking one, the way it would
@@ -65,6 +77,7 @@ class MPCContactCriteria : public ConvergenceCriteria {
   std::unordered_map<const Node*, Array3> directions_;
   std::unordered_map<const Node*, double> turn_stiffness_;
   double young_modulus_ = 0.0;  ///< of the last PostCriteria
+  bool pure_slip_ = false;
   /// Frictional: the largest change |s_new - s_old| of a slipping node's direction in the last PostCriteria.
   double turn_ = 0.0;
   static constexpr double kTurnTolerance = 1e-8;

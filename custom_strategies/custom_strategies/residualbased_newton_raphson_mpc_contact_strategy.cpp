@@ -50,6 +50,8 @@ void ResidualBasedNewtonRaphsonMPCContactStrategy::Initialize() {
   // mpc_contact_process flags the root SLIP for contact_type Frictional.
   constraints_->SetFrictional(root.Is(SLIP));
   mpc_criteria_ = std::make_shared<MPCContactCriteria>(constraints_);
+  const ProcessInfo& info = root.GetProcessInfo();
+  mpc_criteria_->SetPureSlip(root.Is(SLIP) && info.Has(PURE_SLIP) && info.GetValue(PURE_SLIP));
 }
 
 void ResidualBasedNewtonRaphsonMPCContactStrategy::InitializeSolutionStep() {

@@ -1,5 +1,5 @@
 """Issue 13: frictional MPC contact (mpc_contact_process and mpc_contact_settings with contact_type
-Frictional, Coulomb, 2D).
+Frictional or FrictionalPureSlip, Coulomb, 2D and 3D).
 
 - a block pressed on a clamped base by its weight and pushed sideways (an imposed displacement of a
   node of its left side, at mid-height or at its top corner): a small push sticks (the interface
@@ -10,7 +10,10 @@ Frictional, Coulomb, 2D).
 - the shared 2D frictional MPC case: the right state is stick (the interface needs 3e-5 of the normal
   force tangentially, mu = 0.1); ours passes the reference file to 1e-3. Kratos 10.4 ties every
   component without closing the 0.001 gap, 0.5 % from that reference;
-- Cattaneo-Mindlin in 2D against ALM frictional on the same mesh (about 12 s for both runs).
+- Cattaneo-Mindlin in 2D against ALM frictional on the same mesh (about 12 s for both runs);
+- 3D: the block pushed at its top sticks or slides (every slipping node's friction against its slip);
+- FrictionalPureSlip, 2D and 3D: the pushed block slides with mu times the normal force, the way it is
+  pushed.
 """
 from __future__ import annotations
 
@@ -37,14 +40,14 @@ WEIGHT = BLOCK[0] * BLOCK[1] * GRAVITY  # density 1, thickness 1
 CASE_2D = "mpc_contact_tests/2D_contact_simplest_with_friction_patch_matching_test"
 
 
-def _pushed_block(folder, where: str, push: float):
+def _pushed_block(folder, where: str, push: float, contact_type: str = "Frictional"):
     """The static block pressed by its weight; the node(s) of sub-part `where` moved by `push` along x."""
     path = write_block_on_base(
         str(folder), "block", block=BLOCK, base=BASE, cells=(8, 4, 12, 3), friction=FRICTION,
         gravity=(GRAVITY, (0.0, -1.0, 0.0)), end_time=1.0, time_step=1.0,
-        solver={"solver_type": "Static", "mpc_contact_settings": {"contact_type": "Frictional"},
+        solver={"solver_type": "Static", "mpc_contact_settings": {"contact_type": contact_type},
                 "residual_relative_tolerance": 1e-12, "residual_absolute_tolerance": 1e-14, "max_iteration": 30},
-        contact=("mpc_contact_process", {"contact_type": "Frictional"}))
+        contact=("mpc_contact_process", {"contact_type": contact_type}))
     with open(os.path.join(folder, path)) as f:
         parameters = json.load(f)
     parameters["processes"]["constraints_process_list"].append(
@@ -135,26 +138,49 @@ def test_shared_2d_frictional_case(csma_cases, monkeypatch):
     assert uy[3] - uy[6] == pytest.approx(0.001, abs=1e-12)
 
 
-def test_pure_slip_is_not_implemented(csma_cases, monkeypatch):
-    """FrictionalPureSlip raises a NotImplementedFeatureError naming the option."""
-    from csma_cases import CSMA_CASES
+@pytest.mark.parametrize("push", [1.0e-3, -1.0e-3])
+def test_pure_slip_slides_the_way_it_is_pushed(tmp_path, push):
+    """FrictionalPureSlip in 2D: every node in contact slips, the push needs mu times the normal force
+    (1e-8) and the friction opposes the push, either way."""
+    analysis = _pushed_block(tmp_path, "block_side", push, contact_type="FrictionalPureSlip")
+    slaves, force = _interface(analysis)
+    reaction = _push(analysis, "block_side")
+    history = _history(analysis)
+    print(f"pure slip, push {push}: {reaction:.10g} (mu W = {FRICTION * WEIGHT}), {analysis.step_log[0][2]} "
+          f"Newton iterations, residuals {history}")
+    active = [n for n in slaves if n.Is(mc.ACTIVE)]
+    assert len(active) == len(slaves) and all(n.Is(mc.SLIP) for n in active)
+    assert force[1] == pytest.approx(WEIGHT, rel=1e-9)
+    assert reaction == pytest.approx(np.sign(push) * FRICTION * force[1], rel=1e-8)
+    assert -force[0] == pytest.approx(reaction, rel=1e-8)
+    assert analysis.step_log[0][2] <= 2
 
-    monkeypatch.chdir(csma_cases)
-    params = read_project_parameters(os.path.join(CSMA_CASES, f"{CASE_2D}_parameters.json"))
-    params["solver_settings"]["mpc_contact_settings"]["contact_type"].SetString("FrictionalPureSlip")
-    with pytest.raises(mc.NotImplementedFeatureError, match="FrictionalPureSlip"):
-        StructuralMechanicsAnalysis(mc.Model(), params).Run()
+
+@pytest.mark.parametrize("push", [(1.0e-3, 5.0e-4), (-1.0e-3, 5.0e-4)])
+def test_pure_slip_3d_slides_the_way_it_is_pushed(tmp_path, push):
+    """FrictionalPureSlip in 3D: every node in contact slips; the friction forces sum to mu W in
+    magnitude (1e-8) and their resultant opposes the push (1e-4: the directions differ slightly)."""
+    analysis = _pushed_block_3d(tmp_path, push, contact_type="FrictionalPureSlip")
+    slaves, force = _interface(analysis)
+    print(f"3D pure slip, push {push}: {analysis.step_log[0][2]} Newton iterations, residuals {_history(analysis)}")
+    active = [n for n in slaves if n.Is(mc.ACTIVE)]
+    assert len(active) == len(slaves) and all(n.Is(mc.SLIP) for n in active)
+    total = sum(np.linalg.norm(np.array(n.GetValue(V("CONTACT_FORCE")))[:2]) for n in active)
+    assert total == pytest.approx(FRICTION * WEIGHT_3D, rel=1e-8)
+    direction = np.array(push) / np.linalg.norm(push)
+    assert np.dot(-force[:2], direction) == pytest.approx(FRICTION * WEIGHT_3D, rel=1e-4)
+    assert analysis.step_log[0][2] <= 7
 
 
-def _pushed_block_3d(folder, push):
+def _pushed_block_3d(folder, push, contact_type: str = "Frictional"):
     """The 3D block (0.4 x 0.4 x 0.1 on a 0.8 x 0.8 x 0.2 base) pressed by its weight, its top face moved
     by `push` in the plane."""
     path = write_block_on_base_3d(
         str(folder), "block3d", block=BLOCK_3D, base=(0.8, 0.8, 0.2), cells=(4, 4, 2, 6, 6, 2), friction=FRICTION,
         gravity=(GRAVITY, (0.0, 0.0, -1.0)),
-        solver={"mpc_contact_settings": {"contact_type": "Frictional"},
+        solver={"mpc_contact_settings": {"contact_type": contact_type},
                 "residual_relative_tolerance": 1e-12, "residual_absolute_tolerance": 1e-14, "max_iteration": 30},
-        contact=("mpc_contact_process", {"contact_type": "Frictional"}))
+        contact=("mpc_contact_process", {"contact_type": contact_type}))
     with open(os.path.join(folder, path)) as f:
         parameters = json.load(f)
     parameters["processes"]["constraints_process_list"].append(
