@@ -273,8 +273,9 @@ def test_cattaneo_mindlin_3d(tmp_path, monkeypatch):
     0.602, 0.474 against 0.920, 0.834, 0.737, 0.626, 0.486), in 6-7 Newton iterations per shift step.
     ALM frictional stops at its first step on this mesh as on the 15k one (a singular multiplier
     block, then the active set cycles): there is no ALM run to compare with."""
-    from mortarcontact.cases import hertz
     from test_cattaneo_mindlin import run
+
+    from mortarcontact.cases import hertz
 
     monkeypatch.setitem(hertz.SIZES["hertz3dgrid"], "coarse", 2.0)
     results, _ = run(3, "coarse", str(tmp_path), mpc=True)

@@ -273,7 +273,6 @@ TEST(MPCContactConstraints, CoulombForceOfASlippingNodeAndTiesOfASticking) {
   EXPECT_EQ(tied.size(), 3u);
 }
 
-
 // 3D: a slipping node's Coulomb force -mu |f_n| s with s the direction of its tangential slip of the
 // step; the stiffness terms (the turn of s, f_n held) are minus the central-difference derivative of
 // that force with respect to every displacement of the node and its masters, to 1e-8.
@@ -291,11 +290,11 @@ TEST(MPCContactConstraints, TurnStiffnessOfA3DSlipIsTheDerivativeOfItsCoulombFor
     slaves.push_back(&MakeNode(root, 1 + i, Array3(corners[i][0], corners[i][1], 0.0)));
     slaves.back()->Set(SLAVE);
     // The master face: shifted and larger, ordered the other way (its normal points down).
-    masters.push_back(&MakeNode(root, 11 + i, Array3(1.3 * corners[3 - i][0] - 0.2, 1.2 * corners[3 - i][1] - 0.35, 0.1)));
+    masters.push_back(
+        &MakeNode(root, 11 + i, Array3(1.3 * corners[3 - i][0] - 0.2, 1.2 * corners[3 - i][1] - 0.35, 0.1)));
   }
   Condition& added = computing.AddCondition(std::make_unique<MPCMortarContactCondition<3, 4, 4>>(
-      1, Geometry(GeometryType::Quadrilateral3D4, slaves), nullptr,
-      Geometry(GeometryType::Quadrilateral3D4, masters)));
+      1, Geometry(GeometryType::Quadrilateral3D4, slaves), nullptr, Geometry(GeometryType::Quadrilateral3D4, masters)));
   contact.AddCondition(&added);
   contact.AddNodes({1, 2, 3, 4, 11, 12, 13, 14});
   MPCContactConstraints constraints(contact, computing);
@@ -309,7 +308,8 @@ TEST(MPCContactConstraints, TurnStiffnessOfA3DSlipIsTheDerivativeOfItsCoulombFor
   node.Set(SLIP, true);
   node.SetValue(FRICTION_COEFFICIENT, mu);
   // A slip of the step with a component along the normal (the projection removes it) and masters moved.
-  const Array3 moves[5] = {{2e-3, 1e-3, 4e-4}, {-3e-4, 5e-4, 0.0}, {1e-4, -2e-4, 0.0}, {0.0, 3e-4, 1e-4}, {2e-4, 0.0, 0.0}};
+  const Array3 moves[5] = {
+      {2e-3, 1e-3, 4e-4}, {-3e-4, 5e-4, 0.0}, {1e-4, -2e-4, 0.0}, {0.0, 3e-4, 1e-4}, {2e-4, 0.0, 0.0}};
   std::vector<Node*> moved{&node};
   for (Node* master : masters) moved.push_back(master);
   for (std::size_t i = 0; i < moved.size(); ++i) moved[i]->FastGetSolutionStepValue(DISPLACEMENT) = moves[i];
