@@ -26,8 +26,6 @@ import pytest
 from test_contact_cases import run_csma_case
 
 import mortarcontact as mc
-from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
-from mortarcontact.project_parameters import read_project_parameters
 
 from case_builder import fix_process, run_analysis, write_block_on_base, write_block_on_base_3d
 from csma_cases import reference_nodes
