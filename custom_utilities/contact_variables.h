@@ -53,6 +53,8 @@ MC_DECLARE_VARIABLE(bool, ADAPT_PENALTY);
 /// ProcessInfo (ours), set by the explicit contact strategy: WEIGHTED_SLIP is the elastic slip a
 /// node has accumulated while sticking (return-mapped when it slips), not the step's increment.
 MC_DECLARE_VARIABLE(bool, ACCUMULATED_WEIGHTED_SLIP);
+/// ProcessInfo (ours), set by mpc_contact_process: contact_type FrictionalPureSlip (every active node slips).
+MC_DECLARE_VARIABLE(bool, PURE_SLIP);
 MC_DECLARE_VARIABLE(double, MAX_GAP_FACTOR);
 MC_DECLARE_VARIABLE(double, MAX_GAP_THRESHOLD);
 MC_DECLARE_VARIABLE(int, INNER_LOOP_ITERATION);

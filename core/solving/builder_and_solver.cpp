@@ -168,27 +168,37 @@ void BuilderAndSolver::ClearConstraints() {
   constraints_changed_ = true;
 }
 
-void BuilderAndSolver::SetResidualCombination(std::vector<ResidualTerm> terms) { combination_ = std::move(terms); }
+void BuilderAndSolver::SetResidualCombination(std::vector<ResidualTerm> terms, std::vector<ResidualTerm> stiffness) {
+  combination_ = std::move(terms);
+  combination_stiffness_ = std::move(stiffness);
+}
 
 void BuilderAndSolver::BuildCombinationMatrix() {
-  std::vector<Eigen::Triplet<double, int>> entries;
   std::vector<std::pair<int, int>> structure;
   const auto n = static_cast<std::int64_t>(n_assembled_);
-  for (const ResidualTerm& term : combination_) {
-    if (term.to->equation_id < 0 || term.from->equation_id < 0 ||
-        term.to->equation_id >= static_cast<std::int64_t>(dofs_.size()) ||
-        term.from->equation_id >= static_cast<std::int64_t>(dofs_.size()))
-      throw Error(
-          Concat("residual combination: ", DofName(*term.to), " <- ", DofName(*term.from), " is outside the DoF set"));
-    // A fixed DoF without a row (elimination) has no matrix entry; its residual still combines.
-    if (term.to->equation_id >= n || term.from->equation_id >= n) continue;
-    entries.emplace_back(static_cast<int>(term.to->equation_id), static_cast<int>(term.from->equation_id), term.weight);
-    structure.emplace_back(static_cast<int>(term.to->equation_id), static_cast<int>(term.from->equation_id));
-  }
-  C_ = SparseMatrix(static_cast<Eigen::Index>(n_assembled_), static_cast<Eigen::Index>(n_assembled_));
-  C_.setFromTriplets(entries.begin(), entries.end());
-  C_.makeCompressed();
-  std::sort(structure.begin(), structure.end());
+  const auto matrix = [&](const std::vector<ResidualTerm>& terms, SparseMatrix& out) {
+    std::vector<Eigen::Triplet<double, int>> entries;
+    const auto first = static_cast<std::ptrdiff_t>(structure.size());
+    for (const ResidualTerm& term : terms) {
+      if (term.to->equation_id < 0 || term.from->equation_id < 0 ||
+          term.to->equation_id >= static_cast<std::int64_t>(dofs_.size()) ||
+          term.from->equation_id >= static_cast<std::int64_t>(dofs_.size()))
+        throw Error(Concat("residual combination: ", DofName(*term.to), " <- ", DofName(*term.from),
+                           " is outside the DoF set"));
+      // A fixed DoF without a row (elimination) has no matrix entry; its residual still combines.
+      if (term.to->equation_id >= n || term.from->equation_id >= n) continue;
+      entries.emplace_back(static_cast<int>(term.to->equation_id), static_cast<int>(term.from->equation_id),
+                           term.weight);
+      structure.emplace_back(static_cast<int>(term.to->equation_id), static_cast<int>(term.from->equation_id));
+    }
+    std::sort(structure.begin() + first, structure.end());
+    out = SparseMatrix(static_cast<Eigen::Index>(n_assembled_), static_cast<Eigen::Index>(n_assembled_));
+    out.setFromTriplets(entries.begin(), entries.end());
+    out.makeCompressed();
+  };
+  matrix(combination_, C_);
+  structure.emplace_back(-1, -1);  // separates the two structures
+  matrix(combination_stiffness_, S_);
   if (structure != C_structure_) {
     C_structure_ = std::move(structure);
     ++combination_version_;
@@ -474,7 +484,7 @@ void BuilderAndSolver::ReduceSystem(Mode mode) {
   const bool combined = !combination_.empty();
   if (lhs) {
     SparseMatrix KT = K_ * T_;
-    if (combined) KT = KT + C_ * KT;
+    if (combined) KT = KT + C_ * KT + S_ * T_;
     A_ = T_.transpose() * KT;
     A_.makeCompressed();
   }

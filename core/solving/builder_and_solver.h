@@ -106,9 +106,11 @@ class BuilderAndSolver {
   /// exact matrix (I + C) K: A = T^T (I + C) K T, b = T^T (I + C) (r - K g). Only with constraints
   /// (frictional MPC contact: a slipping node's Coulomb force is mu times its normal reaction, a
   /// combination of its own rows, and its masters take the opposite force). RawResidual() stays the
-  /// entities'; Residual() and the reactions include the force. The terms replace the earlier ones
-  /// (an empty list removes them) and hold for the next builds; their DoFs must be in the DoF set.
-  void SetResidualCombination(std::vector<ResidualTerm> terms);
+  /// entities'; Residual() and the reactions include the force. `stiffness` (row `to`, column `from`,
+  /// value `weight`) is added to the matrix (I + C) K: the derivative of the force through what the rows
+  /// do not carry (a Coulomb force's slip direction). The terms replace the earlier ones (empty lists
+  /// remove them) and hold for the next builds; their DoFs must be in the DoF set.
+  void SetResidualCombination(std::vector<ResidualTerm> terms, std::vector<ResidualTerm> stiffness = {});
 
   // Build and solve -----------------------------------------------------------------------------
   void Build(Scheme& scheme, ModelPart& model_part);
@@ -230,11 +232,13 @@ class BuilderAndSolver {
   long pattern_version_ = 0;
   long solver_pattern_version_ = -1;
 
-  SparseMatrix K_;                                ///< assembled matrix when constraints are reduced into A_
-  SparseMatrix T_;                                ///< n_assembled x n_system constraint map
-  std::vector<ResidualTerm> combination_;         ///< SetResidualCombination
-  SparseMatrix C_;                                ///< n_assembled x n_assembled, from combination_
-  std::vector<std::pair<int, int>> C_structure_;  ///< (row, column) of C_'s entries
+  SparseMatrix K_;                         ///< assembled matrix when constraints are reduced into A_
+  SparseMatrix T_;                         ///< n_assembled x n_system constraint map
+  std::vector<ResidualTerm> combination_;  ///< SetResidualCombination
+  SparseMatrix C_;                         ///< n_assembled x n_assembled, from combination_
+  std::vector<ResidualTerm> combination_stiffness_;
+  SparseMatrix S_;                                ///< n_assembled x n_assembled, from combination_stiffness_
+  std::vector<std::pair<int, int>> C_structure_;  ///< (row, column) of C_'s then S_'s entries
   long combination_version_ = 0;                  ///< changes with C_structure_
   long solver_combination_version_ = -1;
   Vector g_;              ///< constraint violations (n_assembled)

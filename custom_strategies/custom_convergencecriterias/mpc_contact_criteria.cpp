@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "custom_strategies/custom_convergencecriterias/mpc_contact_criteria.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/utilities/error.h"
@@ -20,6 +21,15 @@ double YoungModulus(const ModelPart& root) {
   return 0.0;
 }
 
+/// The tangential reaction without its fixed components: the support carries those (on a symmetry
+/// plane the reaction includes the plane's force, which friction neither bears nor can relieve).
+Array3 FreeTangential(const Node& node, Array3 tangential) {
+  const Variable<double>* const displacements[3] = {&DISPLACEMENT_X, &DISPLACEMENT_Y, &DISPLACEMENT_Z};
+  for (int c = 0; c < 3; ++c)
+    if (node.HasDofFor(*displacements[c]) && node.GetDof(*displacements[c]).fixed) tangential[c] = 0.0;
+  return tangential;
+}
+
 }  // namespace
 
 MPCContactCriteria::MPCContactCriteria(std::shared_ptr<const MPCContactConstraints> constraints)
@@ -35,8 +45,10 @@ bool MPCContactCriteria::PostCriteria(ModelPart& model_part, const DofsArray&, c
   const ProcessInfo& info = root.GetProcessInfo();
   const double factor =
       info.Has(REACTION_CHECK_STIFFNESS_FACTOR) ? info.GetValue(REACTION_CHECK_STIFFNESS_FACTOR) : 1.0e-12;
-  const double threshold = -factor * YoungModulus(root);
+  young_modulus_ = YoungModulus(root);
+  const double threshold = -factor * young_modulus_;
   changes_ = 0;
+  turn_ = 0.0;
   const bool frictional = constraints_->IsFrictional();
   for (Node* node : contact->Nodes()) {
     if (!node->Is(SLAVE)) continue;
@@ -57,26 +69,50 @@ bool MPCContactCriteria::PostCriteria(ModelPart& model_part, const DofsArray&, c
     node->Set(ACTIVE, active);
     node->SetValue(CONTACT_FORCE, active ? Array3(force * normal) : Array3(Array3::Zero()));
     node->SetValue(NORMAL_CONTACT_STRESS, active ? pressure : 0.0);
-    if (frictional) UpdateSlip(*node, was_active, reaction - force * normal, force);
+    if (frictional) UpdateSlip(*node, was_active, FreeTangential(*node, reaction - force * normal), force);
   }
-  return changes_ == 0;
+  return changes_ == 0 && turn_ <= kTurnTolerance;
 }
 
 void MPCContactCriteria::UpdateSlip(Node& node, bool was_active, const Array3& tangential, double normal_force) {
   const bool active = node.Is(ACTIVE);
   const bool was_slipping = node.Is(SLIP);
   const double length = tangential.norm();
+  const double mu = node.GetValue(FRICTION_COEFFICIENT);
+  const double size = std::sqrt(node.GetValue(NODAL_MAUX));
   bool slip = false;
-  if (active && was_active) {
+  turn_stiffness_.erase(&node);
+  if (active) {
+    const Array3 step_slip = constraints_->TangentialSlip(node);
+    const double slid = step_slip.norm();
     const auto held = directions_.find(&node);
-    if (was_slipping && held != directions_.end())
-      slip = held->second.dot(constraints_->TangentialSlip(node)) > 0.0;
+    const bool held_slip = was_active && was_slipping && held != directions_.end();
+    if (!was_active)
+      // A node touching down within the step while it moves slips the way it moves: tied where the step
+      // started, it would be dragged back the whole way (a force far outside the cone, and the node
+      // released and caught again: a cycle).
+      slip = slid > kMovingSlip * size;
+    else if (held_slip)
+      slip = pure_slip_ || held->second.dot(step_slip) > 0.0;
     else
-      slip = length > node.GetValue(FRICTION_COEFFICIENT) * std::abs(normal_force);
-    // A slipping node keeps its direction (2D: the slip can only reverse, and then the node sticks).
-    if (!(was_slipping && slip && held != directions_.end()) && length > 0.0) directions_[&node] = -tangential / length;
+      slip = length > (pure_slip_ ? 0.0 : mu * std::abs(normal_force));
+    if ((held_slip || (!was_active && slip)) && slid > 0.0) {
+      // s is the direction of the slip of the step (in 2D the same or reversed; in 3D it may turn), also
+      // for a node that turned back and sticks: if the cycle guard holds it slipping, it slips that way.
+      const Array3 direction = step_slip / slid;
+      if (held_slip && slip) turn_ = std::max(turn_, (direction - held->second).norm());
+      directions_[&node] = direction;
+      if (slip) turn_stiffness_[&node] = held_slip ? mu * std::abs(normal_force) / slid : young_modulus_ * size;
+    } else if (length > 0.0) {
+      directions_[&node] = -tangential / length;
+      // A node that starts slipping has no slip yet for s to turn with: for one iteration its sideways
+      // motion gets the stiffness of its share of the surface (the matrix only: without it a body whose
+      // nodes all start slipping could turn freely).
+      if (slip) turn_stiffness_[&node] = young_modulus_ * size;
+    }
+  } else {
+    directions_.erase(&node);
   }
-  if (!active) directions_.erase(&node);
   if (slip != was_slipping) ++changes_;
   node.Set(SLIP, slip);
   if (active) node.SetValue(CONTACT_FORCE, Array3(node.GetValue(CONTACT_FORCE) + tangential));
@@ -85,7 +121,9 @@ void MPCContactCriteria::UpdateSlip(Node& node, bool was_active, const Array3& t
 }
 
 std::vector<CriterionValue> MPCContactCriteria::LastValues() const {
-  return {{"active set changes", static_cast<double>(changes_), 0.0}};
+  if (!constraints_->IsFrictional()) return {{"active set changes", static_cast<double>(changes_), 0.0}};
+  return {{"contact state changes", static_cast<double>(changes_), 0.0},
+          {"slip direction turn", turn_, kTurnTolerance}};
 }
 
 }  // namespace mc

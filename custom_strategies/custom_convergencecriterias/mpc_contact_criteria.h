@@ -20,16 +20,26 @@ namespace mc {
 ///
 /// Frictional (the constraints' IsFrictional; Coulomb, mu the node's FRICTION_COEFFICIENT, which the
 /// interface sets from the materials or friction_coefficients), the normal is the relation's and the
-/// node's whole reaction R splits into f_n n and R_t = R - f_n n. A node that becomes active sticks. A
-/// sticking node slips when its tie needs more than the cone, |R_t| > mu |f_n| (and is not released in
-/// that iteration even if it pulls: the pull may be the drag of its tangential tie); its slip direction is
-/// then s = -R_t / |R_t| (the way the tie held it back). A slipping node carries the Coulomb force
-/// -mu |f_n| s (MPCContactConstraints::CoulombTerms, in the system with its exact tangent) and sticks
-/// again when its slip of the step no longer runs along s (s . slip <= 0: the friction would drive
-/// it). Converged when no node changed its active or slip state. CONTACT_FORCE is R (normal and
-/// tangential), TANGENTIAL_CONTACT_STRESS |R_t| / NODAL_MAUX. Kratos compares |R_t| / NODAL_MAUX, a
-/// pressure, with -mu f_n, a force: here both sides are forces. Only 2D: in 3D the slip direction
-/// would change within the step (not implemented, the process says so).
+/// node's whole reaction R splits into f_n n and R_t = R - f_n n. A node that becomes active sticks
+/// (unless it touches down while it moves, below). A sticking node slips when its tie needs more than
+/// the cone, |R_t| > mu |f_n| (and is not released in that iteration even if it pulls: the pull may be
+/// the drag of its tangential tie); its slip direction is then s = -R_t / |R_t| (the way the tie held it back). A
+/// slipping node carries the Coulomb force -mu |f_n| s (MPCContactConstraints::CoulombTerms, in the system with its
+/// exact tangent) and sticks again when its slip of the step no longer runs along s (s . slip <= 0: the friction would
+/// drive it). While it slips, s is the direction of that slip (in 2D it stays; in 3D it may turn), held within an
+/// iteration with its turn stiffness (CoulombTerms); a node that turned back keeps the direction of its last slip, so
+/// that if the cycle guard holds it slipping, it slips the way it moves. A node that touches down within the step while
+/// it moves (its slip of the step above 1e-6 of its size) slips the way it moves: tied where the step started it would
+/// be dragged back the whole way. The fixed components of R_t are left out (the support carries them: a symmetry
+/// plane's force is no friction). Converged when no node changed its active or slip state and no direction turned by
+/// more than 1e-8. CONTACT_FORCE is R (normal and tangential), TANGENTIAL_CONTACT_STRESS |R_t| / NODAL_MAUX. Kratos
+/// compares |R_t| / NODAL_MAUX, a pressure, with -mu f_n, a force: here both sides are forces.
+///
+/// PureSlip (SetPureSlip; contact_type FrictionalPureSlip): every active node slips. A node that
+/// becomes active (not moving) is tied in every component for one iteration, its trial: its tangential
+/// reaction gives s = -R_t / |R_t| (a normal-only tie would leave its tangential DoFs free, with no
+/// reaction to take a direction from); from then on it slips, s following its slip of the step, also
+/// when it reverses.
 ///
 /// Differences from Kratos, by design: Kratos tests both conditions on every node, but an active
 /// node's gap is the constraint's, zero up to round-off, whose sign would keep it (or not) at random;
@@ -45,11 +55,16 @@ class MPCContactCriteria : public ConvergenceCriteria {
   bool PostCriteria(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A, const Vector& dx,
                     const Vector& b) override;
   std::vector<CriterionValue> LastValues() const override;
+  /// Every active node slips (contact_type FrictionalPureSlip); only with frictional constraints.
+  void SetPureSlip(bool pure_slip) noexcept { pure_slip_ = pure_slip; }
   /// Active-set changes of the last PostCriteria.
   std::size_t Changes() const noexcept { return changes_; }
   /// Frictional: the unit slip direction s of every active node (of a sticking one, the way it would
   /// slip), held until the next PostCriteria.
   const std::unordered_map<const Node*, Array3>& SlipDirections() const noexcept { return directions_; }
+  /// Frictional: mu |f_n| / |slip| of the slipping nodes whose direction is that of their slip of the
+  /// step (see MPCContactConstraints::CoulombTerms); E sqrt(NODAL_MAUX) for one that starts slipping.
+  const std::unordered_map<const Node*, double>& TurnStiffness() const noexcept { return turn_stiffness_; }
 
  private:
   /// Frictional: the stick / slip state of a slave node from its tangential reaction (see the class
@@ -59,6 +74,14 @@ class MPCContactCriteria : public ConvergenceCriteria {
   std::shared_ptr<const MPCContactConstraints> constraints_;
   std::size_t changes_ = 0;
   std::unordered_map<const Node*, Array3> directions_;
+  std::unordered_map<const Node*, double> turn_stiffness_;
+  double young_modulus_ = 0.0;  ///< of the last PostCriteria
+  bool pure_slip_ = false;
+  /// Frictional: the largest change |s_new - s_old| of a slipping node's direction in the last PostCriteria.
+  double turn_ = 0.0;
+  static constexpr double kTurnTolerance = 1e-8;
+  /// A node touching down slips when its slip of the step exceeds this fraction of its size sqrt(NODAL_MAUX).
+  static constexpr double kMovingSlip = 1e-6;
 };
 
 }  // namespace mc

@@ -98,9 +98,10 @@ Array3 MPCContactConstraints::RelationNormal(const Node& node) const {
   return it != relation_normals_.end() ? it->second : NormalCalculationUtilities::GetNodalNormal(node);
 }
 
-std::vector<BuilderAndSolver::ResidualTerm> MPCContactConstraints::CoulombTerms(
-    const std::unordered_map<const Node*, Array3>& directions) const {
-  std::vector<BuilderAndSolver::ResidualTerm> terms;
+MPCContactConstraints::CoulombSystem MPCContactConstraints::CoulombTerms(
+    const std::unordered_map<const Node*, Array3>& directions,
+    const std::unordered_map<const Node*, double>& turn_stiffness) const {
+  CoulombSystem system;
   for (const auto& [node, relation] : relations_) {
     const auto direction = directions.find(node);
     if (!node->Is(ACTIVE) || !node->Is(SLIP) || direction == directions.end()) continue;
@@ -109,18 +110,31 @@ std::vector<BuilderAndSolver::ResidualTerm> MPCContactConstraints::CoulombTerms(
     const Array3 n = relation_normals_.at(node);
     const Array3 s = direction->second;
     const double mu = node->GetValue(FRICTION_COEFFICIENT);
+    // The node (weight 1) and its masters (weight -P_ji): where the force and the relative motion act.
+    std::vector<std::pair<Node*, double>> side{{node, 1.0}};
+    for (const auto& [master, m] : row.m)
+      if (m != 0.0) side.emplace_back(master, -m / row.d);
     for (int d = 0; d < dimension_; ++d) {
       if (n[d] == 0.0) continue;
       const Dof* from = &node->GetDof(*kDisplacement[d]);
-      for (int c = 0; c < dimension_; ++c) {
-        if (s[c] == 0.0) continue;
-        terms.push_back({&node->GetDof(*kDisplacement[c]), from, -mu * s[c] * n[d]});
-        for (const auto& [master, m] : row.m)
-          if (m != 0.0) terms.push_back({&master->GetDof(*kDisplacement[c]), from, mu * m / row.d * s[c] * n[d]});
-      }
+      for (int c = 0; c < dimension_; ++c)
+        if (s[c] != 0.0)
+          for (const auto& [to, weight] : side)
+            system.combination.push_back({&to->GetDof(*kDisplacement[c]), from, -mu * weight * s[c] * n[d]});
     }
+    const auto turn = turn_stiffness.find(node);
+    if (turn == turn_stiffness.end() || !(turn->second > 0.0)) continue;
+    const Eigen::Matrix3d q = Eigen::Matrix3d::Identity() - n * n.transpose() - s * s.transpose();
+    for (int c = 0; c < dimension_; ++c)
+      for (int d = 0; d < dimension_; ++d) {
+        if (std::abs(q(c, d)) < 1e-12) continue;  // 2D: s spans the tangent, nothing turns
+        for (const auto& [row_node, row_weight] : side)
+          for (const auto& [column_node, column_weight] : side)
+            system.stiffness.push_back({&row_node->GetDof(*kDisplacement[c]), &column_node->GetDof(*kDisplacement[d]),
+                                        turn->second * row_weight * column_weight * q(c, d)});
+      }
   }
-  return terms;
+  return system;
 }
 
 void MPCContactConstraints::ClearRelations() {

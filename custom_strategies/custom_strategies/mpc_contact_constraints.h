@@ -93,8 +93,17 @@ class MPCContactConstraints {
   /// r_jc += -mu s_c n_d r_jd and r_ic += mu P_ji s_c n_d r_jd (r = f_ext - f_int). Linear in the rows,
   /// so the builder's matrix (I + C) K is its exact tangent (the normal, P and s held); f_n is taken
   /// as signed (no |.|): an active node is pressed, and one that pulls is released by the criterion.
-  std::vector<BuilderAndSolver::ResidualTerm> CoulombTerms(
-      const std::unordered_map<const Node*, Array3>& directions) const;
+  ///
+  /// `turn_stiffness` (3D) holds k = mu |f_n| / |slip| for a node whose s is the direction of its slip
+  /// of the step: s turns with the slip, and the force's derivative through it, -mu f_n (I - n n^T -
+  /// s s^T) / |slip| d(slip), is the stiffness k Q on the relative tangential motion (u_j - P u), on the
+  /// node and (times -P_ji) on its masters: without it a block whose nodes all slip could turn freely.
+  struct CoulombSystem {
+    std::vector<BuilderAndSolver::ResidualTerm> combination;
+    std::vector<BuilderAndSolver::ResidualTerm> stiffness;
+  };
+  CoulombSystem CoulombTerms(const std::unordered_map<const Node*, Array3>& directions,
+                             const std::unordered_map<const Node*, double>& turn_stiffness) const;
 
   /// Nodal gap g_j = WEIGHTED_GAP / NODAL_MAUX of the last Measure (0 for a node no pair reaches).
   double NodalGap(const Node& node) const;

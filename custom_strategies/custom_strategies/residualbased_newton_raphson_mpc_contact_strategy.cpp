@@ -50,6 +50,8 @@ void ResidualBasedNewtonRaphsonMPCContactStrategy::Initialize() {
   // mpc_contact_process flags the root SLIP for contact_type Frictional.
   constraints_->SetFrictional(root.Is(SLIP));
   mpc_criteria_ = std::make_shared<MPCContactCriteria>(constraints_);
+  const ProcessInfo& info = root.GetProcessInfo();
+  mpc_criteria_->SetPureSlip(root.Is(SLIP) && info.Has(PURE_SLIP) && info.GetValue(PURE_SLIP));
 }
 
 void ResidualBasedNewtonRaphsonMPCContactStrategy::InitializeSolutionStep() {
@@ -108,14 +110,15 @@ bool ResidualBasedNewtonRaphsonMPCContactStrategy::NewtonIteration(int iteration
   if (settings_.simplified_semi_smooth_newton) return converged;
   const bool unchanged = UpdateActiveSet() || HoldCycle();
   history_.back().converged = converged && unchanged;
-  history_.back().criteria.push_back(mpc_criteria_->LastValues().front());
+  for (const CriterionValue& value : mpc_criteria_->LastValues()) history_.back().criteria.push_back(value);
   return history_.back().converged;
 }
 
 void ResidualBasedNewtonRaphsonMPCContactStrategy::ApplyConstraints() {
   constraints_->Apply(*builder_);
-  if (constraints_->IsFrictional())
-    builder_->SetResidualCombination(constraints_->CoulombTerms(mpc_criteria_->SlipDirections()));
+  if (!constraints_->IsFrictional()) return;
+  auto coulomb = constraints_->CoulombTerms(mpc_criteria_->SlipDirections(), mpc_criteria_->TurnStiffness());
+  builder_->SetResidualCombination(std::move(coulomb.combination), std::move(coulomb.stiffness));
 }
 
 bool ResidualBasedNewtonRaphsonMPCContactStrategy::SolveStepAttempt() {

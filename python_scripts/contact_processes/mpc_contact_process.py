@@ -2,9 +2,10 @@
 searches are those of the other contact processes; the pairs are ``MPCMortarContactCondition<geometry>``,
 which add nothing to the system: the MPC strategy ties each active slave node's normal displacement to
 the mortar projection of the master (D^-1 M) with a master-slave constraint, and releases it when its
-reaction pulls (``reaction_check_stiffness_factor``). ``contact_type`` Frictional (Coulomb, 2D): a
+reaction pulls (``reaction_check_stiffness_factor``). ``contact_type`` Frictional (Coulomb): a
 sticking node is tied in every component, a slipping one in the normal with its Coulomb force in the
-system (MPCContactCriteria decides stick and slip from the reactions). With ``contact_type`` "MeshTying"
+system (MPCContactCriteria decides stick and slip from the reactions); FrictionalPureSlip: every active
+node slips. With ``contact_type`` "MeshTying"
 every displacement component of every slave node is tied from the first step, for good (mesh tying by
 constraints, the multiplier-free counterpart of mesh_tying_process' ComponentsMeshTying)."""
 from __future__ import annotations
@@ -47,16 +48,21 @@ MESH_TYING_KEYS_WITHOUT_EFFECT = {
 
 def mpc_formulation(contact_type, where: str):
     """The formulation of an MPC ``contact_type`` (a Parameters string): Frictionless, Frictional or
-    MeshTying (every displacement component tied, root flag RIGID), with Kratos' suffix WithNormalUpdate
-    (the normals are always those of the configuration the relations are built at); PureSlip is not
-    implemented."""
+    MeshTying (every displacement component tied, root flag RIGID), with Kratos' suffixes PureSlip
+    (Frictional only: every active node slips, see is_mpc_pure_slip) and WithNormalUpdate (the normals
+    are always those of the configuration the relations are built at)."""
     name = contact_type.GetString()
     base = name[:-len(NORMAL_UPDATE)] if name.endswith(NORMAL_UPDATE) else name
-    if base.endswith(PURE_SLIP):
-        raise _core.NotImplementedFeatureError(
-            f"{contact_type.Where()}: '{name}' (frictional MPC contact where every active node slips) is not "
-            "implemented; 'Frictional' decides stick and slip from the reactions")
+    if base.endswith(PURE_SLIP) and base != "Frictional" + PURE_SLIP:
+        raise _core.InputError(f"{contact_type.Where()}: '{name}': {PURE_SLIP} is a variant of Frictional only "
+                               f"(did you mean 'Frictional{PURE_SLIP}'?)")
+    base = base.removesuffix(PURE_SLIP)
     return _core.ContactFormulation.OfProcess("mpc_contact_process", base, f"{where}: {contact_type.Where()} '{name}'")
+
+
+def is_mpc_pure_slip(contact_type) -> bool:
+    """Whether an MPC ``contact_type`` is FrictionalPureSlip (with or without WithNormalUpdate)."""
+    return contact_type.GetString().removesuffix(NORMAL_UPDATE).endswith(PURE_SLIP)
 
 
 class MPCContactProcess(SearchBaseProcess):
@@ -94,6 +100,7 @@ class MPCContactProcess(SearchBaseProcess):
         s = self.settings
         self.formulation = mpc_formulation(s["contact_type"], self.python_module)
         self.frictional = self.formulation.contact_type == "Frictional"
+        self.pure_slip = is_mpc_pure_slip(s["contact_type"])
         self.condition_stem = self.formulation.ConditionStem(False, False)
         variation = s["normal_variation"].GetString().lower()
         if variation not in NORMAL_VARIATIONS:
@@ -130,10 +137,7 @@ class MPCContactProcess(SearchBaseProcess):
         info = self.root.GetProcessInfo()
         info.SetValue(_core.REACTION_CHECK_STIFFNESS_FACTOR,
                       self.settings["reaction_check_stiffness_factor"].GetDouble())
-        if self.frictional and info.GetValue(_core.DOMAIN_SIZE) == 3:
-            raise _core.NotImplementedFeatureError(
-                f"{self.settings['contact_type'].Where()}: '{self.settings['contact_type'].GetString()}' in 3D: "
-                "frictional MPC contact is implemented in 2D (in 3D the slip direction turns within a step)")
+        info.SetValue(_core.PURE_SLIP, self.pure_slip)
         # SLIP of the root tells the MPC strategy the contact is frictional.
         for part in (self.root, self.root.GetSubModelPart("Contact"), self.root.GetSubModelPart("ComputingContact")):
             part.Set(_core.CONTACT, True)

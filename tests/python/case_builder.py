@@ -159,12 +159,47 @@ def write_block_on_base(folder, name: str, *, block: tuple, base: tuple, cells: 
                           "block_side": {"nodes": block_side},
                           "Contact_master": {"nodes": ids[nb:][on_base_top]},
                           "DISPLACEMENT_bottom": {"nodes": ids[nb:][on_base_bottom]}})
+    return _block_on_base_case(folder, name, 2, friction=friction, gravity=gravity, solver=solver, contact=contact,
+                               end_time=end_time, time_step=time_step, ramp=ramp)
+
+
+def write_block_on_base_3d(folder, name: str, *, block: tuple, base: tuple, cells: tuple, friction: float,
+                           gravity: tuple, solver: dict, contact: dict) -> str:
+    """The 3D block on its base: a block (lx, ly, lz; nx, ny, nz hexahedra) centred on the top of a
+    base (lx, ly, lz; bx, by, bz) clamped at its bottom, E = 1e6, nu = 0.3, rho = 1; the block's bottom
+    is the slave, its top face the sub-part block_top. One static step;
+    the other arguments as write_block_on_base's."""
+    nx, ny, nz, bx, by, bz = cells
+    block_xyz, block_cells = structured_hexes(nx, ny, nz, *block)
+    block_xyz = block_xyz - [block[0] / 2, block[1] / 2, 0.0]
+    base_xyz, base_cells = structured_hexes(bx, by, bz, *base)
+    base_xyz = base_xyz - [base[0] / 2, base[1] / 2, base[2]]
+    nb = len(block_xyz)
+    ids = np.arange(1, nb + len(base_xyz) + 1)
+    write_mdpa(f"{folder}/{name}.mdpa", np.vstack([block_xyz, base_xyz]),
+               {"SmallDisplacementElement3D8N": list(block_cells) + [tuple(int(i) + nb for i in c)
+                                                                      for c in base_cells]},
+               sub_parts={"Parts_block": {"nodes": ids[:nb], "elements": range(1, len(block_cells) + 1)},
+                          "Parts_base": {"nodes": ids[nb:], "elements": range(len(block_cells) + 1,
+                                                                               len(block_cells) + len(base_cells) + 1)},
+                          "Contact_slave": {"nodes": ids[:nb][np.abs(block_xyz[:, 2]) < 1e-12]},
+                          "block_top": {"nodes": ids[:nb][np.abs(block_xyz[:, 2] - block[2]) < 1e-12]},
+                          "Contact_master": {"nodes": ids[nb:][np.abs(base_xyz[:, 2]) < 1e-12]},
+                          "DISPLACEMENT_bottom": {"nodes": ids[nb:][np.abs(base_xyz[:, 2] + base[2]) < 1e-12]}})
+    return _block_on_base_case(folder, name, 3, friction=friction, gravity=gravity, solver=solver, contact=contact,
+                               end_time=1.0, time_step=1.0, ramp=0.0)
+
+
+def _block_on_base_case(folder, name: str, dim: int, *, friction: float, gravity: tuple, solver: dict, contact: dict,
+                        end_time: float, time_step: float, ramp: float) -> str:
+    """Materials, gravity on the block, the clamped base bottom and the contact process of the block
+    on its base (write_block_on_base, write_block_on_base_3d)."""
     variables = {"YOUNG_MODULUS": 1.0e6, "POISSON_RATIO": 0.3, "DENSITY": 1.0, "THICKNESS": 1.0,
                  "FRICTION_COEFFICIENT": friction}
+    law = "LinearElasticPlaneStrain2DLaw" if dim == 2 else "LinearElastic3DLaw"
     materials_data = {"properties": [
         {"model_part_name": f"Structure.{part}", "properties_id": pid,
-         "Material": {"constitutive_law": {"name": "LinearElasticPlaneStrain2DLaw"}, "Variables": dict(variables),
-                      "Tables": {}}}
+         "Material": {"constitutive_law": {"name": law}, "Variables": dict(variables), "Tables": {}}}
         for pid, part in ((1, "Parts_block"), (2, "Parts_base"))]}
     modulus, direction = gravity
 
@@ -179,7 +214,7 @@ def write_block_on_base(folder, name: str, *, block: tuple, base: tuple, cells: 
     if ramp > 0.0:
         loads.insert(0, gravity_process([0.0, ramp], f"{modulus} * t / {ramp}"))
     parameters = project_parameters(
-        name, 2, constraints=[fix_process("Structure.DISPLACEMENT_bottom", [0.0, 0.0, 0.0])],
+        name, dim, constraints=[fix_process("Structure.DISPLACEMENT_bottom", [0.0, 0.0, 0.0])],
         loads=loads, end_time=end_time, time_step=time_step, solver=solver)
     module, extra = contact
     parameters["processes"]["contact_process_list"] = [{

@@ -168,7 +168,7 @@ def test_pulled_interface_is_released(csma_cases, monkeypatch, tmp_path):
 def test_mpc_contact_settings(csma_cases, monkeypatch, tmp_path):
     """solver_settings.mpc_contact_settings: the simplified semi-smooth Newton (passes of
     inner_loop_iterations on a frozen set) and update_each_nl_iteration give the same answer on the
-    2D case; contact_type FrictionalPureSlip is not implemented; an unknown key names the nearest one."""
+    2D case; PureSlip is a variant of Frictional only; an unknown key names the nearest one."""
     monkeypatch.chdir(csma_cases)
     base = _run_2d(tmp_path / "base", lambda p: None)
     uy = base.model["Structure"].GetNode(3).GetSolutionStepValue(mc.GetVariable("DISPLACEMENT_Y"))
@@ -179,8 +179,8 @@ def test_mpc_contact_settings(csma_cases, monkeypatch, tmp_path):
         assert strategy.InnerLoopIterations() == 1  # the predictor's set holds
         node = analysis.model["Structure"].GetNode(3)
         assert node.GetSolutionStepValue(mc.GetVariable("DISPLACEMENT_Y")) == pytest.approx(uy, rel=1e-12)
-    with pytest.raises(mc.NotImplementedFeatureError, match=r"mpc_contact_settings\.contact_type.*FrictionalPureSlip"):
-        _run_2d(tmp_path, _mpc_settings(contact_type="FrictionalPureSlip"))
+    with pytest.raises(mc.InputError, match=r"mpc_contact_settings\.contact_type.*did you mean 'FrictionalPureSlip'"):
+        _run_2d(tmp_path, _mpc_settings(contact_type="FrictionlessPureSlip"))
     with pytest.raises(mc.InputError, match="inner_loop_iterations"):
         _run_2d(tmp_path, _mpc_settings(inner_loop_iteration=3))
     with pytest.raises(mc.InputError, match=r"inner_loop_iterations: 0 must be at least 1"):
@@ -203,8 +203,8 @@ def test_mpc_contact_process_keys(csma_cases, monkeypatch, tmp_path):
         _run_2d(tmp_path, _process_settings(reaction_check_stiffness_factor=-1.0))
     with pytest.raises(mc.InputError, match=r"contact_type.*did you mean 'Frictionless'"):
         _run_2d(tmp_path, _process_settings(contact_type="Frictionles"))
-    with pytest.raises(mc.NotImplementedFeatureError, match=r"contact_type.*FrictionalPureSlip"):
-        _run_2d(tmp_path, _process_settings(contact_type="FrictionalPureSlip"))
+    with pytest.raises(mc.InputError, match=r"contact_type: 'FrictionlessPureSlip'.*did you mean 'FrictionalPureSlip'"):
+        _run_2d(tmp_path, _process_settings(contact_type="FrictionlessPureSlip"))
     with pytest.raises(mc.InputError, match=r"normal_variation: unknown value"):
         _run_2d(tmp_path, _process_settings(normal_variation="nodal"))
     with pytest.raises(mc.InputError, match=r"mpc_contact_process needs solver_settings\.mpc_contact_settings"):

@@ -249,7 +249,7 @@ TEST(MPCContactConstraints, CoulombForceOfASlippingNodeAndTiesOfASticking) {
   slipping.Set(SLIP, true);
   sticking.Set(SLIP, false);
   const Array3 tangent(std::cos(0.5), std::sin(0.5), 0.0);
-  const auto terms = constraints.CoulombTerms({{&slipping, tangent}, {&sticking, tangent}});
+  const auto terms = constraints.CoulombTerms({{&slipping, tangent}, {&sticking, tangent}}, {}).combination;
   ASSERT_FALSE(terms.empty());
   // The force the terms add for a residual r = f_ext - f_int at the slipping node (zero elsewhere).
   const auto forces = [&](const Array3& residual) {
@@ -271,6 +271,83 @@ TEST(MPCContactConstraints, CoulombForceOfASlippingNodeAndTiesOfASticking) {
   // The sticking node: both components tied (node 1 slips: its normal relation only).
   const auto tied = constraints.TiedRelations();
   EXPECT_EQ(tied.size(), 3u);
+}
+
+// 3D: a slipping node's Coulomb force -mu |f_n| s with s the direction of its tangential slip of the
+// step; the stiffness terms (the turn of s, f_n held) are minus the central-difference derivative of
+// that force with respect to every displacement of the node and its masters, to 1e-8.
+TEST(MPCContactConstraints, TurnStiffnessOfA3DSlipIsTheDerivativeOfItsCoulombForce) {
+  Model model;
+  ModelPart& root = MakeContactModelPart(model);
+  ModelPart& contact = root.CreateSubModelPart("Contact");
+  ModelPart& computing = root.CreateSubModelPart("ComputingContact");
+  root.GetProcessInfo().SetValue(DOMAIN_SIZE, 3);
+  root.SetBufferSize(2);
+  std::vector<Node*> slaves;
+  std::vector<Node*> masters;
+  const double corners[4][2] = {{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}};
+  for (int i = 0; i < 4; ++i) {
+    slaves.push_back(&MakeNode(root, 1 + i, Array3(corners[i][0], corners[i][1], 0.0)));
+    slaves.back()->Set(SLAVE);
+    // The master face: shifted and larger, ordered the other way (its normal points down).
+    masters.push_back(
+        &MakeNode(root, 11 + i, Array3(1.3 * corners[3 - i][0] - 0.2, 1.2 * corners[3 - i][1] - 0.35, 0.1)));
+  }
+  Condition& added = computing.AddCondition(std::make_unique<MPCMortarContactCondition<3, 4, 4>>(
+      1, Geometry(GeometryType::Quadrilateral3D4, slaves), nullptr, Geometry(GeometryType::Quadrilateral3D4, masters)));
+  contact.AddCondition(&added);
+  contact.AddNodes({1, 2, 3, 4, 11, 12, 13, 14});
+  MPCContactConstraints constraints(contact, computing);
+  constraints.SetFrictional(true);
+  constraints.Measure();
+  constraints.Relate();
+  Node& node = root.GetNode(3);
+  const double mu = 0.2;
+  const double normal_force = -3.0;
+  node.Set(ACTIVE, true);
+  node.Set(SLIP, true);
+  node.SetValue(FRICTION_COEFFICIENT, mu);
+  // A slip of the step with a component along the normal (the projection removes it) and masters moved.
+  const Array3 moves[5] = {
+      {2e-3, 1e-3, 4e-4}, {-3e-4, 5e-4, 0.0}, {1e-4, -2e-4, 0.0}, {0.0, 3e-4, 1e-4}, {2e-4, 0.0, 0.0}};
+  std::vector<Node*> moved{&node};
+  for (Node* master : masters) moved.push_back(master);
+  for (std::size_t i = 0; i < moved.size(); ++i) moved[i]->FastGetSolutionStepValue(DISPLACEMENT) = moves[i];
+  const auto force = [&]() {
+    const Array3 slip = constraints.TangentialSlip(node);
+    return Array3(-mu * std::abs(normal_force) * slip / slip.norm());
+  };
+  const Array3 slip = constraints.TangentialSlip(node);
+  ASSERT_GT(slip.norm(), 1e-4);
+  const auto system = constraints.CoulombTerms({{&node, Array3(slip / slip.norm())}},
+                                               {{&node, mu * std::abs(normal_force) / slip.norm()}});
+  ASSERT_FALSE(system.stiffness.empty());
+  std::map<std::pair<const Dof*, const Dof*>, double> stiffness;
+  for (const auto& term : system.stiffness) stiffness[{term.to, term.from}] += term.weight;
+  const Variable<double>* const u[3] = {&DISPLACEMENT_X, &DISPLACEMENT_Y, &DISPLACEMENT_Z};
+  const double h = 1e-7;
+  double largest = 0.0;
+  int checked = 0;
+  for (Node* other : moved)
+    for (int d = 0; d < 3; ++d) {
+      double& value = other->FastGetSolutionStepValue(DISPLACEMENT)[d];
+      value += h;
+      const Array3 plus = force();
+      value -= 2.0 * h;
+      const Array3 minus = force();
+      value += h;
+      const Array3 derivative = (plus - minus) / (2.0 * h);
+      largest = std::max(largest, derivative.norm());
+      for (int c = 0; c < 3; ++c) {
+        const auto entry = stiffness.find({&node.GetDof(*u[c]), &other->GetDof(*u[d])});
+        const double term = entry == stiffness.end() ? 0.0 : entry->second;
+        EXPECT_NEAR(term, -derivative[c], 1e-8 * mu * std::abs(normal_force) / slip.norm())
+            << "row " << c << " of node 3, column " << d << " of node " << other->Id();
+        ++checked;
+      }
+    }
+  EXPECT_EQ(checked, 45);
+  EXPECT_GT(largest, 1.0);  // the derivative is not trivially zero
 }
 
 }  // namespace
