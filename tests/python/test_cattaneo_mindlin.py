@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import contextlib
 import importlib.util
+import json
 
 import numpy as np
 import pytest
@@ -107,6 +108,28 @@ def test_cattaneo_mindlin_2d(tmp_path):
         # the tractions on the slave balance the force on the cylinder (equilibrium)
         assert np.linalg.norm(np.add(r["traction_force"], r["force"][:2])) < 1e-2 * r["Q"]
         assert r["iterations"] <= 5
+
+
+def test_cattaneo_mindlin_3d_symmetry_of_the_multiplier(tmp_path):
+    """The half model fixes the multiplier's y component on y = 0 as the displacement's. Without
+    it the first normal step diverged (iteration 1: |du| 4e4, then a singular multiplier row of
+    a node on the plane); with it the step converges in 3 iterations."""
+    case = cm.write_case(3, "15k", str(tmp_path))
+    parameters = read_project_parameters(f"{case}/ProjectParameters.json")
+    constraints = json.loads(parameters["processes"]["constraints_process_list"].WriteJsonString())
+    constrained = [p["Parameters"] for p in constraints
+                   if p["Parameters"]["model_part_name"] == "Structure.Contact_slave_sym_y"]
+    assert [(p["variable_name"], p["constrained"]) for p in constrained] == [
+        ("VECTOR_LAGRANGE_MULTIPLIER", [False, True, False])]
+    parameters["problem_data"]["end_time"].SetDouble(1.0 / (cm.NORMAL_STEPS + cm.TANGENTIAL_STEPS))
+    with contextlib.chdir(case):
+        analysis = PartialSlipAnalysis(mc.Model(), parameters, 2)
+        analysis.Run()
+    part = analysis.model["Structure"]
+    on_plane = list(part.GetSubModelPart("Contact_slave_sym_y").Nodes)
+    assert on_plane and all(abs(n.Y0) < 1e-12 for n in on_plane)
+    assert any(n.Is(mc.ACTIVE) for n in on_plane)
+    assert [step["iterations"] for step in analysis.steps] == [3]
 
 
 @pytest.mark.slow
