@@ -78,7 +78,8 @@ def run(dim: int, label: str, folder: str, mpc: bool = False) -> tuple[list[dict
     results = []
     for step in analysis.steps[cm.NORMAL_STEPS:]:
         result = cm.evaluate_step(dim, reference["radius"], reference["effective_modulus"],
-                                  reference["friction_coefficient"], step["force"], step["nodes"])
+                                  reference["friction_coefficient"], step["force"], step["nodes"],
+                                  reference["symmetry_factor"])
         result["iterations"] = step["iterations"]
         results.append(result)
     return results, reference
@@ -108,6 +109,15 @@ def test_cattaneo_mindlin_2d(tmp_path):
         # the tractions on the slave balance the force on the cylinder (equilibrium)
         assert np.linalg.norm(np.add(r["traction_force"], r["force"][:2])) < 1e-2 * r["Q"]
         assert r["iterations"] <= 5
+
+
+def test_zone_size_of_a_half_model():
+    """The 3D case is the half model: its stick zone is half a disc, whose radius comes from twice
+    its area (the full-disc formula alone gave c / sqrt(2), 0.25 a below Cattaneo-Mindlin)."""
+    radius = 0.3
+    areas = np.full(40, 0.5 * np.pi * radius**2 / 40)  # half a disc in 40 nodal shares
+    assert cm.zone_size(3, areas, symmetry=2) == pytest.approx(radius, rel=1e-12)
+    assert cm.zone_size(3, areas) == pytest.approx(radius / np.sqrt(2.0), rel=1e-12)
 
 
 def test_cattaneo_mindlin_3d_symmetry_of_the_multiplier(tmp_path):
