@@ -516,6 +516,8 @@ def build_case(family: str, label: str, half: bool = False) -> dict:
     if dim == 3:
         parts["DISPLACEMENT_sym_y"] = {"nodes": np.flatnonzero(np.abs(coords[:, 1]) < tol)}
     parts["Contact_slave"] = {"nodes": slave}
+    if half and dim == 3:  # where a vector multiplier needs the symmetry condition (cattaneo_mindlin)
+        parts["Contact_slave_sym_y"] = {"nodes": slave[np.abs(coords[slave, 1]) < tol]}
     parts["Contact_master"] = {"nodes": nc + master}
     for name in parts:
         if len(parts[name]["nodes"]) == 0:
@@ -541,7 +543,7 @@ def write_mesh(path: str, case: dict) -> dict:
     return write_case_mesh(path, case["coords"], blocks, parts)
 
 
-def assign_displacement(part: str, constrained: list, value: list) -> dict:
+def assign_displacement(part: str, constrained: list, value: list, variable: str = "DISPLACEMENT") -> dict:
     # A free component gets null, not 0.0: a number would be assigned (without fixity) at the
     # start of every step in both codes, snapping the nodes on the symmetry planes and the top
     # back to zero displacement in that component. On hertz3d_50k that jolt (4.6e-3 on faces
@@ -549,7 +551,7 @@ def assign_displacement(part: str, constrained: list, value: list) -> dict:
     value = [v if fixed else None for v, fixed in zip(value, constrained)]
     return {"python_module": "assign_vector_variable_process", "kratos_module": "KratosMultiphysics",
             "process_name": "AssignVectorVariableProcess",
-            "Parameters": {"model_part_name": f"Structure.{part}", "variable_name": "DISPLACEMENT",
+            "Parameters": {"model_part_name": f"Structure.{part}", "variable_name": variable,
                            "interval": [0.0, "End"], "constrained": constrained, "value": value}}
 
 

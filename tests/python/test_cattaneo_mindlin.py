@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import contextlib
 import importlib.util
+import json
 
 import numpy as np
 import pytest
@@ -77,7 +78,8 @@ def run(dim: int, label: str, folder: str, mpc: bool = False) -> tuple[list[dict
     results = []
     for step in analysis.steps[cm.NORMAL_STEPS:]:
         result = cm.evaluate_step(dim, reference["radius"], reference["effective_modulus"],
-                                  reference["friction_coefficient"], step["force"], step["nodes"])
+                                  reference["friction_coefficient"], step["force"], step["nodes"],
+                                  reference["symmetry_factor"])
         result["iterations"] = step["iterations"]
         results.append(result)
     return results, reference
@@ -109,11 +111,43 @@ def test_cattaneo_mindlin_2d(tmp_path):
         assert r["iterations"] <= 5
 
 
+def test_zone_size_of_a_half_model():
+    """The 3D case is the half model: its stick zone is half a disc, whose radius comes from twice
+    its area (the full-disc formula alone gave c / sqrt(2), 0.25 a below Cattaneo-Mindlin)."""
+    radius = 0.3
+    areas = np.full(40, 0.5 * np.pi * radius**2 / 40)  # half a disc in 40 nodal shares
+    assert cm.zone_size(3, areas, symmetry=2) == pytest.approx(radius, rel=1e-12)
+    assert cm.zone_size(3, areas) == pytest.approx(radius / np.sqrt(2.0), rel=1e-12)
+
+
+def test_cattaneo_mindlin_3d_symmetry_of_the_multiplier(tmp_path):
+    """The half model fixes the multiplier's y component on y = 0 as the displacement's. Without
+    it the first normal step diverged (iteration 1: |du| 4e4, then a singular multiplier row of
+    a node on the plane); with it the step converges in 3 iterations."""
+    case = cm.write_case(3, "15k", str(tmp_path))
+    parameters = read_project_parameters(f"{case}/ProjectParameters.json")
+    constraints = json.loads(parameters["processes"]["constraints_process_list"].WriteJsonString())
+    constrained = [p["Parameters"] for p in constraints
+                   if p["Parameters"]["model_part_name"] == "Structure.Contact_slave_sym_y"]
+    assert [(p["variable_name"], p["constrained"]) for p in constrained] == [
+        ("VECTOR_LAGRANGE_MULTIPLIER", [False, True, False])]
+    parameters["problem_data"]["end_time"].SetDouble(1.0 / (cm.NORMAL_STEPS + cm.TANGENTIAL_STEPS))
+    with contextlib.chdir(case):
+        analysis = PartialSlipAnalysis(mc.Model(), parameters, 2)
+        analysis.Run()
+    part = analysis.model["Structure"]
+    on_plane = list(part.GetSubModelPart("Contact_slave_sym_y").Nodes)
+    assert on_plane and all(abs(n.Y0) < 1e-12 for n in on_plane)
+    assert any(n.Is(mc.ACTIVE) for n in on_plane)
+    assert [step["iterations"] for step in analysis.steps] == [3]
+
+
 @pytest.mark.slow
-@pytest.mark.xfail(strict=True, raises=mc.SolutionError, reason=(
-    "issue 12: step 1 stops on a singular system (a sliver pair couples slave nodes 11 and 972, "
-    "MixedULM solves the whole system, and the multiplier row of node 2454 is singular); the same "
-    "since the test was written (bafd3b4) on this machine"))
+@pytest.mark.xfail(strict=True, raises=AssertionError, reason=(
+    "issue 12: with the multiplier's symmetry on y = 0 every step converges (normal steps 3, 3, 2, 3, 2, "
+    "1, 2, 3 iterations; shift steps 5, 4, 5, 5, 5, 6, 5, 6) at Q/muP 0.14 to 0.90, but c/a stays "
+    "0.037 to 0.054 a below Cattaneo-Mindlin (the last step above 0.05 a) and Coulomb holds at the "
+    "slipping nodes to 1.0e-7 p0, not 1e-8 (2D: 1e-12)"))
 def test_cattaneo_mindlin_3d(tmp_path):
     results, _ = run(3, "15k", str(tmp_path))
     print(_table(results))
