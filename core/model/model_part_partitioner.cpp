@@ -41,7 +41,8 @@ ModelPartPartitioner::Piece ModelPartPartitioner::Cut(ModelPart& root,
   };
   Piece piece;
   for (Element* element : root.Elements()) piece.elements += keep(*element, false);
-  for (Condition* condition : root.Conditions()) piece.conditions += keep(*condition, kept_conditions.count(condition) > 0);
+  for (Condition* condition : root.Conditions())
+    piece.conditions += keep(*condition, kept_conditions.count(condition) > 0);
   for (Node* node : root.Nodes()) {
     const bool owned = owner_(*node) == rank_;
     const bool stays = owned || kept_nodes.count(node) > 0;

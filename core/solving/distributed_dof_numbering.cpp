@@ -66,8 +66,8 @@ DistributedDofNumbering::DistributedDofNumbering(const std::vector<Dof*>& dofs,
                                        [](const Dof* d, const auto& key) { return Key(d) < key; });
       if (it == dofs.end() || Key(*it) != wanted || owner(*(*it)->node) != rank) {
         if (missing.empty())
-          missing = Concat("rank ", r, " ghosts node ", wanted.first, " (variable key ", wanted.second, "), which rank ",
-                           rank, " owns but has no such DoF: its piece lacks an entity of that node");
+          missing = Concat("rank ", r, " ghosts node ", wanted.first, " (variable key ", wanted.second,
+                           "), which rank ", rank, " owns but has no such DoF: its piece lacks an entity of that node");
         answers[r].push_back(-1);
         continue;
       }

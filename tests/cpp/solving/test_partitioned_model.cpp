@@ -126,7 +126,8 @@ RankView RunRank(Grid& grid, ThreadRanks& ranks, int rank) {
   view.contact_conditions = Ids(mp.GetSubModelPart("Contact").Conditions());
 
   const std::vector<Dof*> dofs = DofSet(mp);
-  const DistributedDofNumbering numbering(dofs, [&](const Node& node) { return partition.Owner(node); }, communicator);
+  const DistributedDofNumbering numbering(
+      dofs, [&](const Node& node) { return partition.Owner(node); }, communicator);
   view.begin = numbering.Begin();
   view.end = numbering.End();
   view.rows = numbering.Rows();
@@ -146,9 +147,8 @@ std::vector<RankView> RunRanks(int size) {
   std::vector<RankView> views(static_cast<std::size_t>(size));
   std::vector<std::thread> threads;
   for (int r = 0; r < size; ++r)
-    threads.emplace_back([&, r] {
-      views[static_cast<std::size_t>(r)] = RunRank(*grids[static_cast<std::size_t>(r)], ranks, r);
-    });
+    threads.emplace_back(
+        [&, r] { views[static_cast<std::size_t>(r)] = RunRank(*grids[static_cast<std::size_t>(r)], ranks, r); });
   for (auto& t : threads) t.join();
   return views;
 }
@@ -245,8 +245,10 @@ TEST(PartitionedModel, AGhostDofItsOwnerLacksIsNamedOnBothRanks) {
       std::vector<Dof*> dofs{&node.GetDof(DISPLACEMENT_X)};
       if (r == 1) dofs.push_back(&node.GetDof(DISPLACEMENT_Y));
       ThreadCommunicator communicator(ranks, r);
-      messages[static_cast<std::size_t>(r)] = test::ErrorMessageOf<Error>(
-          [&] { DistributedDofNumbering(dofs, [](const Node&) { return 0; }, communicator); });
+      messages[static_cast<std::size_t>(r)] = test::ErrorMessageOf<Error>([&] {
+        DistributedDofNumbering(
+            dofs, [](const Node&) { return 0; }, communicator);
+      });
     });
   for (auto& t : threads) t.join();
   EXPECT_NE(messages[0].find("rank 1 ghosts node 1"), std::string::npos) << messages[0];
