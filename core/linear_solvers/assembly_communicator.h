@@ -2,13 +2,15 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 
 namespace mc {
 
 /// The processes that share one distributed linear system (PETSc under `mpirun -n N`), seen by
 /// the builder-and-solver without MPI: the core links no MPI, the PETSc plugin implements this.
-/// Every rank holds the whole model and runs the same control flow, so every collective call
-/// here is made by all ranks in the same order.
+/// Every rank runs the same control flow (today on the whole model; ModelPartPartitioner cuts it
+/// to a piece per rank), so every collective call here is made by all ranks in the same order.
 class AssemblyCommunicator {
  public:
   virtual ~AssemblyCommunicator() = default;
@@ -17,6 +19,13 @@ class AssemblyCommunicator {
   /// values[i] = the sum over the ranks of values[i], the same bits on every rank: the replicated
   /// model must update identically everywhere, or the ranks' Newton loops part ways.
   virtual void SumToAll(double* values, std::size_t count) const = 0;
+  /// The sum of `value` over the ranks below this one (0 on rank 0): where this rank's block of a
+  /// numbering by ranks starts.
+  virtual std::int64_t ExclusiveScan(std::int64_t value) const = 0;
+  /// Sends outgoing[r] to rank r (outgoing has Size() lists) and returns incoming, incoming[r] the
+  /// list rank r sent here: the neighbour exchange of a distributed numbering and of ghost values.
+  virtual std::vector<std::vector<std::int64_t>> Exchange(
+      const std::vector<std::vector<std::int64_t>>& outgoing) const = 0;
 
   /// How many processes the launcher (mpirun, mpiexec, srun) started this one among, and its
   /// rank, read from the launcher's environment (OMPI_COMM_WORLD_SIZE, PMI_SIZE, ...) before any

@@ -217,30 +217,30 @@ Condition& ModelPart::GetCondition(IndexType id) const {
   throw InputError(Concat("model part ", FullName(), " has no condition ", id));
 }
 
-void ModelPart::RemoveConditionsFlagged(const Flag& flag) {
-  ModelPart& root = GetRootModelPart();
-  std::vector<ModelPart*> stack{&root};
+template <class T>
+void ModelPart::RemoveFlaggedFromTree(EntityContainer<T> ModelPart::*items, std::vector<std::unique_ptr<T>>& owned,
+                                      const Flag& flag) {
+  std::vector<ModelPart*> stack{&GetRootModelPart()};
   while (!stack.empty()) {
     ModelPart* part = stack.back();
     stack.pop_back();
-    part->conditions_.RemoveIf([&](const Condition* c) { return c->Is(flag); });
+    (part->*items).RemoveIf([&](const T* item) { return item->Is(flag); });
     for (auto& [name, sub] : part->sub_model_parts_) stack.push_back(sub.get());
   }
-  auto& owned = root.root_->conditions;
-  owned.erase(std::remove_if(owned.begin(), owned.end(), [&](const auto& c) { return c->Is(flag); }), owned.end());
+  owned.erase(std::remove_if(owned.begin(), owned.end(), [&](const auto& item) { return item->Is(flag); }),
+              owned.end());
+}
+
+void ModelPart::RemoveConditionsFlagged(const Flag& flag) {
+  RemoveFlaggedFromTree(&ModelPart::conditions_, GetRootModelPart().root_->conditions, flag);
+}
+
+void ModelPart::RemoveNodesFlagged(const Flag& flag) {
+  RemoveFlaggedFromTree(&ModelPart::nodes_, GetRootModelPart().root_->nodes, flag);
 }
 
 void ModelPart::RemoveElementsFlagged(const Flag& flag) {
-  ModelPart& root = GetRootModelPart();
-  std::vector<ModelPart*> stack{&root};
-  while (!stack.empty()) {
-    ModelPart* part = stack.back();
-    stack.pop_back();
-    part->elements_.RemoveIf([&](const Element* e) { return e->Is(flag); });
-    for (auto& [name, sub] : part->sub_model_parts_) stack.push_back(sub.get());
-  }
-  auto& owned = root.root_->elements;
-  owned.erase(std::remove_if(owned.begin(), owned.end(), [&](const auto& e) { return e->Is(flag); }), owned.end());
+  RemoveFlaggedFromTree(&ModelPart::elements_, GetRootModelPart().root_->elements, flag);
 }
 
 Properties& ModelPart::GetOrCreateProperties(IndexType id) {

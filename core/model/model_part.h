@@ -64,6 +64,9 @@ class ModelPart {
   bool HasNode(IndexType id) const { return nodes_.Contains(id); }
   const EntityContainer<Node>& Nodes() const noexcept { return nodes_; }
   std::size_t NumberOfNodes() const { return nodes_.size(); }
+  /// Removes (from the whole tree, and destroys) the nodes flagged `flag`: no element or
+  /// condition left may use them.
+  void RemoveNodesFlagged(const Flag& flag);
 
   // Elements and conditions -------------------------------------------------------------------
   /// Creates an element of the registered class `name` on the nodes with the given ids.
@@ -130,6 +133,10 @@ class ModelPart {
   template <class T>
   T* CreateEntity(const std::string& name, IndexType id, const std::vector<IndexType>& node_ids,
                   Properties* properties);
+  /// Removes the items flagged `flag` from `items` of every part of the tree and destroys them.
+  template <class T>
+  void RemoveFlaggedFromTree(EntityContainer<T> ModelPart::*items, std::vector<std::unique_ptr<T>>& owned,
+                             const Flag& flag);
 
   std::string name_;
   ModelPart* parent_ = nullptr;

@@ -17,6 +17,10 @@ class PetscCommunicator : public AssemblyCommunicator {
   /// Reduced on rank 0, then broadcast: MPI_Allreduce does not promise the same bits on every
   /// rank, and the replicated models must not part ways by a rounding.
   void SumToAll(double* values, std::size_t count) const override;
+  std::int64_t ExclusiveScan(std::int64_t value) const override;
+  /// The counts by MPI_Alltoall, then the lists by MPI_Alltoallv.
+  std::vector<std::vector<std::int64_t>> Exchange(
+      const std::vector<std::vector<std::int64_t>>& outgoing) const override;
   MPI_Comm Comm() const noexcept { return comm_; }
 
  private:

@@ -4,13 +4,11 @@
 // Newton iterations and solution with both builders: every row gets each of its entities once (a
 // missed or doubled spring would change the answer), the residual is summed, the Dirichlet
 // diagonal is put once. The node partition is compact and the same on every rank; the row
-// partition keeps a node's DoFs on one rank. No MPI: a barrier sums the ranks' vectors.
+// partition keeps a node's DoFs on one rank. No MPI: ranks are threads (thread_communicator.h).
 #include <gtest/gtest.h>
 
-#include <barrier>
 #include <thread>
 
-#include "core/linear_solvers/assembly_communicator.h"
 #include "core/linear_solvers/row_partition.h"
 #include "core/linear_solvers/umfpack_solver.h"
 #include "core/model/master_slave_constraint.h"
@@ -24,38 +22,13 @@
 #include "core/variables/kernel_variables.h"
 #include "test_elements.h"
 #include "tests/cpp/common/error_message.h"
+#include "tests/cpp/common/thread_communicator.h"
 
 namespace mc {
 namespace {
 
-/// `size` ranks as threads: each writes its vector into its slot, and every rank adds the slots
-/// in rank order, so all get the same bits, as the MPI implementation promises.
-struct ThreadRanks {
-  explicit ThreadRanks(int size) : sync(size), slots(static_cast<std::size_t>(size)) {}
-  std::barrier<> sync;
-  std::vector<std::vector<double>> slots;
-};
-
-class ThreadCommunicator : public AssemblyCommunicator {
- public:
-  ThreadCommunicator(ThreadRanks& ranks, int rank) : ranks_(ranks), rank_(rank) {}
-  int Rank() const override { return rank_; }
-  int Size() const override { return static_cast<int>(ranks_.slots.size()); }
-  void SumToAll(double* values, std::size_t count) const override {
-    ranks_.slots[static_cast<std::size_t>(rank_)].assign(values, values + count);
-    ranks_.sync.arrive_and_wait();
-    for (std::size_t i = 0; i < count; ++i) {
-      double sum = 0.0;
-      for (const auto& slot : ranks_.slots) sum += slot[i];
-      values[i] = sum;
-    }
-    ranks_.sync.arrive_and_wait();  // no rank refills its slot before all have read
-  }
-
- private:
-  ThreadRanks& ranks_;
-  int rank_;
-};
+using test::ThreadCommunicator;
+using test::ThreadRanks;
 
 /// The distributed contract of LinearSolver::Communicator with a sequential solver: gathers the
 /// ranks' rows of the matrix, then every rank solves the whole system.

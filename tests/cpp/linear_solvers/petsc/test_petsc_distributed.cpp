@@ -5,6 +5,7 @@
 // no communicator. Each rank holds only its rows, as the builder's do.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <vector>
 
 #include "core/linear_solvers/assembly_communicator.h"
@@ -24,6 +25,28 @@ TEST(PetscCommunicator, NoneForAProcessStartedAlone) {
   if (AssemblyCommunicator::LaunchedSize() > 1) GTEST_SKIP() << "for a process started alone";
   PetscSolver solver(PetscSolver::Options{});
   EXPECT_EQ(solver.Communicator(), nullptr);
+}
+
+TEST(PetscCommunicator, ExclusiveScanAndExchangeOfListsOfEveryLength) {
+  if (AssemblyCommunicator::LaunchedSize() < 2) GTEST_SKIP() << "runs under mpirun -n 2 (petsc_solver_on_two_ranks)";
+  PetscSolver solver(PetscSolver::Options{});
+  const AssemblyCommunicator& communicator = *solver.Communicator();
+  const int size = communicator.Size();
+  const int rank = communicator.Rank();
+  std::int64_t below = 0;
+  for (int r = 0; r < rank; ++r) below += 10 * r + 7;
+  EXPECT_EQ(communicator.ExclusiveScan(10 * rank + 7), below);
+  // Rank r sends rank s the r + s values 1000 r + s, ... (none from rank 0 to itself).
+  const auto list = [](int from, int to) {
+    std::vector<std::int64_t> values;
+    for (int k = 0; k < from + to; ++k) values.push_back(1000 * from + 10 * to + k);
+    return values;
+  };
+  std::vector<std::vector<std::int64_t>> outgoing;
+  for (int s = 0; s < size; ++s) outgoing.push_back(list(rank, s));
+  const auto incoming = communicator.Exchange(outgoing);
+  ASSERT_EQ(incoming.size(), static_cast<std::size_t>(size));
+  for (int r = 0; r < size; ++r) EXPECT_EQ(incoming[static_cast<std::size_t>(r)], list(r, rank)) << "from rank " << r;
 }
 
 class PetscDistributed : public ::testing::TestWithParam<const char*> {};
