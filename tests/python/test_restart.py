@@ -156,7 +156,7 @@ def test_resumed_run_with_the_extrapolating_predictor_is_bit_identical(tmp_path)
     state; that history is on the slave nodes (CONVERGED_CONTACT_STATES), so a checkpoint carries
     it and the resumed run extrapolates where the uninterrupted one did."""
     for name in os.listdir(PUNCH):
-        if name.endswith((".mdpa", "_materials.json")):
+        if name.endswith((".msh", ".mdpa", "_materials.json")):
             shutil.copy(os.path.join(PUNCH, name), tmp_path)
     with open(os.path.join(PUNCH, "ProjectParameters.json")) as f:
         params = json.load(f)
