@@ -33,11 +33,11 @@ DistributedDofNumbering::DistributedDofNumbering(const std::vector<Dof*>& dofs,
   receive_positions_.assign(ranks, {});
   // The owned DoFs in order; the ghosts' (node id, variable key) to their owners.
   std::vector<std::vector<std::int64_t>> requests(ranks);
-  std::int64_t owned = 0;
+  std::vector<Dof*> owned_dofs;
   for (std::size_t i = 0; i < dofs.size(); ++i) {
     const int r = owner(*dofs[i]->node);
     if (r == rank) {
-      dofs[i]->equation_id = owned++;
+      owned_dofs.push_back(dofs[i]);
       continue;
     }
     const auto [node, variable] = Key(dofs[i]);
@@ -45,10 +45,10 @@ DistributedDofNumbering::DistributedDofNumbering(const std::vector<Dof*>& dofs,
     receive_positions_[static_cast<std::size_t>(r)].push_back(i);
     ++ghosts_;
   }
+  const auto owned = static_cast<std::int64_t>(owned_dofs.size());
   begin_ = communicator.ExclusiveScan(owned);
   end_ = begin_ + owned;
-  for (Dof* dof : dofs)
-    if (owner(*dof->node) == rank) dof->equation_id += begin_;
+  for (std::int64_t k = 0; k < owned; ++k) owned_dofs[static_cast<std::size_t>(k)]->equation_id = begin_ + k;
   // The total: a sum of counts, exact in doubles.
   std::vector<double> total{static_cast<double>(owned)};
   communicator.SumToAll(total.data(), 1);

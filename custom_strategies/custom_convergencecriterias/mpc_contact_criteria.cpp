@@ -26,7 +26,7 @@ double YoungModulus(const ModelPart& root) {
 Array3 FreeTangential(const Node& node, Array3 tangential) {
   const Variable<double>* const displacements[3] = {&DISPLACEMENT_X, &DISPLACEMENT_Y, &DISPLACEMENT_Z};
   for (int c = 0; c < 3; ++c)
-    if (node.HasDofFor(*displacements[c]) && node.GetDof(*displacements[c]).fixed) tangential[c] = 0.0;
+    if (node.IsFixed(*displacements[c])) tangential[c] = 0.0;
   return tangential;
 }
 
