@@ -13,6 +13,7 @@
 #include "core/model/model_part.h"
 #include "core/model/parallel_utilities.h"
 #include "core/solving/scheme.h"
+#include "core/solving/singular_system_error.h"
 #include "core/utilities/logger.h"
 
 namespace mc {
@@ -588,7 +589,10 @@ void BuilderAndSolver::ThrowSingular(const std::vector<const Dof*>& dofs, const 
                                        : Concat("singular system: zero pivot at ", list);
   message += one ? " (is it constrained?)" : " (are they constrained?)";
   if (!detail.empty()) message += Concat("; linear solver: ", detail);
-  throw SolutionError(message);
+  std::vector<SingularSystemError::DofName> names;
+  names.reserve(dofs.size());
+  for (const Dof* dof : dofs) names.emplace_back(dof->node->Id(), dof->variable->Name());
+  throw SingularSystemError(message, std::move(names));
 }
 
 // Solve -----------------------------------------------------------------------------------------

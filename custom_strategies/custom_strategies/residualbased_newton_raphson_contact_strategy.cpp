@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/model/model_part.h"
+#include "core/solving/singular_system_error.h"
 #include "core/utilities/logger.h"
 #include "core/variables/kernel_variables.h"
 #include "custom_strategies/custom_convergencecriterias/contact_criteria_utilities.h"
@@ -141,11 +142,45 @@ std::size_t ResidualBasedNewtonRaphsonContactStrategy::CountFlips(const std::vec
 
 bool ResidualBasedNewtonRaphsonContactStrategy::NewtonIteration(int iteration) {
   const std::vector<char> before = ContactStates();
-  const bool converged = NewtonRaphsonStrategy::NewtonIteration(iteration);
+  bool converged = false;
+  try {
+    converged = NewtonRaphsonStrategy::NewtonIteration(iteration);
+  } catch (const SingularSystemError& e) {
+    ExplainLostOverlap(e, iteration);
+    throw;
+  }
   last_changes_ = CountFlips(before);
   if (FindContactModelPart(model_part_)) history_.back().active_nodes = CountActive(ContactStates());
   if (splitting_.Enabled()) inverted_element_ = FindInvertedElement();
   return converged && inverted_element_ == 0;
+}
+
+void ResidualBasedNewtonRaphsonContactStrategy::ExplainLostOverlap(const SingularSystemError& error,
+                                                                   int iteration) const {
+  // An active slave node is active from the overlaps of the last mortar pass; the build after it
+  // integrates the pairs under the nodal normals of the current iterate, where a large iterate can
+  // have moved every face of the node off the master. Its multiplier then has no equation at all.
+  // Said in those terms, the user learns what to change (the step), not which DoF to constrain.
+  std::vector<IndexType> ids;
+  for (const auto& [id, variable] : error.Dofs()) {
+    const bool multiplier = variable.find("LAGRANGE_MULTIPLIER") != std::string::npos;
+    if (!multiplier || !model_part_.HasNode(id)) return;
+    const Node& node = model_part_.GetNode(id);
+    if (!node.Is(SLAVE) || !node.Is(ACTIVE)) return;
+    if (std::find(ids.begin(), ids.end(), id) == ids.end()) ids.push_back(id);
+  }
+  if (ids.empty()) return;
+  std::string nodes;
+  for (std::size_t i = 0; i < ids.size(); ++i) nodes += Concat(i ? ", " : " ", ids[i]);
+  const ProcessInfo& info = model_part_.GetProcessInfo();
+  throw SingularSystemError(
+      Concat(Name(), ": step ", info.GetValue(STEP), " (time ", info.GetValue(TIME), "), iteration ", iteration,
+             ": the active slave node(s)", nodes,
+             " lost every mortar overlap with the master under the current normals, so their contact "
+             "multipliers have no equation (the last iterate moved their faces off the master surface). The "
+             "load step is too large for the contact to follow: use a smaller time step, or let the solver "
+             "split the step (contact_settings adaptative_strategy / max_number_splits)"),
+      error.Dofs());
 }
 
 bool ResidualBasedNewtonRaphsonContactStrategy::RunNewtonLoop() {

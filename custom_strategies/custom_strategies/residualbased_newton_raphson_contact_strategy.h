@@ -13,6 +13,8 @@
 
 namespace mc {
 
+class SingularSystemError;
+
 /// Settings of the contact Newton strategy, read from its keys of `contact_settings`
 /// (ResidualBasedNewtonRaphsonContactStrategy::ReadSettings; defaults in GetDefaultParameters).
 struct ContactStrategySettings {
@@ -83,6 +85,8 @@ class ResidualBasedNewtonRaphsonContactStrategy : public NewtonRaphsonStrategy {
  protected:
   /// Base iteration, plus the active-set flip bookkeeping and the inverted-element guard.
   bool NewtonIteration(int iteration) override;
+  /// Rethrows `error` in contact terms when every DoF it names is the multiplier of an active slave node.
+  void ExplainLostOverlap(const SingularSystemError& error, int iteration) const;
   /// Full or simplified semi-smooth Newton, per the INTERACTION flag.
   bool SolveStepAttempt() override;
   /// Why the step failed: inverted element, the slave nodes whose state keeps switching (per-node

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import os
+import shutil
 import subprocess
 import sys
 
@@ -124,6 +125,22 @@ def test_singular_system_names_free_dofs(tmp_path):
     assert_clean_failure(result, 4, "DISPLACEMENT_")
     assert not (tmp_path / "vtk_output").exists() or not any(
         f.endswith(".vtu.tmp") for _, _, names in os.walk(tmp_path / "vtk_output") for f in names)
+
+
+def test_active_node_that_lost_its_overlap_is_explained(tmp_path):
+    # Half the block's height pushed down in one step: an iterate carries slave node 111's faces
+    # off the master, so its multiplier has no equation. The message says so and names the remedy
+    # instead of asking whether the multiplier DoF is constrained.
+    case = os.path.join(os.path.dirname(__file__), "..", "cases", "robustness",
+                        "2d_quad_flat_r0.25_overhang-none_gap_disp_4steps_alm_coarse")
+    shutil.copytree(case, tmp_path / "case")
+    parameters = tmp_path / "case" / "ProjectParameters.json"
+    params = json.loads(parameters.read_text())
+    params["solver_settings"]["time_stepping"]["time_step"] = 1.0
+    params["processes"]["constraints_process_list"][1]["Parameters"]["value"] = [0.0, "-0.5*t", 0.0]
+    parameters.write_text(json.dumps(params))
+    result = run_cli("run", str(parameters), cwd=tmp_path / "case")
+    assert_clean_failure(result, 4, "active slave node(s) 111 lost every mortar overlap", "max_number_splits")
 
 
 def test_unknown_process_suggests_nearest(tmp_path):
