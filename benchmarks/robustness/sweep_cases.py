@@ -208,6 +208,9 @@ def variants() -> list[Variant]:
                 r(b2, gap="pen", control="line", formulation=formulation)]
     out += [r(b2, nv=True), r(b2, shape="curved", nv=True), r(b3, nv=True), r(b3, shape="curved", nv=True),
             r(b2, shape="curved", nv=True, formulation="comp"), r(b2, shape="inclined", nv=True)]
+    out += [r(b2, nv=True, formulation="penalty"), r(b2, shape="curved", nv=True, formulation="penalty"),
+            r(b3, nv=True, formulation="penalty"), r(b3, shape="curved", nv=True, formulation="penalty"),
+            r(b2, gap="pen", control="line", nv=True, formulation="penalty")]
     # inclined and rotated models
     for base in (b2, b3):
         out += [r(base, shape="inclined"), r(base, shape="inclined", ratio=2.0),
