@@ -71,7 +71,31 @@ bool MPCContactCriteria::PostCriteria(ModelPart& model_part, const DofsArray&, c
     node->SetValue(NORMAL_CONTACT_STRESS, active ? pressure : 0.0);
     if (frictional) UpdateSlip(*node, was_active, FreeTangential(*node, reaction - force * normal), force);
   }
+  if (pure_slip_) StopPureSlipCycle(info);
   return changes_ == 0 && turn_ <= kTurnTolerance;
+}
+
+void MPCContactCriteria::InitializeSolutionStep(ModelPart&, const DofsArray&, const SparseMatrix&, const Vector&,
+                                                const Vector&) {
+  reversals_.clear();
+}
+
+void MPCContactCriteria::StopPureSlipCycle(const ProcessInfo& info) const {
+  std::vector<IndexType> cycling;
+  for (const auto& [node, reversals] : reversals_)
+    if (reversals >= kReversals && node->Is(ACTIVE)) cycling.push_back(node->Id());
+  if (cycling.empty()) return;
+  std::sort(cycling.begin(), cycling.end());
+  std::string nodes;
+  for (std::size_t i = 0; i < cycling.size() && i < 10; ++i) nodes += Concat(i ? ", " : "", cycling[i]);
+  if (cycling.size() > 10) nodes += Concat(" and ", cycling.size() - 10, " more");
+  throw SolutionError(Concat(
+      Name(), ": contact_type \"FrictionalPureSlip\": the slip direction of slave node(s) ", nodes,
+      " reversed in each of the last ", kReversals, " iterations (step ", info.GetValue(STEP), ", time ",
+      info.GetValue(TIME), "). Pure slip makes every node in contact slip, but this interface must stick in part ",
+      "(the load is too small to slide it, e.g. against the body's own Poisson slip) and then pure slip has no ",
+      "solution; use contact_type \"Frictional\" (Coulomb: stick and slip) in mpc_contact_process and ",
+      "solver_settings.mpc_contact_settings"));
 }
 
 void MPCContactCriteria::UpdateSlip(Node& node, bool was_active, const Array3& tangential, double normal_force) {
@@ -101,6 +125,10 @@ void MPCContactCriteria::UpdateSlip(Node& node, bool was_active, const Array3& t
       // for a node that turned back and sticks: if the cycle guard holds it slipping, it slips that way.
       const Array3 direction = step_slip / slid;
       if (held_slip && slip) turn_ = std::max(turn_, (direction - held->second).norm());
+      if (pure_slip_ && held_slip) {
+        int& reversals = reversals_[&node];
+        reversals = direction.dot(held->second) < 0.0 ? reversals + 1 : 0;
+      }
       directions_[&node] = direction;
       if (slip) turn_stiffness_[&node] = held_slip ? mu * std::abs(normal_force) / slid : young_modulus_ * size;
     } else if (length > 0.0) {

@@ -62,6 +62,8 @@ void ResidualBasedNewtonRaphsonMPCContactStrategy::InitializeSolutionStep() {
     TieInterface();
     return;
   }
+  mpc_criteria_->InitializeSolutionStep(model_part_, builder_->GetDofSet(), builder_->SystemMatrix(),
+                                        builder_->Increment(), builder_->Residual());
   constraints_->Measure();
   constraints_->Relate();
 }
