@@ -80,6 +80,38 @@ void MPCContactCriteria::InitializeSolutionStep(ModelPart&, const DofsArray&, co
   reversals_.clear();
 }
 
+void MPCContactCriteria::SaveState(Parameters& state) const {
+  std::vector<std::pair<IndexType, Array3>> directions;
+  for (const auto& [node, direction] : directions_) directions.emplace_back(node->Id(), direction);
+  std::sort(directions.begin(), directions.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<std::pair<IndexType, double>> stiffness;
+  for (const auto& [node, k] : turn_stiffness_) stiffness.emplace_back(node->Id(), k);
+  std::sort(stiffness.begin(), stiffness.end());
+  nlohmann::json& json = state.Json();
+  json["directions"] = nlohmann::json::array();
+  for (const auto& [id, s] : directions) json["directions"].push_back({id, s[0], s[1], s[2]});
+  json["turn_stiffness"] = nlohmann::json::array();
+  for (const auto& [id, k] : stiffness) json["turn_stiffness"].push_back({id, k});
+}
+
+void MPCContactCriteria::LoadState(const Parameters& state, const ModelPart& model_part) {
+  const auto node = [&](const Parameters& row) -> const Node* {
+    const IndexType id = static_cast<IndexType>(row[0].GetInt());
+    if (!model_part.HasNode(id))
+      throw InputError(Concat(row.Where(), ": node ", id, " of the restart state is not in ", model_part.FullName()));
+    return &model_part.GetNode(id);
+  };
+  directions_.clear();
+  turn_stiffness_.clear();
+  const Parameters directions = state["directions"];
+  for (std::size_t i = 0; i < directions.size(); ++i) {
+    const Parameters row = directions[i];
+    directions_[node(row)] = Array3(row[1].GetDouble(), row[2].GetDouble(), row[3].GetDouble());
+  }
+  const Parameters stiffness = state["turn_stiffness"];
+  for (std::size_t i = 0; i < stiffness.size(); ++i) turn_stiffness_[node(stiffness[i])] = stiffness[i][1].GetDouble();
+}
+
 void MPCContactCriteria::StopPureSlipCycle(const ProcessInfo& info) const {
   std::vector<IndexType> cycling;
   for (const auto& [node, reversals] : reversals_)

@@ -4,6 +4,7 @@
 #include <memory>
 #include <unordered_map>
 
+#include "core/parameters/parameters.h"
 #include "core/solving/convergence_criteria.h"
 #include "custom_strategies/custom_strategies/mpc_contact_constraints.h"
 
@@ -72,6 +73,13 @@ class MPCContactCriteria : public ConvergenceCriteria {
   /// Frictional: mu |f_n| / |slip| of the slipping nodes whose direction is that of their slip of the
   /// step (see MPCContactConstraints::CoulombTerms); E sqrt(NODAL_MAUX) for one that starts slipping.
   const std::unordered_map<const Node*, double>& TurnStiffness() const noexcept { return turn_stiffness_; }
+  /// What a later step reads of the steps before (a restart checkpoint's part): the slip direction s and
+  /// the turn stiffness of every node that has one, as {"directions": [[id, s_x, s_y, s_z], ...],
+  /// "turn_stiffness": [[id, k], ...]} in node id order.
+  void SaveState(Parameters& state) const;
+  /// Takes back what SaveState wrote; the nodes are looked up by id in `model_part` (an InputError names
+  /// a missing one).
+  void LoadState(const Parameters& state, const ModelPart& model_part);
   /// Forgets the reversals of the slip directions counted in the last step (pure slip).
   void InitializeSolutionStep(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A, const Vector& dx,
                               const Vector& b) override;

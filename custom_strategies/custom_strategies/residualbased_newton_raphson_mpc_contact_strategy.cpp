@@ -190,6 +190,22 @@ bool ResidualBasedNewtonRaphsonMPCContactStrategy::HoldCycle() {
   return false;
 }
 
+Parameters ResidualBasedNewtonRaphsonMPCContactStrategy::RestartState() const {
+  if (!constraints_) throw Error(Concat(Name(), ": RestartState before Initialize"));
+  Parameters state;
+  state.AddBool("tied", tied_);
+  state.AddValue("tying_operators", tied_ ? constraints_->TyingOperators() : Parameters("[]"));
+  mpc_criteria_->SaveState(state);
+  return state;
+}
+
+void ResidualBasedNewtonRaphsonMPCContactStrategy::LoadRestartState(const Parameters& state) {
+  if (!constraints_) throw Error(Concat(Name(), ": LoadRestartState before Initialize"));
+  mpc_criteria_->LoadState(state, *contact_);
+  tied_ = state["tied"].GetBool();
+  if (tied_) constraints_->RelateAllComponents(state["tying_operators"]);
+}
+
 std::size_t ResidualBasedNewtonRaphsonMPCContactStrategy::NumberOfActiveNodes() const {
   std::size_t count = 0;
   if (contact_)

@@ -44,7 +44,7 @@ struct MPCContactStrategySettings {
 /// step every slave node an overlap reaches is tied in every free displacement component
 /// (MPCContactConstraints::RelateAllComponents) and ACTIVE for good; the relations are kept for every
 /// later step (the faces stay glued where they were meshed: the tie is between material points; a
-/// resumed run measures them again at the state it resumes, as the relations are not in a checkpoint),
+/// resumed run takes them from its checkpoint, RestartState),
 /// there is no predictor solve, no active set and no release. CONTACT_FORCE is the slave node's reaction
 /// (all its components) and NORMAL_CONTACT_STRESS its normal part over NODAL_MAUX. Kratos 10.4 runs its
 /// reaction check on tied nodes too, and releases a tie that pulls: a defect (a tie holds in tension).
@@ -77,6 +77,14 @@ class ResidualBasedNewtonRaphsonMPCContactStrategy : public NewtonRaphsonStrateg
   int InnerLoopIterations() const noexcept { return passes_; }
   /// ACTIVE slave nodes now.
   std::size_t NumberOfActiveNodes() const;
+  /// What the next step takes from the steps before, beyond the nodal values and flags a restart checkpoint
+  /// holds: the criterion's slip directions and turn stiffnesses (frictional), and with mesh tying the
+  /// operators of the tie, measured at the first step ({"tied": ..., "tying_operators": ..., "directions":
+  /// ..., "turn_stiffness": ...}). After Initialize.
+  Parameters RestartState() const;
+  /// Takes back RestartState's state in a resumed run (after Initialize): the resumed run continues as
+  /// the uninterrupted one, its tie that of the first step, not one measured again where it resumes.
+  void LoadRestartState(const Parameters& state);
 
  protected:
   bool NewtonIteration(int iteration) override;
