@@ -35,7 +35,9 @@ struct MPCContactStrategySettings {
 /// Cycle guard (as the mortar contact strategy's): an edge node can be released by its pull and then
 /// re-activated by its penetration, iteration after iteration. When the set comes back to one of an
 /// earlier iteration (not the previous one), the union of the sets of the cycle is held active for the
-/// rest of the step (a held node may carry a small pull).
+/// rest of the step (a held node may carry a small pull); frictional, a node the last check stuck is held
+/// stuck (its tangential force may end a little outside the cone), any other node of the cycle that
+/// slipped is held slipping.
 ///
 /// Frictional (contact_type Frictional), a sticking node is tied in every component and a slipping one
 /// in the normal, with its Coulomb force in the system (see MPCContactCriteria for the switch).
@@ -113,10 +115,11 @@ class ResidualBasedNewtonRaphsonMPCContactStrategy : public NewtonRaphsonStrateg
   std::shared_ptr<MPCContactCriteria> mpc_criteria_;
   ModelPart* contact_ = nullptr;
   int passes_ = 0;
-  ContactStateCycle cycle_{{}};  ///< the sets of this step's iterations
-  bool held_ = false;            ///< a cycle's union is held
-  bool tying_ = false;           ///< mesh tying (root flag RIGID)
-  bool tied_ = false;            ///< the tying relations are built
+  ContactStateCycle cycle_{{}};    ///< the sets of this step's iterations
+  bool held_ = false;              ///< a cycle's union is held
+  std::vector<char> held_states_;  ///< the states held (the union, a node just stuck held stuck)
+  bool tying_ = false;             ///< mesh tying (root flag RIGID)
+  bool tied_ = false;              ///< the tying relations are built
 };
 
 }  // namespace mc
