@@ -297,7 +297,12 @@ void AddContactStrategiesToPython(py::module_& m) {
                   "Its keys of mpc_contact_settings with their defaults.")
       .def("InnerLoopIterations", &MPCNewton::InnerLoopIterations,
            "Active-set passes of the last step (1 without simplified_semi_smooth_newton).")
-      .def("NumberOfActiveNodes", &MPCNewton::NumberOfActiveNodes, "ACTIVE slave nodes now.");
+      .def("NumberOfActiveNodes", &MPCNewton::NumberOfActiveNodes, "ACTIVE slave nodes now.")
+      .def("RestartState", &MPCNewton::RestartState,
+           "What the next step takes from the steps before beyond the nodal state (slip directions, the tie's "
+           "operators), as Parameters, for a restart checkpoint.")
+      .def("LoadRestartState", &MPCNewton::LoadRestartState, py::arg("state"),
+           "Takes back RestartState's Parameters in a resumed run (after Initialize).");
 }
 
 }  // namespace mc::python

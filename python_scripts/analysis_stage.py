@@ -90,6 +90,7 @@ class StructuralMechanicsAnalysis:
         # A resumed run: everything above was built as in a fresh run; the state is the checkpoint's.
         checkpoint.restore_model(self.solver.main_model_part)
         checkpoint.restore_processes(self._all_processes())
+        checkpoint.restore_solver(self.solver)
         checkpoint.close()
         self.time, self.step = checkpoint.time, checkpoint.step
 

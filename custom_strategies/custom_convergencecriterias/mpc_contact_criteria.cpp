@@ -71,7 +71,63 @@ bool MPCContactCriteria::PostCriteria(ModelPart& model_part, const DofsArray&, c
     node->SetValue(NORMAL_CONTACT_STRESS, active ? pressure : 0.0);
     if (frictional) UpdateSlip(*node, was_active, FreeTangential(*node, reaction - force * normal), force);
   }
+  if (pure_slip_) StopPureSlipCycle(info);
   return changes_ == 0 && turn_ <= kTurnTolerance;
+}
+
+void MPCContactCriteria::InitializeSolutionStep(ModelPart&, const DofsArray&, const SparseMatrix&, const Vector&,
+                                                const Vector&) {
+  reversals_.clear();
+}
+
+void MPCContactCriteria::SaveState(Parameters& state) const {
+  std::vector<std::pair<IndexType, Array3>> directions;
+  for (const auto& [node, direction] : directions_) directions.emplace_back(node->Id(), direction);
+  std::sort(directions.begin(), directions.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<std::pair<IndexType, double>> stiffness;
+  for (const auto& [node, k] : turn_stiffness_) stiffness.emplace_back(node->Id(), k);
+  std::sort(stiffness.begin(), stiffness.end());
+  nlohmann::json& json = state.Json();
+  json["directions"] = nlohmann::json::array();
+  for (const auto& [id, s] : directions) json["directions"].push_back({id, s[0], s[1], s[2]});
+  json["turn_stiffness"] = nlohmann::json::array();
+  for (const auto& [id, k] : stiffness) json["turn_stiffness"].push_back({id, k});
+}
+
+void MPCContactCriteria::LoadState(const Parameters& state, const ModelPart& model_part) {
+  const auto node = [&](const Parameters& row) -> const Node* {
+    const IndexType id = static_cast<IndexType>(row[0].GetInt());
+    if (!model_part.HasNode(id))
+      throw InputError(Concat(row.Where(), ": node ", id, " of the restart state is not in ", model_part.FullName()));
+    return &model_part.GetNode(id);
+  };
+  directions_.clear();
+  turn_stiffness_.clear();
+  const Parameters directions = state["directions"];
+  for (std::size_t i = 0; i < directions.size(); ++i) {
+    const Parameters row = directions[i];
+    directions_[node(row)] = Array3(row[1].GetDouble(), row[2].GetDouble(), row[3].GetDouble());
+  }
+  const Parameters stiffness = state["turn_stiffness"];
+  for (std::size_t i = 0; i < stiffness.size(); ++i) turn_stiffness_[node(stiffness[i])] = stiffness[i][1].GetDouble();
+}
+
+void MPCContactCriteria::StopPureSlipCycle(const ProcessInfo& info) const {
+  std::vector<IndexType> cycling;
+  for (const auto& [node, reversals] : reversals_)
+    if (reversals >= kReversals && node->Is(ACTIVE)) cycling.push_back(node->Id());
+  if (cycling.empty()) return;
+  std::sort(cycling.begin(), cycling.end());
+  std::string nodes;
+  for (std::size_t i = 0; i < cycling.size() && i < 10; ++i) nodes += Concat(i ? ", " : "", cycling[i]);
+  if (cycling.size() > 10) nodes += Concat(" and ", cycling.size() - 10, " more");
+  throw SolutionError(Concat(
+      Name(), ": contact_type \"FrictionalPureSlip\": the slip direction of slave node(s) ", nodes,
+      " reversed in each of the last ", kReversals, " iterations (step ", info.GetValue(STEP), ", time ",
+      info.GetValue(TIME), "). Pure slip makes every node in contact slip, but this interface must stick in part ",
+      "(the load is too small to slide it, e.g. against the body's own Poisson slip) and then pure slip has no ",
+      "solution; use contact_type \"Frictional\" (Coulomb: stick and slip) in mpc_contact_process and ",
+      "solver_settings.mpc_contact_settings"));
 }
 
 void MPCContactCriteria::UpdateSlip(Node& node, bool was_active, const Array3& tangential, double normal_force) {
@@ -101,6 +157,10 @@ void MPCContactCriteria::UpdateSlip(Node& node, bool was_active, const Array3& t
       // for a node that turned back and sticks: if the cycle guard holds it slipping, it slips that way.
       const Array3 direction = step_slip / slid;
       if (held_slip && slip) turn_ = std::max(turn_, (direction - held->second).norm());
+      if (pure_slip_ && held_slip) {
+        int& reversals = reversals_[&node];
+        reversals = direction.dot(held->second) < 0.0 ? reversals + 1 : 0;
+      }
       directions_[&node] = direction;
       if (slip) turn_stiffness_[&node] = held_slip ? mu * std::abs(normal_force) / slid : young_modulus_ * size;
     } else if (length > 0.0) {

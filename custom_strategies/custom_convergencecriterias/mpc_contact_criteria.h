@@ -4,6 +4,7 @@
 #include <memory>
 #include <unordered_map>
 
+#include "core/parameters/parameters.h"
 #include "core/solving/convergence_criteria.h"
 #include "custom_strategies/custom_strategies/mpc_contact_constraints.h"
 
@@ -39,7 +40,14 @@ namespace mc {
 /// becomes active (not moving) is tied in every component for one iteration, its trial: its tangential
 /// reaction gives s = -R_t / |R_t| (a normal-only tie would leave its tangential DoFs free, with no
 /// reaction to take a direction from); from then on it slips, s following its slip of the step, also
-/// when it reverses.
+/// when it reverses. Pure slip has no solution where the interface must stick in part: with the normal
+/// forces held, a pure-slip answer (every node's friction mu |f_n| against its nonzero slip) is an answer
+/// of the Coulomb (Tresca) problem, whose answer is unique; so where Coulomb sticks somewhere (a push
+/// smaller than what slides the body, e.g. against its own Poisson slip), s = +t gives a slip along -t
+/// and s = -t one along +t, and the iterations flip every node's s for ever (measured: the 2D block
+/// pushed by 1e-5, the whole interface alternating between slips of -4e-5 and +8e-5). A node whose s
+/// reverses (s_new . s_old < 0) in kReversals successive iterations stops the step with a
+/// SolutionError naming the nodes and contact_type "Frictional".
 ///
 /// Differences from Kratos, by design: Kratos tests both conditions on every node, but an active
 /// node's gap is the constraint's, zero up to round-off, whose sign would keep it (or not) at random;
@@ -65,11 +73,24 @@ class MPCContactCriteria : public ConvergenceCriteria {
   /// Frictional: mu |f_n| / |slip| of the slipping nodes whose direction is that of their slip of the
   /// step (see MPCContactConstraints::CoulombTerms); E sqrt(NODAL_MAUX) for one that starts slipping.
   const std::unordered_map<const Node*, double>& TurnStiffness() const noexcept { return turn_stiffness_; }
+  /// What a later step reads of the steps before (a restart checkpoint's part): the slip direction s and
+  /// the turn stiffness of every node that has one, as {"directions": [[id, s_x, s_y, s_z], ...],
+  /// "turn_stiffness": [[id, k], ...]} in node id order.
+  void SaveState(Parameters& state) const;
+  /// Takes back what SaveState wrote; the nodes are looked up by id in `model_part` (an InputError names
+  /// a missing one).
+  void LoadState(const Parameters& state, const ModelPart& model_part);
+  /// Forgets the reversals of the slip directions counted in the last step (pure slip).
+  void InitializeSolutionStep(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A, const Vector& dx,
+                              const Vector& b) override;
 
  private:
   /// Frictional: the stick / slip state of a slave node from its tangential reaction (see the class
   /// comment).
   void UpdateSlip(Node& node, bool was_active, const Array3& tangential, double normal_force);
+  /// Pure slip: throws the SolutionError of the class comment when an active node's s reversed in each of
+  /// the last kReversals iterations.
+  void StopPureSlipCycle(const ProcessInfo& info) const;
 
   std::shared_ptr<const MPCContactConstraints> constraints_;
   std::size_t changes_ = 0;
@@ -80,6 +101,9 @@ class MPCContactCriteria : public ConvergenceCriteria {
   /// Frictional: the largest change |s_new - s_old| of a slipping node's direction in the last PostCriteria.
   double turn_ = 0.0;
   static constexpr double kTurnTolerance = 1e-8;
+  /// Pure slip: successive iterations in which a node's s reversed, and how many make a cycle.
+  std::unordered_map<const Node*, int> reversals_;
+  static constexpr int kReversals = 3;
   /// A node touching down slips when its slip of the step exceeds this fraction of its size sqrt(NODAL_MAUX).
   static constexpr double kMovingSlip = 1e-6;
 };

@@ -228,6 +228,43 @@ void MPCContactConstraints::RelateAllComponents() {
     if (row.d > 0.0) TieEveryComponent(node, row, Array3::Zero(), relations_);
 }
 
+Parameters MPCContactConstraints::TyingOperators() const {
+  std::vector<const Node*> tied;
+  for (const auto& [node, relation] : relations_)
+    if (tied.empty() || tied.back() != node) tied.push_back(node);
+  std::sort(tied.begin(), tied.end(), [](const Node* a, const Node* b) { return a->Id() < b->Id(); });
+  tied.erase(std::unique(tied.begin(), tied.end()), tied.end());
+  Parameters operators("[]");
+  for (const Node* node : tied) {
+    const SlaveRow& row = rows_.at(const_cast<Node*>(node));
+    // In id order: the checkpoint does not depend on where the run put its nodes in memory.
+    std::vector<std::pair<IndexType, double>> masters;
+    for (const auto& [master, m] : row.m) masters.emplace_back(master->Id(), m);
+    std::sort(masters.begin(), masters.end());
+    nlohmann::json m = nlohmann::json::array();
+    for (const auto& [id, value] : masters) m.push_back({id, value});
+    operators.Json().push_back({node->Id(), row.d, m});
+  }
+  return operators;
+}
+
+void MPCContactConstraints::RelateAllComponents(const Parameters& operators) {
+  const ModelPart& root = contact_.GetRootModelPart();
+  const auto node = [&](const Parameters& id) {
+    if (!root.HasNode(static_cast<IndexType>(id.GetInt())))
+      throw InputError(Concat(id.Where(), ": node ", id.GetInt(), " of the restart state is not in ", root.Name()));
+    return &root.GetNode(static_cast<IndexType>(id.GetInt()));
+  };
+  rows_.clear();
+  for (std::size_t i = 0; i < operators.size(); ++i) {
+    const Parameters row = operators[i];
+    SlaveRow& restored = rows_[node(row[0])];
+    restored.d = row[1].GetDouble();
+    for (std::size_t l = 0; l < row[2].size(); ++l) restored.m[node(row[2][l][0])] = row[2][l][1].GetDouble();
+  }
+  RelateAllComponents();
+}
+
 void MPCContactConstraints::Apply(BuilderAndSolver& builder) {
   std::vector<const MasterSlaveConstraint*> active;
   for (const auto& [node, relation] : ActiveRelations()) active.push_back(relation.get());

@@ -7,6 +7,7 @@
 
 #include "core/model/master_slave_constraint.h"
 #include "core/model/model_part.h"
+#include "core/parameters/parameters.h"
 #include "core/solving/builder_and_solver.h"
 
 namespace mc {
@@ -54,6 +55,13 @@ class MPCContactConstraints {
   /// the first step): the faces are glued as they were meshed, any gap or offset between them kept (as
   /// Kratos 10.4 does). A fixed component is held by its support and gets no relation.
   void RelateAllComponents();
+  /// Mesh tying: the operators the relations of the last RelateAllComponents were built from, as
+  /// [[slave id, D_jj, [[master id, M_ji], ...]], ...] in node id order (a restart checkpoint's part: the
+  /// tie is between the material points of the configuration it was measured at).
+  Parameters TyingOperators() const;
+  /// Mesh tying, instead of Measure and RelateAllComponents: the relations of the operators TyingOperators
+  /// wrote (nodes looked up by id in the root model part).
+  void RelateAllComponents(const Parameters& operators);
   /// Hands the relations of the ACTIVE slave nodes (frictional: a sticking node's per-component ones) to
   /// `builder` (replacing the earlier ones), with the
   /// dependent ties resolved (see TiedRelations).

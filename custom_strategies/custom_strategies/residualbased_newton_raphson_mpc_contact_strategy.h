@@ -35,7 +35,9 @@ struct MPCContactStrategySettings {
 /// Cycle guard (as the mortar contact strategy's): an edge node can be released by its pull and then
 /// re-activated by its penetration, iteration after iteration. When the set comes back to one of an
 /// earlier iteration (not the previous one), the union of the sets of the cycle is held active for the
-/// rest of the step (a held node may carry a small pull).
+/// rest of the step (a held node may carry a small pull); frictional, a node the last check stuck is held
+/// stuck (its tangential force may end a little outside the cone), any other node of the cycle that
+/// slipped is held slipping.
 ///
 /// Frictional (contact_type Frictional), a sticking node is tied in every component and a slipping one
 /// in the normal, with its Coulomb force in the system (see MPCContactCriteria for the switch).
@@ -44,7 +46,7 @@ struct MPCContactStrategySettings {
 /// step every slave node an overlap reaches is tied in every free displacement component
 /// (MPCContactConstraints::RelateAllComponents) and ACTIVE for good; the relations are kept for every
 /// later step (the faces stay glued where they were meshed: the tie is between material points; a
-/// resumed run measures them again at the state it resumes, as the relations are not in a checkpoint),
+/// resumed run takes them from its checkpoint, RestartState),
 /// there is no predictor solve, no active set and no release. CONTACT_FORCE is the slave node's reaction
 /// (all its components) and NORMAL_CONTACT_STRESS its normal part over NODAL_MAUX. Kratos 10.4 runs its
 /// reaction check on tied nodes too, and releases a tie that pulls: a defect (a tie holds in tension).
@@ -77,6 +79,14 @@ class ResidualBasedNewtonRaphsonMPCContactStrategy : public NewtonRaphsonStrateg
   int InnerLoopIterations() const noexcept { return passes_; }
   /// ACTIVE slave nodes now.
   std::size_t NumberOfActiveNodes() const;
+  /// What the next step takes from the steps before, beyond the nodal values and flags a restart checkpoint
+  /// holds: the criterion's slip directions and turn stiffnesses (frictional), and with mesh tying the
+  /// operators of the tie, measured at the first step ({"tied": ..., "tying_operators": ..., "directions":
+  /// ..., "turn_stiffness": ...}). After Initialize.
+  Parameters RestartState() const;
+  /// Takes back RestartState's state in a resumed run (after Initialize): the resumed run continues as
+  /// the uninterrupted one, its tie that of the first step, not one measured again where it resumes.
+  void LoadRestartState(const Parameters& state);
 
  protected:
   bool NewtonIteration(int iteration) override;
@@ -105,10 +115,11 @@ class ResidualBasedNewtonRaphsonMPCContactStrategy : public NewtonRaphsonStrateg
   std::shared_ptr<MPCContactCriteria> mpc_criteria_;
   ModelPart* contact_ = nullptr;
   int passes_ = 0;
-  ContactStateCycle cycle_{{}};  ///< the sets of this step's iterations
-  bool held_ = false;            ///< a cycle's union is held
-  bool tying_ = false;           ///< mesh tying (root flag RIGID)
-  bool tied_ = false;            ///< the tying relations are built
+  ContactStateCycle cycle_{{}};    ///< the sets of this step's iterations
+  bool held_ = false;              ///< a cycle's union is held
+  std::vector<char> held_states_;  ///< the states held (the union, a node just stuck held stuck)
+  bool tying_ = false;             ///< mesh tying (root flag RIGID)
+  bool tied_ = false;              ///< the tying relations are built
 };
 
 }  // namespace mc

@@ -169,7 +169,9 @@ def evaluate_step(dim: int, radius: float, e_star: float, friction: float, force
     nodes: ``x`` (current coordinates, (n, 3)), ``active``, ``slip`` (flags), ``area`` (NODAL_AREA), ``normal``
     ((n, 3), unit nodal normals), ``traction`` ((n, 3), the multiplier times SCALE_FACTOR);
     ``symmetry``: the symmetry factor of the model, which scales the zones' areas.
-    Returns P, Q, Q / (mu P), Hertz' a and p0, the stick-zone size measured and in theory, and in
+    Returns P, Q, Q / (mu P), Hertz' a and p0, the stick-zone size measured and in theory, how far
+    the slipping nodes' tractions are from the cone (slip_rule_error) and the sticking ones' outside
+    it (stick_excess), both over p0, and in
     2D the errors of the nodal tangential tractions against the averaged closed form and the
     resultant of the nodal tractions (x, y; the normal part has an x component too, as the
     contact centre leaves the lowest point of the cylinder)."""
@@ -194,7 +196,10 @@ def evaluate_step(dim: int, radius: float, e_star: float, friction: float, force
            "a_from_areas": zone_size(dim, nodes["area"][active], symmetry),
            "active_nodes": int(active.sum()), "stick_nodes": int(stick.sum()),
            "slip_rule_error": float(np.max(np.abs(np.linalg.norm(tangential[active & slip], axis=1)
-                                                  - friction * pressure[active & slip]), initial=0.0) / p0)}
+                                                  - friction * pressure[active & slip]), initial=0.0) / p0),
+           # how far a sticking node's traction lies outside the cone (0 inside), over p0
+           "stick_excess": float(np.max(np.linalg.norm(tangential[stick], axis=1) - friction * pressure[stick],
+                                        initial=0.0) / p0)}
     if dim == 2:
         x = lateral[:, 0] - centre[0]
         order = np.argsort(x)

@@ -14,6 +14,8 @@ fresh run does, and then overwrites the state with the checkpoint's:
 ``/processes``       one JSON string per process of the run, in creation order: its class,
                      its place in ProjectParameters.json and the state it returned from
                      ``RestartState()`` (output collections, sampling counters, ...)
+``/solver``          JSON of what the solver's ``RestartState()`` returned (the MPC strategy's slip
+                     directions and mesh tie; null for the others)
 root attributes      ``format``, ``version``, ``model_part_name``, ``buffer_size``, ``time``, ``step``,
                      ``mesh``: JSON of the import settings, the mesh file and its SHA-256
 
@@ -63,9 +65,9 @@ def _dof_variables(part) -> list[str]:
     return names
 
 
-def write_checkpoint(path: str, part, mesh: dict, processes) -> None:
-    """Writes the state of the root model part ``part`` and of ``processes`` to ``path``
-    atomically (temporary file in the same folder, then renamed)."""
+def write_checkpoint(path: str, part, mesh: dict, processes, solver=None) -> None:
+    """Writes the state of the root model part ``part``, of ``processes`` and of ``solver`` (what its
+    ``RestartState()`` returns) to ``path`` atomically (temporary file in the same folder, then renamed)."""
     import h5py
 
     folder = os.path.dirname(os.path.abspath(path))
@@ -74,7 +76,7 @@ def write_checkpoint(path: str, part, mesh: dict, processes) -> None:
     os.close(handle)
     try:
         with h5py.File(temporary, "w") as f:
-            _write(f, part, mesh, processes)
+            _write(f, part, mesh, processes, solver)
         publish_file(temporary, path)
     except BaseException:
         if os.path.exists(temporary):
@@ -82,7 +84,7 @@ def write_checkpoint(path: str, part, mesh: dict, processes) -> None:
         raise
 
 
-def _write(f, part, mesh: dict, processes) -> None:
+def _write(f, part, mesh: dict, processes, solver) -> None:
     info = part.ProcessInfo
     f.attrs.update(format=FORMAT, version=VERSION, model_part_name=part.Name, buffer_size=part.GetBufferSize(),
                    time=float(info.GetValue(_core.TIME)), step=int(info.GetValue(_core.STEP)),
@@ -125,6 +127,7 @@ def _write(f, part, mesh: dict, processes) -> None:
         # A dataset, not an attribute: a JSON output's series outgrows HDF5's 64 kB attribute limit.
         states[str(index)] = json.dumps({"class": type(process).__name__, "where": getattr(process, "item_where", ""),
                                          "state": process.RestartState()})
+    f["solver"] = json.dumps(solver.RestartState() if solver is not None else None)
 
 
 class Checkpoint:
@@ -246,6 +249,12 @@ class Checkpoint:
         for process, record in zip(processes, records):
             if record["state"] is not None:
                 process.LoadRestartState(record["state"])
+
+    def restore_solver(self, solver) -> None:
+        """Hands the solver the state it saved (checkpoints written before the solver had one hold none)."""
+        state = json.loads(self.file["solver"][()]) if "solver" in self.file else None
+        if state is not None:
+            solver.LoadRestartState(state)
 
     def _known(self, name: str, kind: str) -> str:
         known = _core.VariableNames() if kind == "variable" else _core.FlagNames()

@@ -120,7 +120,7 @@ class SaveRestartProcess(OutputProcess):
             while self.next_output <= label:
                 self.next_output += self.frequency
         path = os.path.join(self.folder, restart_file_name(self.stem, label))
-        write_checkpoint(path, self._part(), self.mesh, self.processes)
+        write_checkpoint(path, self._part(), self.mesh, self.processes, self.solver)
         # The linear solver keeps factorizations across steps, which a run resumed from this
         # checkpoint does not have: both start the next step without them.
         if self.solver is not None:

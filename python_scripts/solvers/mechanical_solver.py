@@ -455,6 +455,14 @@ class MechanicalSolver:
     def FinalizeSolutionStep(self) -> None:
         self.strategy.FinalizeSolutionStep()
 
+    def RestartState(self) -> dict | None:
+        """What the strategy carries from step to step beyond the model part's state, for a restart
+        checkpoint (JSON-compatible; None: nothing)."""
+        return None
+
+    def LoadRestartState(self, state: dict) -> None:
+        """Takes back what ``RestartState()`` returned, in a resumed run after ``Initialize``."""
+
     def ResetLinearSolver(self) -> None:
         """The next linear solve starts without the factorizations kept from earlier steps, as a
         run resumed here does (restart checkpoints call it)."""

@@ -2,6 +2,8 @@
 structural solver with the MPC contact strategy, whose contact constraints replace the multipliers."""
 from __future__ import annotations
 
+import json
+
 from .. import _core
 from ..contact_processes.mpc_contact_process import MESH_TYING, mpc_formulation
 from ..contact_strategies.strategy_factory import create_builder_and_solver
@@ -55,6 +57,13 @@ class MPCContactMechanicalSolver(MechanicalSolver):
             self.main_model_part.AddNodalSolutionStepVariable(_core.GetVariable(name))
         # mpc_contact_process checks that it runs under this solver.
         self.main_model_part.ProcessInfo.SetValue(_core.MORTAR_TYPE, self.formulation.mortar_type)
+
+    def RestartState(self) -> dict:
+        """The slip directions (frictional) and the tie's operators (mesh tying) of the MPC strategy."""
+        return json.loads(self.strategy.RestartState().WriteJsonString())
+
+    def LoadRestartState(self, state: dict) -> None:
+        self.strategy.LoadRestartState(_core.Parameters(json.dumps(state), "restart checkpoint (solver state)"))
 
     def _create_strategy(self):
         s = self.settings
