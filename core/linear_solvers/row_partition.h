@@ -16,6 +16,11 @@ class RowPartition {
   /// The partition of `owner_of_row.size()` rows where row i belongs to rank owner_of_row[i];
   /// the owners must not decrease (each rank's rows one block, in rank order). This rank is `rank`.
   static RowPartition FromOwners(const std::vector<int>& owner_of_row, int size, int rank);
+  /// Rank r owning the `rows_per_rank[r]` rows after those of the ranks before it, for a matrix
+  /// whose columns are this rank's DoFs (a model cut to a piece per rank): column c is row
+  /// `column_rows[c]` of the whole system, the first LocalRows() of them this rank's own rows in order.
+  static RowPartition FromCounts(const std::vector<std::int64_t>& rows_per_rank, int rank,
+                                 std::vector<std::int64_t> column_rows);
 
   int Rank() const noexcept { return rank_; }
   int Size() const noexcept { return static_cast<int>(starts_.size()) - 1; }
@@ -29,11 +34,15 @@ class RowPartition {
   /// The rank that owns `row` (in [0, Rows())).
   int Owner(std::int64_t row) const;
   bool Owns(std::int64_t row) const { return Owner(row) == rank_; }
+  /// Empty: the matrix has a column per row of the whole system. Else the matrix's column c is
+  /// the system's row ColumnRows()[c] (FromCounts), and so is entry c of the vectors passed with it.
+  const std::vector<std::int64_t>& ColumnRows() const noexcept { return column_rows_; }
   bool operator==(const RowPartition& other) const = default;
 
  private:
   std::vector<std::int64_t> starts_;  ///< Size() + 1 entries, 0 first, Rows() last
   int rank_ = 0;
+  std::vector<std::int64_t> column_rows_;
 };
 
 }  // namespace mc

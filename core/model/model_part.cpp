@@ -20,6 +20,7 @@ struct ModelPart::RootData {
   std::vector<std::unique_ptr<Element>> elements;
   std::vector<std::unique_ptr<Condition>> conditions;
   std::map<IndexType, std::unique_ptr<Properties>> properties;
+  std::shared_ptr<const NodePartition> node_partition;
 };
 
 ModelPart::ModelPart(std::string name, int buffer_size, Model* model)
@@ -62,6 +63,12 @@ void ModelPart::SetBufferSize(int buffer_size) {
   root.root_->buffer_size = std::max(1, buffer_size);
   for (auto& node : root.root_->nodes) node->SetBufferSize(root.root_->buffer_size);
 }
+
+void ModelPart::SetNodePartition(std::shared_ptr<const NodePartition> partition) {
+  GetRootModelPart().root_->node_partition = std::move(partition);
+}
+
+const NodePartition* ModelPart::GetNodePartition() const { return GetRootModelPart().root_->node_partition.get(); }
 
 ProcessInfo& ModelPart::GetProcessInfo() { return GetRootModelPart().root_->process_info; }
 const ProcessInfo& ModelPart::GetProcessInfo() const { return GetRootModelPart().root_->process_info; }

@@ -19,6 +19,7 @@
 namespace mc {
 
 class Model;
+class NodePartition;
 
 /// A named set of nodes, elements, conditions and properties, with nested sub-model-parts.
 /// The root model part owns every entity; a sub-model-part refers to a subset, and adding an
@@ -51,6 +52,11 @@ class ModelPart {
   const ProcessInfo& GetProcessInfo() const;
   /// Advances TIME (and STEP) and shifts the history of every node.
   void CloneTimeStep(double time);
+  /// The owners of the nodes when the model was cut to this rank's piece of a distributed run
+  /// (ModelPartPartitioner), made on the whole model before the cut: the builder numbers and
+  /// assembles the piece with it. Null when every rank holds the whole model.
+  void SetNodePartition(std::shared_ptr<const NodePartition> partition);
+  const NodePartition* GetNodePartition() const;
 
   // Nodes -------------------------------------------------------------------------------------
   /// Creates a node in the root and adds it here and to every ancestor. Ids must be unique in

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <map>
 #include <type_traits>
 
@@ -78,19 +79,29 @@ void BuilderAndSolver::SetUpDofSet(ModelPart& model_part, const Scheme& scheme) 
   }
   std::sort(dofs_.begin(), dofs_.end(), DofLess);
   dofs_.erase(std::unique(dofs_.begin(), dofs_.end()), dofs_.end());
+  piece_owners_ = communicator_ ? model_part.GetNodePartition() : nullptr;
+  numbering_.reset();
   if (communicator_) {
-    if (!node_partition_.IsFor(model_part)) node_partition_ = NodePartition(model_part, *communicator_);
-    // Grouped by owner, each group in the order of dofs_ (a counting sort: one look-up a DoF).
+    if (!piece_owners_ && !node_partition_.IsFor(model_part))
+      node_partition_ = NodePartition(model_part, *communicator_);
+    // Grouped by owner, each group in the order of dofs_ (a counting sort: one look-up a DoF). A
+    // piece puts its own DoFs first: the group of this rank, then the other groups.
+    const int rank = communicator_->Rank();
+    const auto group = [&](int owner) {
+      return !piece_owners_ ? owner : owner == rank ? 0 : owner < rank ? owner + 1 : owner;
+    };
     std::vector<int> owner(dofs_.size());
     std::vector<std::size_t> start(static_cast<std::size_t>(communicator_->Size()) + 1, 0);
     for (std::size_t i = 0; i < dofs_.size(); ++i) {
-      owner[i] = node_partition_.Owner(*dofs_[i]->node);
+      owner[i] = group(Owners().Owner(*dofs_[i]->node));
       ++start[static_cast<std::size_t>(owner[i]) + 1];
     }
     for (std::size_t r = 1; r < start.size(); ++r) start[r] += start[r - 1];
     ordered_dofs_.resize(dofs_.size());
     for (std::size_t i = 0; i < dofs_.size(); ++i)
       ordered_dofs_[start[static_cast<std::size_t>(owner[i])]++] = dofs_[i];
+    if (piece_owners_)
+      owned_dofs_.assign(ordered_dofs_.begin(), ordered_dofs_.begin() + static_cast<std::ptrdiff_t>(start[0]));
   }
   numbered_ = false;
   pattern_valid_ = false;
@@ -123,7 +134,10 @@ void BuilderAndSolver::SetUpSystem() {
                                 " (chained constraints are not supported)"));
     }
   }
-  NumberDofs();
+  if (piece_owners_)
+    NumberPiece();
+  else
+    NumberDofs();
   const std::size_t n = dofs_.size();
   dofs_by_equation_.assign(n, nullptr);
   fixed_at_numbering_.assign(n, 0);
@@ -132,7 +146,10 @@ void BuilderAndSolver::SetUpSystem() {
     dofs_by_equation_[static_cast<std::size_t>(d->equation_id)] = d;
     fixed_at_numbering_[static_cast<std::size_t>(d->equation_id)] = d->fixed;
   }
-  if (communicator_) {
+  if (numbering_) {
+    owned_.assign(n, 0);
+    std::fill(owned_.begin(), owned_.begin() + static_cast<std::ptrdiff_t>(owned_dofs_.size()), 1);
+  } else if (communicator_) {
     std::vector<int> owner(n);
     for (std::size_t i = 0; i < n; ++i) owner[i] = node_partition_.Owner(*dofs_by_equation_[i]->node);
     owned_.assign(n, 0);
@@ -153,6 +170,44 @@ void BuilderAndSolver::SetUpSystem() {
   if (echo_level_ >= 2)
     Logger::Detail(
         Concat(Name(), " builder: ", n, " DoFs, ", n_system_, " unknowns, ", slave_of_.size(), " constrained DoFs"));
+}
+
+void BuilderAndSolver::NumberPiece() {
+  if (Name() != "block")
+    throw NotImplementedError(Concat("the ", Name(), " builder on a model cut across ", communicator_->Size(),
+                                     " processes: use the block builder (\"block_builder\": true)"));
+  const NodePartition& owners = *piece_owners_;
+  numbering_ = std::make_unique<DistributedDofNumbering>(
+      dofs_, [&owners](const Node& node) { return owners.Owner(node); }, *communicator_);
+  const std::size_t owned = owned_dofs_.size();
+  std::vector<std::int64_t> rows(ordered_dofs_.size());
+  for (std::size_t i = 0; i < ordered_dofs_.size(); ++i) {
+    rows[i] = ordered_dofs_[i]->equation_id;
+    ordered_dofs_[i]->equation_id = static_cast<std::int64_t>(i);
+  }
+  // Every rank's count, exact in doubles.
+  std::vector<double> counts(static_cast<std::size_t>(communicator_->Size()), 0.0);
+  counts[static_cast<std::size_t>(communicator_->Rank())] = static_cast<double>(owned);
+  communicator_->SumToAll(counts.data(), counts.size());
+  std::vector<std::int64_t> rows_per_rank(counts.begin(), counts.end());
+  partition_ = RowPartition::FromCounts(rows_per_rank, communicator_->Rank(), std::move(rows));
+  n_assembled_ = dofs_.size();
+  n_system_ = dofs_.size();
+}
+
+void BuilderAndSolver::UpdateGhosts(Vector& v) const {
+  // DistributedDofNumbering sees the DoFs in the order of dofs_.
+  std::vector<double> values(dofs_.size());
+  for (std::size_t i = 0; i < dofs_.size(); ++i) values[i] = v[dofs_[i]->equation_id];
+  numbering_->UpdateGhosts(values);
+  for (std::size_t i = 0; i < dofs_.size(); ++i) v[dofs_[i]->equation_id] = values[i];
+}
+
+double BuilderAndSolver::Norm(const Vector& v) const {
+  if (!numbering_) return v.norm();
+  std::vector<double> sum{v.head(static_cast<Eigen::Index>(owned_dofs_.size())).squaredNorm()};
+  communicator_->SumToAll(sum.data(), 1);
+  return std::sqrt(sum[0]);
 }
 
 // Constraints -----------------------------------------------------------------------------------
@@ -449,7 +504,8 @@ bool BuilderAndSolver::TouchesOwnRows(const Entity& entity, const ProcessInfo& i
 }
 
 void BuilderAndSolver::SumResidualOverRanks() {
-  if (communicator_) communicator_->SumToAll(rhs_raw_.data(), static_cast<std::size_t>(rhs_raw_.size()));
+  // A piece's rows are complete on their owners.
+  if (communicator_ && !numbering_) communicator_->SumToAll(rhs_raw_.data(), static_cast<std::size_t>(rhs_raw_.size()));
 }
 
 void BuilderAndSolver::FinishResidual() {
@@ -540,7 +596,24 @@ void BuilderAndSolver::CheckEmptyColumns() const {
   std::vector<const Dof*> empty;
   const int* outer = A_.outerIndexPtr();
   const double* values = A_.valuePtr();
-  if (communicator_) {
+  if (numbering_) {
+    // The piece's columns: a ghost's column may be filled here only; its owner names it.
+    std::vector<double> filled(dofs_.size(), 0.0);
+    for (Eigen::Index j = 0; j < A_.outerSize(); ++j)
+      for (int p = outer[j]; p < outer[j + 1] && filled[static_cast<std::size_t>(j)] == 0.0; ++p)
+        if (values[p] != 0.0) filled[static_cast<std::size_t>(j)] = 1.0;
+    std::vector<double> by_dof(dofs_.size());
+    for (std::size_t i = 0; i < dofs_.size(); ++i) by_dof[i] = filled[static_cast<std::size_t>(dofs_[i]->equation_id)];
+    numbering_->AddGhostsToOwners(by_dof);
+    for (std::size_t i = 0; i < dofs_.size(); ++i)
+      if (by_dof[i] == 0.0 && owned_[static_cast<std::size_t>(dofs_[i]->equation_id)]) empty.push_back(dofs_[i]);
+    // Every rank stops when one finds an empty column.
+    std::vector<double> count{static_cast<double>(empty.size())};
+    communicator_->SumToAll(count.data(), 1);
+    if (count[0] > 0.0 && empty.empty())
+      throw SolutionError(Concat("singular system: no stiffness for ", count[0],
+                                 " DoFs of nodes other ranks own (their owners name them)"));
+  } else if (communicator_) {
     // A column empty in this rank's share may be filled by another's: count the ranks filling it.
     std::vector<double> filled(static_cast<std::size_t>(A_.outerSize()), 0.0);
     for (Eigen::Index j = 0; j < A_.outerSize(); ++j)
@@ -621,7 +694,9 @@ void BuilderAndSolver::SolveSystem() {
       throw SolutionError(Concat("singular system; linear solver: ", e.what()));
     }
   }
-  if (!x_system_.allFinite())
+  // A piece's solver returns its owned rows only; the ghosts' come from their owners below.
+  const auto solved = static_cast<Eigen::Index>(piece_owners_ ? owned_dofs_.size() : n_system_);
+  if (!x_system_.head(solved).allFinite())
     throw SolutionError(
         Concat("linear solver ", linear_solver_->Name(), " returned non-finite values for ", n_system_, " unknowns"));
   const auto n_matrix = static_cast<Eigen::Index>(n_assembled_);
@@ -634,6 +709,7 @@ void BuilderAndSolver::SolveSystem() {
   dx_.tail(dx_.size() - n_matrix).setZero();
   for (const Dof* d : dofs_)
     if (d->fixed) dx_[d->equation_id] = 0.0;
+  if (numbering_) UpdateGhosts(dx_);
 }
 
 void BuilderAndSolver::BuildAndSolve(Scheme& scheme, ModelPart& model_part) {
@@ -658,6 +734,8 @@ void BuilderAndSolver::CalculateReactions(Scheme& scheme, ModelPart& model_part)
 }
 
 void BuilderAndSolver::WriteReactions() {
+  // A ghost's row is complete on its owner only.
+  if (numbering_) UpdateGhosts(rhs_effective_);
   for (const Dof* d : dofs_)
     if (d->fixed && d->HasReaction()) d->ReactionValue() = -rhs_effective_[d->equation_id];
 }
@@ -680,6 +758,9 @@ void BuilderAndSolver::Clear() {
   ordered_dofs_.clear();
   owned_.clear();
   node_partition_ = NodePartition();
+  piece_owners_ = nullptr;
+  numbering_.reset();
+  owned_dofs_.clear();
   element_matrix_.clear();
   element_matrix_.shrink_to_fit();
   element_matrix_valid_ = false;

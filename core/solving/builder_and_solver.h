@@ -11,6 +11,7 @@
 #include "core/linear_solvers/row_partition.h"
 #include "core/linear_solvers/sparse_types.h"
 #include "core/model/dof.h"
+#include "core/solving/distributed_dof_numbering.h"
 #include "core/solving/node_partition.h"
 
 namespace mc {
@@ -49,6 +50,18 @@ class MasterSlaveConstraint;
 /// residual rows are summed over the ranks, so Residual(), Increment() and the reactions are whole
 /// and identical on every rank, and the criteria, the contact search and the active set run as in
 /// a serial run. With one process nothing of this runs and the matrix is square.
+///
+/// A model cut to a piece per rank (the root model part holds the NodePartition it was cut with,
+/// ModelPart::GetNodePartition): the rank's DoF set is its piece's, owned DoFs first, then the
+/// ghosts (DoFs of nodes other ranks own), each group in the order of `dofs_`. Dof::equation_id
+/// is then the DoF's position in that order, and every vector here (Residual(), Increment(), ...)
+/// is indexed by it; the system's row of a DoF (DistributedDofNumbering: the replicated run's
+/// numbering) is Partition().ColumnRows()[equation_id]. The matrix keeps the owned rows, with a
+/// column per DoF of the piece. A row is complete on its owner (the piece holds every entity
+/// touching an owned node), so nothing is summed over the ranks; the solver returns the owned rows
+/// of the increment and the ghosts' come from their owners. Quantities over the DoFs (the
+/// criteria's norms) sum OwnedDofs() and then over the ranks (PieceCommunicator()). Only the
+/// block builder, and neither master-slave constraints nor residual combinations, run so.
 class BuilderAndSolver {
  public:
   /// Cumulative wall-clock seconds, for benchmarks.
@@ -80,6 +93,14 @@ class BuilderAndSolver {
   /// Equation ids, constraint bookkeeping; the pattern is rebuilt on the next build.
   void SetUpSystem();
   const std::vector<Dof*>& GetDofSet() const noexcept { return dofs_; }
+  /// The DoFs whose rows this rank completes: GetDofSet() unless the model is cut to a piece per
+  /// rank, then this rank's owned DoFs (a sum over them and over the ranks counts each DoF once).
+  const std::vector<Dof*>& OwnedDofs() const noexcept { return piece_owners_ ? owned_dofs_ : dofs_; }
+  /// The ranks to sum OwnedDofs()' quantities over: non-null only when the model is cut.
+  const AssemblyCommunicator* PieceCommunicator() const noexcept { return piece_owners_ ? communicator_ : nullptr; }
+  /// The 2-norm of a vector indexed by equation id, over every rank's owned rows when the model is
+  /// cut (the same value on every rank).
+  double Norm(const Vector& v) const;
   std::size_t NumberOfDofs() const noexcept { return dofs_.size(); }
   /// Number of unknowns of the linear system solved.
   std::size_t SystemSize() const noexcept { return n_system_; }
@@ -149,8 +170,9 @@ class BuilderAndSolver {
   const RowPartition& Partition() const noexcept { return partition_; }
   /// The owner of each node (distributed runs; updated by SetUpDofSet).
   const NodePartition& NodeOwners() const noexcept { return node_partition_; }
-  /// The system row of the matrix's first row: Partition().Begin() in a distributed run, else 0.
-  std::int64_t FirstRow() const noexcept { return communicator_ ? partition_.Begin() : 0; }
+  /// The equation id of the matrix's first row: Partition().Begin() in a distributed run of the
+  /// whole model, else 0 (the owned DoFs come first in a piece).
+  std::int64_t FirstRow() const noexcept { return communicator_ && !piece_owners_ ? partition_.Begin() : 0; }
   /// Frees what the linear solver keeps between solves (factorizations, analyses): the next
   /// solve starts as in a new run. Restart checkpoints call it, so that a resumed run repeats the
   /// uninterrupted one bit for bit although the solver reuses factorizations across steps.
@@ -213,14 +235,24 @@ class BuilderAndSolver {
   void CheckEmptyColumns() const;
   bool TouchesOwnRows(const Entity& entity, const ProcessInfo& info) const;
   void SumResidualOverRanks();
+  /// The owners of the nodes: the stored partition of a cut model, else node_partition_.
+  const NodePartition& Owners() const noexcept { return piece_owners_ ? *piece_owners_ : node_partition_; }
+  /// A cut model (piece_owners_): numbers the piece's DoFs by DistributedDofNumbering, sets each
+  /// equation_id to its local position and partition_ with the columns' system rows.
+  void NumberPiece();
+  /// A cut model: the ghost entries of `v` (indexed by equation id) from their owners.
+  void UpdateGhosts(Vector& v) const;
   [[noreturn]] void ThrowSingular(const std::vector<const Dof*>& dofs, const std::string& detail) const;
 
   std::shared_ptr<LinearSolver> linear_solver_;
   const AssemblyCommunicator* communicator_ = nullptr;  ///< owned by linear_solver_
   RowPartition partition_;
   NodePartition node_partition_;
-  std::vector<Dof*> ordered_dofs_;  ///< distributed: dofs_ grouped by owning rank
-  std::vector<char> owned_;         ///< distributed: by equation id, whether this rank owns the row
+  const NodePartition* piece_owners_ = nullptr;         ///< the cut model's partition
+  std::unique_ptr<DistributedDofNumbering> numbering_;  ///< a cut model, after SetUpSystem
+  std::vector<Dof*> owned_dofs_;                        ///< a cut model: ordered_dofs_' head, this rank's
+  std::vector<Dof*> ordered_dofs_;                      ///< distributed: dofs_ grouped by owning rank
+  std::vector<char> owned_;                             ///< distributed: by equation id, whether this rank owns the row
   std::vector<std::shared_ptr<const MasterSlaveConstraint>> added_constraints_;  ///< by AddConstraint
   std::vector<std::shared_ptr<const MasterSlaveConstraint>> constraints_;        ///< added + model part's
   std::unordered_map<const Dof*, const MasterSlaveConstraint*> slave_of_;

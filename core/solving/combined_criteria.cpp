@@ -29,6 +29,12 @@ void CombinedCriteria::Initialize(ModelPart& model_part) {
   ConvergenceCriteria::Initialize(model_part);
 }
 
+void CombinedCriteria::SetPieceCommunicator(const AssemblyCommunicator* communicator) {
+  first_->SetPieceCommunicator(communicator);
+  second_->SetPieceCommunicator(communicator);
+  ConvergenceCriteria::SetPieceCommunicator(communicator);
+}
+
 void CombinedCriteria::InitializeSolutionStep(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A,
                                               const Vector& dx, const Vector& b) {
   CallOnBoth(*first_, *second_, &ConvergenceCriteria::InitializeSolutionStep, model_part, dofs, A, dx, b);

@@ -15,6 +15,7 @@ class CombinedCriteria : public ConvergenceCriteria {
   CombinedCriteria(std::shared_ptr<ConvergenceCriteria> first, std::shared_ptr<ConvergenceCriteria> second);
 
   void Initialize(ModelPart& model_part) override;
+  void SetPieceCommunicator(const AssemblyCommunicator* communicator) override;
   void InitializeSolutionStep(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A, const Vector& dx,
                               const Vector& b) override;
   void InitializeNonLinearIteration(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A,

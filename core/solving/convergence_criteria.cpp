@@ -3,6 +3,8 @@
 
 #include <cstdio>
 
+#include "core/linear_solvers/assembly_communicator.h"
+
 namespace mc {
 
 std::string ConvergenceCriteria::FormatLine(int iteration, const std::vector<CriterionValue>& values, bool converged) {
@@ -15,6 +17,10 @@ std::string ConvergenceCriteria::FormatLine(int iteration, const std::vector<Cri
   }
   line += converged ? "  converged" : "  not converged";
   return line;
+}
+
+void ConvergenceCriteria::SumOverRanks(double* values, std::size_t count) const {
+  if (communicator_) communicator_->SumToAll(values, count);
 }
 
 }  // namespace mc

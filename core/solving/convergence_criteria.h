@@ -9,6 +9,7 @@
 
 namespace mc {
 
+class AssemblyCommunicator;
 class ModelPart;
 
 /// One measure of a criterion at the last check: e.g. {"|du|/|u|", 1.2e-7, 1e-4}.
@@ -24,6 +25,10 @@ struct CriterionValue {
 ///
 /// `b` is the residual assembled for the iteration (before the update) unless the criterion
 /// asks for the residual at the updated state with SetActualizeRHSFlag(true).
+///
+/// On a model cut to a piece per rank the strategy passes the rank's owned DoFs and the ranks
+/// (SetPieceCommunicator): a criterion sums over its DoFs, then SumOverRanks, so that every rank
+/// takes the same decision.
 class ConvergenceCriteria {
  public:
   using DofsArray = std::vector<Dof*>;
@@ -38,6 +43,8 @@ class ConvergenceCriteria {
   void SetActualizeRHSFlag(bool value) noexcept { actualize_rhs_ = value; }
 
   virtual void Initialize(ModelPart& model_part) { initialized_ = true; }
+  /// The ranks of a cut model (BuilderAndSolver::PieceCommunicator), null otherwise.
+  virtual void SetPieceCommunicator(const AssemblyCommunicator* communicator) { communicator_ = communicator; }
   bool IsInitialized() const noexcept { return initialized_; }
   virtual void InitializeSolutionStep(ModelPart& model_part, const DofsArray& dofs, const SparseMatrix& A,
                                       const Vector& dx, const Vector& b) {}
@@ -61,8 +68,11 @@ class ConvergenceCriteria {
   /// "  it 3  |du|/|u| = 1.2e-07 (tol 1e-04)  |du| = 3.4e-11 (tol 1e-09)  converged"
   static std::string FormatLine(int iteration, const std::vector<CriterionValue>& values, bool converged);
   int echo_level_ = 0;
+  /// values[i] summed over the ranks of a cut model (nothing otherwise).
+  void SumOverRanks(double* values, std::size_t count) const;
 
  private:
+  const AssemblyCommunicator* communicator_ = nullptr;
   bool actualize_rhs_ = false;
   bool initialized_ = false;
 };

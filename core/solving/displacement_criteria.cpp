@@ -22,7 +22,9 @@ bool DisplacementCriteria::PostCriteria(ModelPart& model_part, const DofsArray& 
     value += u * u;
     ++n;
   }
-  return Decide(model_part, std::sqrt(increment), std::sqrt(value), n);
+  double sums[] = {increment, value, static_cast<double>(n)};
+  SumOverRanks(sums, 3);
+  return Decide(model_part, std::sqrt(sums[0]), std::sqrt(sums[1]), static_cast<long>(sums[2]));
 }
 
 }  // namespace mc

@@ -87,15 +87,28 @@ DistributedDofNumbering::DistributedDofNumbering(const std::vector<Dof*>& dofs,
     }
 }
 
-void DistributedDofNumbering::UpdateGhosts(std::vector<double>& values) const {
+std::vector<std::vector<std::int64_t>> DistributedDofNumbering::Send(
+    const std::vector<double>& values, const std::vector<std::vector<std::size_t>>& positions) const {
   // Doubles travel as their bits: exact, and one exchange for both kinds of list.
-  std::vector<std::vector<std::int64_t>> outgoing(send_positions_.size());
-  for (std::size_t r = 0; r < send_positions_.size(); ++r)
-    for (const std::size_t i : send_positions_[r]) outgoing[r].push_back(std::bit_cast<std::int64_t>(values[i]));
-  const auto incoming = communicator_->Exchange(outgoing);
+  std::vector<std::vector<std::int64_t>> outgoing(positions.size());
+  for (std::size_t r = 0; r < positions.size(); ++r)
+    for (const std::size_t i : positions[r]) outgoing[r].push_back(std::bit_cast<std::int64_t>(values[i]));
+  return communicator_->Exchange(outgoing);
+}
+
+void DistributedDofNumbering::UpdateGhosts(std::vector<double>& values) const {
+  const auto incoming = Send(values, send_positions_);
   for (std::size_t r = 0; r < receive_positions_.size(); ++r)
     for (std::size_t k = 0; k < incoming[r].size(); ++k)
       values[receive_positions_[r][k]] = std::bit_cast<double>(incoming[r][k]);
+}
+
+void DistributedDofNumbering::AddGhostsToOwners(std::vector<double>& values) const {
+  // A rank's list comes back in the order of its requests, which is send_positions_' order.
+  const auto incoming = Send(values, receive_positions_);
+  for (std::size_t r = 0; r < send_positions_.size(); ++r)
+    for (std::size_t k = 0; k < incoming[r].size(); ++k)
+      values[send_positions_[r][k]] += std::bit_cast<double>(incoming[r][k]);
 }
 
 }  // namespace mc

@@ -34,8 +34,14 @@ class DistributedDofNumbering {
   /// Collective. `values[i]` belongs to dofs[i] of the constructor; the ghosts' entries are
   /// overwritten with their owners' (the solution increment's scatter to the ghosts).
   void UpdateGhosts(std::vector<double>& values) const;
+  /// Collective, the reverse of UpdateGhosts: each ghost's entry is added to its owner's entry (in
+  /// rank order), the ghosts' left as they were (a sum of what the ranks found for a DoF).
+  void AddGhostsToOwners(std::vector<double>& values) const;
 
  private:
+  /// Sends rank r the values at positions[r]; returns what each rank sent here.
+  std::vector<std::vector<std::int64_t>> Send(const std::vector<double>& values,
+                                              const std::vector<std::vector<std::size_t>>& positions) const;
   const AssemblyCommunicator* communicator_;
   std::int64_t begin_ = 0;
   std::int64_t end_ = 0;

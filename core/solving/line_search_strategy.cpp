@@ -37,6 +37,10 @@ double LineSearchStrategy::Phi(double s) {
 }
 
 double LineSearchStrategy::UpdateDatabase(int iteration) {
+  // Its dot products would need a sum over the ranks' owned rows.
+  if (builder_->PieceCommunicator())
+    throw NotImplementedError(
+        "line_search on a model cut across processes: run it without MORTARCONTACT_PARTITIONED_MODEL");
   direction_ = builder_->Increment();
   saved_residual_ = builder_->Residual();
   current_ = 0.0;

@@ -15,8 +15,8 @@ bool LinearStrategy::SolveSolutionStep() {
   UpdateAndMoveMesh(builder_->Increment());
   scheme_->FinalizeNonLinIteration(model_part_);
   if (echo_level_ >= 1)
-    Logger::Info(
-        Concat("  linear solve: |r| = ", builder_->Residual().norm(), "  |du| = ", builder_->Increment().norm()));
+    Logger::Info(Concat("  linear solve: |r| = ", builder_->Norm(builder_->Residual()),
+                        "  |du| = ", builder_->Norm(builder_->Increment())));
   return true;
 }
 

@@ -41,7 +41,8 @@ void NewtonRaphsonStrategy::InitializeSolutionStep() {
     split_level_ = 0;
     if (splitting_.Enabled()) SaveStepStart();
   }
-  criteria_->InitializeSolutionStep(model_part_, builder_->GetDofSet(), builder_->SystemMatrix(), builder_->Increment(),
+  criteria_->SetPieceCommunicator(builder_->PieceCommunicator());
+  criteria_->InitializeSolutionStep(model_part_, builder_->OwnedDofs(), builder_->SystemMatrix(), builder_->Increment(),
                                     builder_->Residual());
 }
 
@@ -191,7 +192,7 @@ std::string NewtonRaphsonStrategy::LargestResidualNodes(std::size_t count) const
 
 bool NewtonRaphsonStrategy::NewtonIteration(int iteration) {
   model_part_.GetProcessInfo().SetValue(NL_ITERATION_NUMBER, iteration);
-  const auto& dofs = builder_->GetDofSet();
+  const auto& dofs = builder_->OwnedDofs();
   scheme_->InitializeNonLinIteration(model_part_);
   criteria_->InitializeNonLinearIteration(model_part_, dofs, builder_->SystemMatrix(), builder_->Increment(),
                                           builder_->Residual());
@@ -201,9 +202,9 @@ bool NewtonRaphsonStrategy::NewtonIteration(int iteration) {
   IterationRecord record;
   record.iteration = iteration;
   record.time = model_part_.GetProcessInfo().GetValue(TIME);
-  record.residual_norm = builder_->Residual().norm();
+  record.residual_norm = builder_->Norm(builder_->Residual());
   record.step_length = UpdateDatabase(iteration);
-  record.increment_norm = builder_->Increment().norm();
+  record.increment_norm = builder_->Norm(builder_->Increment());
 
   scheme_->FinalizeNonLinIteration(model_part_);
   criteria_->FinalizeNonLinearIteration(model_part_, dofs, builder_->SystemMatrix(), builder_->Increment(),
@@ -231,7 +232,7 @@ double NewtonRaphsonStrategy::UpdateDatabase(int iteration) {
 }
 
 void NewtonRaphsonStrategy::FinalizeSolutionStep() {
-  criteria_->FinalizeSolutionStep(model_part_, builder_->GetDofSet(), builder_->SystemMatrix(), builder_->Increment(),
+  criteria_->FinalizeSolutionStep(model_part_, builder_->OwnedDofs(), builder_->SystemMatrix(), builder_->Increment(),
                                   builder_->Residual());
   ImplicitSolvingStrategy::FinalizeSolutionStep();
 }

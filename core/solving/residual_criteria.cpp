@@ -24,7 +24,10 @@ bool ResidualCriteria::PostCriteria(ModelPart& model_part, const DofsArray& dofs
     norm += r * r;
     ++n;
   }
-  norm = std::sqrt(norm);
+  double sums[] = {norm, static_cast<double>(n)};
+  SumOverRanks(sums, 2);
+  norm = std::sqrt(sums[0]);
+  n = static_cast<long>(sums[1]);
   if (!initial_set_) {
     initial_norm_ = norm;
     initial_set_ = true;

@@ -228,8 +228,11 @@ void BlockContactCriteria::InitializeSolutionStep(ModelPart& model_part, const D
                                                   const Vector& dx, const Vector& b) {
   initial_residual_known_.fill(false);
   std::array<bool, kDofFamilies> has{};
+  std::array<double, kDofFamilies> counts{};
   for (const Dof* dof : dofs)
-    if (!dof->fixed) has[static_cast<std::size_t>(FamilyOf(*dof->variable))] = true;
+    if (!dof->fixed) counts[static_cast<std::size_t>(FamilyOf(*dof->variable))] = 1.0;
+  SumOverRanks(counts.data(), counts.size());
+  for (std::size_t f = 0; f < kDofFamilies; ++f) has[f] = counts[f] > 0.0;
   for (std::size_t f = 0; f < kDofFamilies; ++f) {
     results_[f] = BlockResult{};
     // Displacements and multipliers always have their columns; rotations only when solved for;
@@ -247,7 +250,17 @@ bool BlockContactCriteria::PostCriteria(ModelPart& model_part, const DofsArray& 
   const MultiplierSplit split = !frictional  ? MultiplierSplit::kNone
                                 : pure_slip_ ? MultiplierSplit::kFrictionalPureSlip
                                              : MultiplierSplit::kFrictional;
-  const FamilySumsArray sums = SumByFamily(dofs, dx, b, split);
+  FamilySumsArray sums = SumByFamily(dofs, dx, b, split);
+  std::array<double, 4 * kDofFamilies> flat{};  // each rank's sums of a cut model, summed over the ranks
+  for (std::size_t f = 0; f < kDofFamilies; ++f) {
+    flat[4 * f] = sums[f].increment;
+    flat[4 * f + 1] = sums[f].value;
+    flat[4 * f + 2] = sums[f].residual;
+    flat[4 * f + 3] = static_cast<double>(sums[f].count);
+  }
+  SumOverRanks(flat.data(), flat.size());
+  for (std::size_t f = 0; f < kDofFamilies; ++f)
+    sums[f] = {flat[4 * f], flat[4 * f + 1], flat[4 * f + 2], static_cast<long>(flat[4 * f + 3])};
   // Tangential absolute values are per multiplier DoF, as the normal one (Kratos' choice), so the
   // two compare in the ratio test.
   const auto multiplier_count = static_cast<double>(sums[static_cast<std::size_t>(DofFamily::kMultiplier)].count);

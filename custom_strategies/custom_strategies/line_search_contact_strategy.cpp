@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/utilities/error.h"
 #include "custom_strategies/custom_convergencecriterias/contact_criteria_utilities.h"
 
 namespace mc {
@@ -54,6 +55,10 @@ void LineSearchContactStrategy::MoveTo(double s_u, double s_lm) {
 }
 
 double LineSearchContactStrategy::UpdateDatabase(int iteration) {
+  // Its norms would need a sum over the ranks' owned rows.
+  if (builder_->PieceCommunicator())
+    throw NotImplementedError(
+        "line_search on a model cut across processes: run it without MORTARCONTACT_PARTITIONED_MODEL");
   const Vector& dx = builder_->Increment();
   direction_u_ = dx;
   direction_lm_.setZero(dx.size());

@@ -234,7 +234,7 @@ bool ResidualBasedNewtonRaphsonContactStrategy::RecheckActiveSet() {
   const std::vector<char> before = ContactStates();
   const int echo = criteria_->GetEchoLevel();
   criteria_->SetEchoLevel(0);
-  const bool converged = criteria_->PostCriteria(model_part_, builder_->GetDofSet(), builder_->SystemMatrix(),
+  const bool converged = criteria_->PostCriteria(model_part_, builder_->OwnedDofs(), builder_->SystemMatrix(),
                                                  builder_->Increment(), builder_->Residual());
   criteria_->SetEchoLevel(echo);
   last_changes_ = CountFlips(before);

@@ -132,8 +132,10 @@ struct PetscSolver::Handles {
   Mat matrix = nullptr;
   KSP ksp = nullptr;
   Eigen::SparseMatrix<double, Eigen::RowMajor, PetscInt> rows;  // A by rows, as AIJ stores it
-  // Distributed: this rank's part of the solution, the whole solution, the gather between them.
+  // Distributed: this rank's part of the solution, the whole solution, the gather between them
+  // (a model cut to pieces: no whole solution, the builder takes the ghosts from their owners).
   Vec solution = nullptr;
+  std::vector<PetscInt> global_columns;  // a cut model: `rows`' column indices as the system's rows
   Vec whole = nullptr;
   VecScatter to_all = nullptr;
   ~Handles() {
@@ -302,9 +304,17 @@ void PetscSolver::Solve(const SparseMatrix& A, Vector& x, const Vector& b) {
   if (communicator_) {
     const auto begin = static_cast<PetscInt>(partition_.Begin());
     const auto local = static_cast<PetscInt>(partition_.End()) - begin;
-    Check(VecCreateMPIWithArray(communicator_->Comm(), 1, local, n, b.data() + begin, &rhs), "VecCreateMPIWithArray");
+    const bool piece = !partition_.ColumnRows().empty();  // b and x: this rank's DoFs, owned rows first
+    Check(VecCreateMPIWithArray(communicator_->Comm(), 1, local, static_cast<PetscInt>(partition_.Rows()),
+                                b.data() + (piece ? 0 : begin), &rhs),
+          "VecCreateMPIWithArray");
     solved = KSPSolve(handles_->ksp, rhs, handles_->solution);
-    if (solved == 0) {
+    if (solved == 0 && piece) {
+      const PetscScalar* owned = nullptr;
+      Check(VecGetArrayRead(handles_->solution, &owned), "VecGetArrayRead");
+      std::copy(owned, owned + local, x.data());
+      Check(VecRestoreArrayRead(handles_->solution, &owned), "VecRestoreArrayRead");
+    } else if (solved == 0) {
       Check(VecScatterBegin(handles_->to_all, handles_->solution, handles_->whole, INSERT_VALUES, SCATTER_FORWARD),
             "VecScatterBegin");
       Check(VecScatterEnd(handles_->to_all, handles_->solution, handles_->whole, INSERT_VALUES, SCATTER_FORWARD),
@@ -358,8 +368,10 @@ void PetscSolver::Solve(const SparseMatrix& A, Vector& x, const Vector& b) {
 }
 
 void PetscSolver::CreateDistributedMatrix(Handles& handles) const {
-  const auto n = static_cast<PetscInt>(handles.rows.cols());
+  const std::vector<std::int64_t>& columns = partition_.ColumnRows();
+  const auto n = static_cast<PetscInt>(columns.empty() ? handles.rows.cols() : partition_.Rows());
   if (partition_.Rows() != n || partition_.LocalRows() != handles.rows.rows() ||
+      (!columns.empty() && columns.size() != static_cast<std::size_t>(handles.rows.cols())) ||
       partition_.Size() != communicator_->Size())
     throw SolutionError(Concat("PETSc: a row partition of ", partition_.Rows(), " rows (", partition_.LocalRows(),
                                " here) on ", partition_.Size(), " ranks for a system of ", n, " rows (",
@@ -371,6 +383,12 @@ void PetscSolver::CreateDistributedMatrix(Handles& handles) const {
   std::vector<PetscInt> diagonal(static_cast<std::size_t>(end - begin), 0), off(diagonal.size(), 0);
   const PetscInt* outer = handles.rows.outerIndexPtr();
   const PetscInt* inner = handles.rows.innerIndexPtr();
+  if (!columns.empty()) {
+    handles.global_columns.resize(static_cast<std::size_t>(handles.rows.nonZeros()));
+    for (std::size_t p = 0; p < handles.global_columns.size(); ++p)
+      handles.global_columns[p] = static_cast<PetscInt>(columns[static_cast<std::size_t>(inner[p])]);
+    inner = handles.global_columns.data();
+  }
   for (PetscInt i = 0; i < end - begin; ++i)
     for (PetscInt p = outer[i]; p < outer[i + 1]; ++p)
       ++(inner[p] >= begin && inner[p] < end ? diagonal : off)[static_cast<std::size_t>(i)];
@@ -379,14 +397,15 @@ void PetscSolver::CreateDistributedMatrix(Handles& handles) const {
         "MatCreateAIJ");
   Check(MatSetOption(handles.matrix, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE), "MatSetOption");
   Check(VecCreateMPI(comm, end - begin, n, &handles.solution), "VecCreateMPI");
-  Check(VecScatterCreateToAll(handles.solution, &handles.to_all, &handles.whole), "VecScatterCreateToAll");
+  if (columns.empty())
+    Check(VecScatterCreateToAll(handles.solution, &handles.to_all, &handles.whole), "VecScatterCreateToAll");
 }
 
 void PetscSolver::FillDistributedMatrix() {
   const auto& rows = handles_->rows;
   const auto begin = static_cast<PetscInt>(partition_.Begin());
   const PetscInt* outer = rows.outerIndexPtr();
-  const PetscInt* inner = rows.innerIndexPtr();
+  const PetscInt* inner = handles_->global_columns.empty() ? rows.innerIndexPtr() : handles_->global_columns.data();
   const double* values = rows.valuePtr();
   Mat matrix = handles_->matrix;
   // Every entry of the pattern is set: nothing is left of the previous values.
@@ -440,10 +459,15 @@ void PetscSolver::SetFieldSplits(KSP ksp) {
   const MPI_Comm comm = communicator_ ? communicator_->Comm() : PETSC_COMM_SELF;
   auto set = [&](const char* name, const std::vector<int>& rows, int block) {
     // Distributed: each rank names the rows it owns (whole nodes: the partition cuts between them).
-    std::vector<PetscInt> indices;
+    // A cut model: rows are the rank's DoFs, its own first (RowPartition::ColumnRows).
+    const std::vector<std::int64_t>& columns = partition_.ColumnRows();
+    std::vector<PetscInt> indices, local;
     indices.reserve(rows.size());
     for (const int row : rows)
-      if (!communicator_ || partition_.Owns(row)) indices.push_back(row);
+      if (!communicator_ || (columns.empty() ? partition_.Owns(row) : row < partition_.LocalRows()))
+        local.push_back(row);
+    for (const PetscInt row : local)
+      indices.push_back(columns.empty() ? row : static_cast<PetscInt>(columns[static_cast<std::size_t>(row)]));
     IS is = nullptr;
     Check(ISCreateGeneral(comm, static_cast<PetscInt>(indices.size()), indices.data(), PETSC_COPY_VALUES, &is),
           "ISCreateGeneral");
@@ -452,7 +476,7 @@ void PetscSolver::SetFieldSplits(KSP ksp) {
       // The field split hands a near-nullspace composed on a split's IS to its block's matrix,
       // where smoothed-aggregation multigrid (GAMG) takes its coarse spaces from (BoomerAMG
       // ignores it unless told to interpolate vectors).
-      const std::vector<double> coordinates = BlockCoordinates(dofs_, indices, block);
+      const std::vector<double> coordinates = BlockCoordinates(dofs_, local, block);
       if (!coordinates.empty()) {
         MatNullSpace modes = RigidBodyModes(comm, coordinates, block);
         PetscObjectCompose(reinterpret_cast<PetscObject>(is), "nearnullspace", reinterpret_cast<PetscObject>(modes));

@@ -7,12 +7,16 @@
 // partition keeps a node's DoFs on one rank. No MPI: ranks are threads (thread_communicator.h).
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <functional>
+#include <map>
 #include <thread>
 
 #include "core/linear_solvers/row_partition.h"
 #include "core/linear_solvers/umfpack_solver.h"
 #include "core/model/master_slave_constraint.h"
 #include "core/model/model_part.h"
+#include "core/model/model_part_partitioner.h"
 #include "core/solving/block_builder_and_solver.h"
 #include "core/solving/displacement_criteria.h"
 #include "core/solving/elimination_builder_and_solver.h"
@@ -176,6 +180,163 @@ TEST(DistributedBuilder, MasterSlaveConstraintsAreNotImplementedYet) {
   const std::string message = test::ErrorMessageOf<NotImplementedError>([&] { SolveTruss(truss, builder); });
   EXPECT_NE(message.find("master-slave constraints"), std::string::npos) << message;
   EXPECT_NE(message.find("one process"), std::string::npos) << message;
+}
+
+/// The contract of a cut model (RowPartition::ColumnRows): the matrix's columns and the vectors are
+/// the rank's DoFs, the owned rows first; x comes back with the owned rows only (its ghosts NaN, so
+/// that a ghost the builder does not take from its owner shows).
+class PieceSolver : public LinearSolver {
+ public:
+  PieceSolver(ThreadRanks& ranks, int rank) : communicator_(ranks, rank) {}
+  std::string Name() const override { return "piece"; }
+  bool IsDirect() const override { return true; }
+  void Initialize(const SparseMatrix&) override {}
+  void Solve(const SparseMatrix& A, Vector& x, const Vector& b) override {
+    const std::vector<std::int64_t>& columns = partition.ColumnRows();
+    ASSERT_EQ(A.rows(), partition.LocalRows());
+    ASSERT_EQ(static_cast<std::size_t>(A.cols()), columns.size());
+    ASSERT_EQ(b.size(), A.cols());
+    largest_columns = std::max(largest_columns, static_cast<double>(A.cols()) / static_cast<double>(partition.Rows()));
+    const Eigen::Index n = partition.Rows();
+    Matrix dense = Matrix::Zero(n, n);
+    Vector rhs = Vector::Zero(n);
+    for (Eigen::Index i = 0; i < A.rows(); ++i) rhs[partition.Begin() + i] = b[i];
+    for (Eigen::Index c = 0; c < A.outerSize(); ++c)
+      for (SparseMatrix::InnerIterator it(A, c); it; ++it)
+        dense(partition.Begin() + it.row(), columns[static_cast<std::size_t>(c)]) = it.value();
+    communicator_.SumToAll(dense.data(), static_cast<std::size_t>(dense.size()));
+    communicator_.SumToAll(rhs.data(), static_cast<std::size_t>(rhs.size()));
+    const SparseMatrix whole = dense.sparseView();
+    Vector solution(n);
+    UmfpackSolver lu;
+    lu.Initialize(whole);
+    lu.Solve(whole, solution, rhs);
+    x.setConstant(A.cols(), std::nan(""));
+    for (Eigen::Index i = 0; i < A.rows(); ++i) x[i] = solution[partition.Begin() + i];
+  }
+  void Clear() override {}
+  const AssemblyCommunicator* Communicator() const override { return &communicator_; }
+  void SetRowPartition(const RowPartition& rows) override { partition = rows; }
+
+  RowPartition partition;
+  double largest_columns = 0.0;  ///< the largest share of the system's columns a rank's matrix had
+
+ private:
+  ThreadCommunicator communicator_;
+};
+
+/// DISPLACEMENT_X, _Y and REACTION_Y of each node of the model part by id, after SolveTruss.
+std::map<IndexType, std::array<double, 3>> NodalResults(const ModelPart& mp) {
+  std::map<IndexType, std::array<double, 3>> results;
+  for (const Node* node : mp.Nodes())
+    results[node->Id()] = {node->FastGetSolutionStepValue(DISPLACEMENT_X),
+                           node->FastGetSolutionStepValue(DISPLACEMENT_Y), node->FastGetSolutionStepValue(REACTION_Y)};
+  return results;
+}
+
+/// What each rank of SolvePieces saw.
+struct PieceRun {
+  std::vector<int> iterations;
+  std::map<IndexType, std::array<double, 3>> results;
+  std::size_t nodes = 0;  ///< in the piece
+  std::string failure;    ///< the error or the strategy's report of a step that failed
+};
+
+/// Each rank cuts its truss (changed by `change`) to its piece (the partition stored with the root
+/// model part) and solves it.
+std::vector<PieceRun> SolvePieces(int size, std::vector<std::shared_ptr<PieceSolver>>& solvers,
+                                  const std::function<void(Truss&)>& change = {}) {
+  ThreadRanks ranks(size);
+  std::vector<std::unique_ptr<Truss>> trusses;
+  for (int r = 0; r < size; ++r) {
+    trusses.push_back(std::make_unique<Truss>());
+    if (change) change(*trusses.back());
+    solvers.push_back(std::make_shared<PieceSolver>(ranks, r));
+  }
+  std::vector<PieceRun> runs(static_cast<std::size_t>(size));
+  std::vector<std::thread> threads;
+  for (int r = 0; r < size; ++r)
+    threads.emplace_back([&, r] {
+      const auto k = static_cast<std::size_t>(r);
+      ModelPart& mp = trusses[k]->mp;
+      auto partition = std::make_shared<const NodePartition>(mp, ThreadCommunicator(ranks, r));
+      mp.SetNodePartition(partition);
+      ModelPartPartitioner([&](const Node& node) { return partition->Owner(node); }, r).Cut(mp, {});
+      runs[k].nodes = mp.NumberOfNodes();
+      NewtonRaphsonStrategy strategy(mp, std::make_shared<ResidualBasedIncrementalUpdateStaticScheme>(),
+                                     std::make_shared<DisplacementCriteria>(1e-12, 1e-15),
+                                     MakeBuilder("block", solvers[k]), 30, true);
+      for (int step = 1; step <= 3; ++step) {
+        mp.CloneTimeStep(step);
+        if (mp.HasNode(2 * (kBays + 1)))
+          mp.GetNode(2 * (kBays + 1)).FastGetSolutionStepValue(DISPLACEMENT_Y) = -0.05 * step;
+        try {
+          if (!strategy.Solve()) runs[k].failure = strategy.FailureReport();
+        } catch (const SolutionError& e) {
+          runs[k].failure = e.what();
+        }
+        if (!runs[k].failure.empty()) break;
+        runs[k].iterations.push_back(static_cast<int>(strategy.IterationHistory().size()));
+      }
+      runs[k].results = NodalResults(mp);
+    });
+  for (auto& t : threads) t.join();
+  return runs;
+}
+
+class CutModel : public ::testing::TestWithParam<int> {};
+
+TEST_P(CutModel, EachRankSolvingItsPieceGivesTheSerialIterationsAndSolution) {
+  const int size = GetParam();
+  Truss serial_truss;
+  const TrussRun serial = SolveTruss(serial_truss, MakeBuilder("block", std::make_shared<UmfpackSolver>()));
+  const auto whole = NodalResults(serial_truss.mp);
+  std::vector<std::shared_ptr<PieceSolver>> solvers;
+  const std::vector<PieceRun> runs = SolvePieces(size, solvers);
+  std::map<IndexType, int> held;
+  for (int r = 0; r < size; ++r) {
+    const auto& [iterations, results, nodes, failure] = runs[static_cast<std::size_t>(r)];
+    EXPECT_EQ(failure, "") << "rank " << r;
+    EXPECT_EQ(iterations, serial.iterations) << "rank " << r;
+    EXPECT_LT(nodes, whole.size()) << "rank " << r << " kept the whole truss";
+    EXPECT_LT(solvers[static_cast<std::size_t>(r)]->largest_columns, 0.9) << "rank " << r;
+    // Every node a rank holds, owned or ghost, has the serial values (the ghosts' from their owners).
+    for (const auto& [id, values] : results) {
+      ++held[id];
+      for (std::size_t c = 0; c < 3; ++c)
+        EXPECT_NEAR(values[c], whole.at(id)[c], 1e-12 * (1.0 + std::abs(whole.at(id)[c])))
+            << "node " << id << " value " << c << " rank " << r;
+    }
+  }
+  EXPECT_EQ(held.size(), whole.size()) << "a node no rank holds";
+}
+
+INSTANTIATE_TEST_SUITE_P(Ranks, CutModel, ::testing::Values(2, 3));
+
+TEST(CutModel, AColumnWithoutStiffnessStopsEveryRankAndItsOwnerNamesIt) {
+  // Node 15 hangs on node 7 by a spring without stiffness: its columns are empty.
+  const auto loose = [](Truss& truss) {
+    test::AddNode(truss.mp, 15, 8.0, 0.0, 2);
+    test::AddSpring(truss.mp, 100, kBays + 1, 15, 0.0, 0.0, 2);
+  };
+  std::vector<std::shared_ptr<PieceSolver>> solvers;
+  const std::vector<PieceRun> runs = SolvePieces(2, solvers, loose);
+  int named = 0;
+  for (int r = 0; r < 2; ++r) {
+    const std::string& failure = runs[static_cast<std::size_t>(r)].failure;
+    EXPECT_NE(failure.find("singular system: no stiffness for "), std::string::npos) << "rank " << r << ": " << failure;
+    named += failure.find("DISPLACEMENT_X of node 15") != std::string::npos;
+  }
+  EXPECT_EQ(named, 1) << runs[0].failure << " | " << runs[1].failure;
+}
+
+TEST(CutModel, TheEliminationBuilderIsNotImplementedOnAPiece) {
+  Truss truss;
+  ThreadRanks ranks(1);
+  truss.mp.SetNodePartition(std::make_shared<const NodePartition>(truss.mp, ThreadCommunicator(ranks, 0)));
+  auto builder = MakeBuilder("elimination", std::make_shared<PieceSolver>(ranks, 0));
+  const std::string message = test::ErrorMessageOf<NotImplementedError>([&] { SolveTruss(truss, builder); });
+  EXPECT_NE(message.find("elimination builder on a model cut across 1 processes"), std::string::npos) << message;
 }
 
 TEST(RowPartition, OneBlockPerRankInRankOrder) {

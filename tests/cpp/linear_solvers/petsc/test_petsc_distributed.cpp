@@ -2,9 +2,12 @@
 // Issue 17: started by `mpirun -n 2` (the ctest petsc_solver_on_two_ranks), the solver puts the
 // ranks' own rows of a matrix into one MPIAIJ system, solves it with MUMPS or a Krylov method, and
 // hands every rank the whole solution, the same bits on every rank; a process started alone has
-// no communicator. Each rank holds only its rows, as the builder's do.
+// no communicator. Each rank holds only its rows, as the builder's do. With a model cut to a piece
+// per rank the matrix's columns and the vectors are the rank's DoFs (RowPartition::ColumnRows) and
+// each rank gets its own rows of the solution.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -78,6 +81,48 @@ TEST_P(PetscDistributed, OwnRowsMakeTheSystemAndEveryRankGetsTheWholeSolution) {
     Vector difference = rank == 0 ? Vector(x) : Vector(-x);
     communicator->SumToAll(difference.data(), static_cast<std::size_t>(difference.size()));
     EXPECT_EQ(difference.cwiseAbs().maxCoeff(), 0.0) << "solve " << solve;
+  }
+}
+
+TEST_P(PetscDistributed, APieceGivesItsColumnsAsItsDofsAndGetsItsOwnRows) {
+  if (AssemblyCommunicator::LaunchedSize() < 2) GTEST_SKIP() << "runs under mpirun -n 2 (petsc_solver_on_two_ranks)";
+  PetscSolver solver(ReadPetscOptions(Parameters(GetParam())));
+  const AssemblyCommunicator& communicator = *solver.Communicator();
+  const int size = communicator.Size();
+  const int rank = communicator.Rank();
+  const SparseMatrix A = ConvectionDiffusion2D(24);
+  const Vector expected = ManufacturedSolution(A.rows());
+  const Vector b = A * expected;
+  std::vector<std::int64_t> counts;
+  for (int r = 0; r < size; ++r) counts.push_back((r + 1) * A.rows() / size - r * A.rows() / size);
+  const std::int64_t begin = rank * A.rows() / size;
+  const std::int64_t own = counts[static_cast<std::size_t>(rank)];
+  // The piece's DoFs: its rows, then the other columns its rows use (the ghosts), last first.
+  std::vector<std::int64_t> columns;
+  for (std::int64_t i = 0; i < own; ++i) columns.push_back(begin + i);
+  const SparseMatrix rows = A.middleRows(begin, own);
+  std::vector<std::int64_t> ghosts;
+  for (Eigen::Index j = 0; j < rows.outerSize(); ++j)
+    if ((j < begin || j >= begin + own) && rows.col(j).nonZeros() > 0) ghosts.push_back(j);
+  ASSERT_FALSE(ghosts.empty());
+  columns.insert(columns.end(), ghosts.rbegin(), ghosts.rend());
+  std::vector<Eigen::Triplet<double, int>> entries;
+  for (std::size_t c = 0; c < columns.size(); ++c)
+    for (SparseMatrix::InnerIterator it(rows, static_cast<Eigen::Index>(columns[c])); it; ++it)
+      entries.emplace_back(static_cast<int>(it.row()), static_cast<int>(c), it.value());
+  SparseMatrix piece(own, static_cast<Eigen::Index>(columns.size()));
+  piece.setFromTriplets(entries.begin(), entries.end());
+  piece.makeCompressed();
+  ASSERT_EQ(piece.nonZeros(), rows.nonZeros());
+  // The ghosts' right-hand side is not this rank's to give: a value that would show.
+  Vector b_piece = Vector::Constant(piece.cols(), 1e300);
+  b_piece.head(own) = b.segment(begin, own);
+  solver.SetRowPartition(RowPartition::FromCounts(counts, rank, columns));
+  for (int solve = 0; solve < 2; ++solve) {
+    Vector x;
+    solver.Solve(piece, x, b_piece);
+    ASSERT_EQ(x.size(), piece.cols());
+    EXPECT_LT(RelativeError(x.head(own), expected.segment(begin, own)), 1e-9) << "solve " << solve;
   }
 }
 
