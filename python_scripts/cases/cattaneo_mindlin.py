@@ -24,8 +24,9 @@ half its length in 2D, the radius of a disc of its area in 3D), the same estimat
 mesh, which does not depend on where the zone's centre is. In 3D it is cross-checked by a second,
 independent measure: the c whose closed-form profile fits the nodal tangential tractions best
 (area-weighted least squares over the active nodes), which uses every node's value rather than
-its stick / slip flag. On hertz3dgrid_15k (h = 0.1 a) both give c 0.03 to 0.05 a below
-Cattaneo-Mindlin; on hertz3dgrid_30k (h = 0.075 a) see test_cattaneo_mindlin_3d.
+its stick / slip flag. On hertz3dgrid_15k (h = 0.1 a) both give c 0.02 to 0.05 a below
+Cattaneo-Mindlin, on hertz3dgrid_30k (h = 0.075 a) 0.02 to 0.045 a: the offset, about 0.4 h,
+shrinks with the mesh (figures in test_cattaneo_mindlin_3d).
 A nodal dual multiplier is the traction averaged with the node's standard shape function (its
 row of D), so in 2D the nodal traction is compared with the closed form averaged in the same
 way; in 3D with its point value at the node (no surface mesh at hand), which overstates the

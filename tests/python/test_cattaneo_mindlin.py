@@ -157,14 +157,19 @@ def test_cattaneo_mindlin_3d(tmp_path):
     4, 4, 5, 4, 5, 5, 5, 5 iterations. Coulomb held only to 1e-7 p0 and the pressure on y = 0
     oscillated in the slip zone (2.6 .. 42 against Hertz' 30) before the nodes on the symmetry
     plane got their normal and weighted slip without a component across it
-    (NodalNormalSupport::SymmetryMask)."""
+    (NodalNormalSupport::SymmetryMask).
+    The offset of c is the discretization's: on hertz3dgrid_30k (h = 0.075 a, 58k DoFs, 21 min)
+    it shrinks from -0.042 to -0.033 a on average by the areas (-0.024 .. -0.046) and from -0.031
+    to -0.022 a by the profile fit (-0.017 .. -0.029), about 0.4 h both, the profile rms to
+    0.066 .. 0.092 mu p0, and the contact radius from the active nodes' areas from 0.970 .. 0.977 a
+    to 0.992 .. 0.994 a (4 or 5 iterations per shift step)."""
     results, _ = run(3, "15k", str(tmp_path))
     print(_table(results))
     ratios = [r["load_ratio"] for r in results]
     assert ratios == sorted(ratios) and 0.8 < ratios[-1] < 1.0
     for r in results:
         assert r["P"] == pytest.approx(results[0]["P"], rel=1e-3)
-        assert r["slip_rule_error"] < 1e-12
+        assert r["slip_rule_error"] < 1e-8
         assert abs(r["c_error"]) < 0.05
         assert abs(r["c_fit_error"]) < 0.05
         assert r["traction_error_rms"] < 0.12
