@@ -7,6 +7,7 @@
 #include "core/variables/kernel_variables.h"
 #include "custom_utilities/contact_variables.h"
 #include "custom_utilities/mortar_geometry_cases.h"
+#include "custom_utilities/nodal_normal_support.h"
 
 namespace mc {
 
@@ -70,6 +71,13 @@ void FrictionalMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::Accumul
 }
 
 template <int TDim, int TNumNodes, int TNumNodesMaster>
+void FrictionalMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::SymmetryMasks(Data& data) const {
+  for (int j = 0; j < TNumNodes; ++j)
+    data.symmetry_mask.row(j) =
+        NodalNormalSupport::SymmetryMask(this->GetGeometry()[j]).template head<TDim>().transpose();
+}
+
+template <int TDim, int TNumNodes, int TNumNodesMaster>
 double FrictionalMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::FrictionCoefficient(const Node& node) const {
   if (node.Has(FRICTION_COEFFICIENT)) return node.GetValue(FRICTION_COEFFICIENT);
   if (this->HasProperties() && this->GetProperties().Has(FRICTION_COEFFICIENT))
@@ -94,6 +102,7 @@ void FrictionalMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::Complet
   EnsurePreviousOperators(info);
   data.previous_D = previous_D_;
   data.previous_M = previous_M_;
+  SymmetryMasks(data);
   ComputeWeightedSlip(data);
   if (info.GetValue(ACCUMULATED_WEIGHTED_SLIP)) AccumulatedWeightedSlip(data);
   data.tangent_factor = TangentFactor(info);
@@ -119,6 +128,7 @@ void FrictionalMortarContactCondition<TDim, TNumNodes, TNumNodesMaster>::AddExpl
   data.kinematics = &kinematics;
   data.previous_D = previous_D_;
   data.previous_M = previous_M_;
+  SymmetryMasks(data);
   ComputeWeightedSlip(data);
   Geometry& slave = this->GetGeometry();
   for (int j = 0; j < TNumNodes; ++j) {

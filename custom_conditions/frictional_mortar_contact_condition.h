@@ -69,6 +69,8 @@ class FrictionalMortarContactCondition : public MortarContactCondition<TDim, TNu
                               const ProcessInfo& info);
   /// Computes D_n, M_n from the previous step's coordinates if the pair has none yet.
   void EnsurePreviousOperators(const ProcessInfo& info);
+  /// data.symmetry_mask from the slave nodes' fixed multiplier components.
+  void SymmetryMasks(Data& data) const;
   /// ACCUMULATED_WEIGHTED_SLIP: the pair's share of each slave node's nodal WEIGHTED_SLIP.
   void AccumulatedWeightedSlip(Data& data) const;
   double FrictionCoefficient(const Node& node) const;

@@ -33,6 +33,9 @@ struct MortarKernelData {
   /// s_j = T_j [(D - D_n) x1 - (M - M_n) x2]_j (WeightedSlip): this pair's weighted, frame-indifferent
   /// tangential slip increment of the step; T_j = I - n_j n_j^T.
   SlaveMatrix weighted_slip = SlaveMatrix::Zero();
+  /// P_j (NodalNormalSupport::SymmetryMask of each slave node, as rows): s_j = P_j T_j [...]_j. On a
+  /// symmetry plane the mirrored half, missing from the model, would cancel s_j's component across it.
+  SlaveMatrix symmetry_mask = SlaveMatrix::Ones();
   SlaveVector friction_coefficient = SlaveVector::Zero();  ///< mu_j (Coulomb)
   SlaveVector friction_threshold = SlaveVector::Zero();    ///< tau_j (Tresca)
   std::array<bool, TNumNodes> slip{};                      ///< SLIP flag of each (active) slave node
@@ -56,7 +59,7 @@ void ComputeWeightedSlip(TData& data) {
   for (int j = 0; j < TData::Kinematics::kNumSlaveNodes; ++j) {
     const auto v = SlipIncrement(data, j);
     const auto n = n1.row(j).transpose();
-    data.weighted_slip.row(j) = (v - n * n.dot(v)).transpose();
+    data.weighted_slip.row(j) = (v - n * n.dot(v)).transpose().cwiseProduct(data.symmetry_mask.row(j));
   }
 }
 
@@ -98,13 +101,14 @@ void AddNormalChainRule(const TKinematics& kinematics, int j, const TCD& cD, con
 
 /// Chain rule through the weighted slip s_j (frictional kernels): lhs(r, q) += cS(r, :) . ds_j/dq for
 /// every displacement DoF q, with cS = -d rhs / ds_j and, for v = [(D - D_n) x1 - (M - M_n) x2]_j,
-///   ds_j/dq = T_j dv/dq,  dv/dq = dD[q](j, :) x1 - dM[q](j, :) x2 + (D - D_n)(j, i) e_c [q = slave (i, c)]
+///   ds_j/dq = P_j T_j dv/dq,  dv/dq = dD[q](j, :) x1 - dM[q](j, :) x2 + (D - D_n)(j, i) e_c [q = slave (i, c)]
 ///                                                                  - (M - M_n)(j, l) e_c [q = master (l, c)].
 template <class TData, class TCS>
 void AddSlipChainRule(const TData& data, int j, const TCS& cS, Matrix& lhs) {
   using K = typename TData::Kinematics;
   const K& kinematics = *data.kinematics;
   const Eigen::Matrix<double, K::kDim, 1> n = kinematics.slave_normals.row(j).transpose();
+  const Eigen::Matrix<double, K::kDim, 1> mask = data.symmetry_mask.row(j).transpose();
   for (int q = 0; q < K::kNumDisplacementDofs; ++q) {
     Eigen::Matrix<double, K::kDim, 1> dv = (kinematics.dD[q].row(j) * kinematics.slave_coordinates -
                                             kinematics.dM[q].row(j) * kinematics.master_coordinates)
@@ -115,19 +119,20 @@ void AddSlipChainRule(const TData& data, int j, const TCS& cS, Matrix& lhs) {
     else
       dv(c) +=
           kinematics.D(j, (q - K::kNumMasterDofs) / K::kDim) - data.previous_D(j, (q - K::kNumMasterDofs) / K::kDim);
-    lhs.col(q).noalias() += cS * (dv - n * n.dot(dv));
+    lhs.col(q).noalias() += cS * (dv - n * n.dot(dv)).cwiseProduct(mask);
   }
 }
 
 /// The same over the slave-normal indices (normal variation): S(r, p) += cS(r, :) . ds_j/dn_p with
 /// p = (i, c) node-major, through D and M, and for i == j through T_j: d(T_j v)/dn_j[c] =
-/// -e_c (n_j . v) - n_j v_c.
+/// -e_c (n_j . v) - n_j v_c; then P_j.
 template <class TData, class TCS>
 void AddSlipNormalChainRule(const TData& data, int j, const TCS& cS, Matrix& sensitivity) {
   using K = typename TData::Kinematics;
   const K& kinematics = *data.kinematics;
   const Eigen::Matrix<double, K::kDim, 1> n = kinematics.slave_normals.row(j).transpose();
   const Eigen::Matrix<double, K::kDim, 1> v = SlipIncrement(data, j);
+  const Eigen::Matrix<double, K::kDim, 1> mask = data.symmetry_mask.row(j).transpose();
   for (int p = 0; p < K::kNumSlaveDofs; ++p) {
     const int q = K::kNumDisplacementDofs + p;
     const Eigen::Matrix<double, K::kDim, 1> dv = (kinematics.dD[q].row(j) * kinematics.slave_coordinates -
@@ -139,7 +144,7 @@ void AddSlipNormalChainRule(const TData& data, int j, const TCS& cS, Matrix& sen
       ds(c) -= n.dot(v);
       ds -= n * v(c);
     }
-    sensitivity.col(p).noalias() += cS * ds;
+    sensitivity.col(p).noalias() += cS * ds.cwiseProduct(mask);
   }
 }
 

@@ -6,6 +6,7 @@
 #include "core/geometries/reference_element.h"
 #include "core/model/model_part.h"
 #include "core/utilities/error.h"
+#include "custom_utilities/contact_variables.h"
 
 namespace mc {
 
@@ -67,6 +68,12 @@ Array3 NodalNormalSupport::UnitCornerNormal(const Geometry& face, const Node& no
   return norm > 0.0 ? Array3(c / norm) : Array3::Zero();
 }
 
+Array3 NodalNormalSupport::SymmetryMask(const Node& node) {
+  return {node.IsFixed(VECTOR_LAGRANGE_MULTIPLIER_X) ? 0.0 : 1.0,
+          node.IsFixed(VECTOR_LAGRANGE_MULTIPLIER_Y) ? 0.0 : 1.0,
+          node.IsFixed(VECTOR_LAGRANGE_MULTIPLIER_Z) ? 0.0 : 1.0};
+}
+
 NodalNormalSupport::NodalNormalSupport(const std::vector<const Geometry*>& faces) {
   for (const Geometry* face : faces) Add(face);
 }
@@ -103,6 +110,7 @@ const std::vector<const Geometry*>& NodalNormalSupport::Faces(const Node& node) 
 Array3 NodalNormalSupport::Normal(const Node& node) const {
   Array3 m = Array3::Zero();
   for (const Geometry* face : Faces(node)) m += UnitCornerNormal(*face, node);
+  m = m.cwiseProduct(SymmetryMask(node));
   const double norm = m.norm();
   return norm > 0.0 ? Array3(m / norm) : Array3::Zero();
 }
@@ -134,12 +142,15 @@ void NodalNormalSupport::Compute(const Node& node, Derivatives& out) const {
       }
     });
   }
+  const Array3 mask = SymmetryMask(node);
+  m = m.cwiseProduct(mask);
   const double norm = m.norm();
   if (!(norm > 0.0))
     throw SolutionError(Concat("nodal normal of node ", node.Id(), ": the unit normals of its ", Faces(node).size(),
                                " interface faces sum to zero"));
   out.normal = m / norm;
-  const Eigen::Matrix3d projector = (Eigen::Matrix3d::Identity() - out.normal * out.normal.transpose()) / norm;
+  const Eigen::Matrix3d projector =
+      (Eigen::Matrix3d::Identity() - out.normal * out.normal.transpose()) / norm * mask.asDiagonal();
   for (Eigen::Matrix3d& d : out.dn_dx) d = projector * d;
 }
 

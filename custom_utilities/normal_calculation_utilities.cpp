@@ -35,6 +35,7 @@ void NormalCalculationUtilities::ComputeNodalNormals(ModelPart& part) {
     }
   }
   for (auto& [node, sum] : sums) {
+    sum = sum.cwiseProduct(NodalNormalSupport::SymmetryMask(*node));
     const double norm = sum.norm();
     SetNodalNormal(*node, norm > 0.0 ? Array3(sum / norm) : Array3::Zero());
   }

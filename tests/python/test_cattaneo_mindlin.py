@@ -86,11 +86,15 @@ def run(dim: int, label: str, folder: str, mpc: bool = False) -> tuple[list[dict
 
 
 def _table(results) -> str:
-    rows = [f"Q/muP {r['load_ratio']:.3f}: c/a {r['c'] / r['a']:.3f} (theory {r['c_theory'] / r['a']:.3f}, "
-            f"error {r['c_error']:+.3f} a)" + (f", q error max {r['traction_error_max']:.3f} rms "
-                                                f"{r['traction_error_rms']:.3f} mu p0" if "traction_error_max" in r
-                                                else "") + f", {r['iterations']} iterations"
-            for r in results]
+    def row(r):
+        text = (f"Q/muP {r['load_ratio']:.3f}: c/a {r['c'] / r['a']:.3f} (theory {r['c_theory'] / r['a']:.3f}, "
+                f"error {r['c_error']:+.3f} a")
+        if "c_fit" in r:
+            text += f", profile fit {r['c_fit_error']:+.3f} a"
+        text += f"), q error max {r['traction_error_max']:.3f} rms {r['traction_error_rms']:.3f} mu p0"
+        return text + f", Coulomb {r['slip_rule_error']:.1e} p0, {r['iterations']} iterations"
+
+    rows = [row(r) for r in results]
     return "\n".join(rows)
 
 
@@ -143,17 +147,30 @@ def test_cattaneo_mindlin_3d_symmetry_of_the_multiplier(tmp_path):
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(strict=True, raises=AssertionError, reason=(
-    "issue 12: with the multiplier's symmetry on y = 0 every step converges (normal steps 3, 3, 2, 3, 2, "
-    "1, 2, 3 iterations; shift steps 5, 4, 5, 5, 5, 6, 5, 6) at Q/muP 0.14 to 0.90, but c/a stays "
-    "0.037 to 0.054 a below Cattaneo-Mindlin (the last step above 0.05 a) and Coulomb holds at the "
-    "slipping nodes to 1.0e-7 p0, not 1e-8 (2D: 1e-12)"))
 def test_cattaneo_mindlin_3d(tmp_path):
+    """hertz3dgrid_15k half model (h = 0.1 a), 8 shift steps to Q/muP 0.90. Measured per shift step
+    (Q/muP 0.143, 0.278, 0.405, 0.524, 0.634, 0.734, 0.823, 0.898):
+    c/a from the stick nodes' areas 0.913 .. 0.425 against 0.950 .. 0.467 (error -0.037 .. -0.048 a),
+    from the best-fitting profile -0.022 .. -0.045 a; nodal |q_t| against the point values of the
+    closed form rms 0.078 .. 0.116, max 0.34 .. 0.41 mu p0 (the max at the nodes next to the
+    stick-zone edge, where the closed form is steep); Coulomb at the slipping nodes 1e-16 p0;
+    4, 4, 5, 4, 5, 5, 5, 5 iterations. Coulomb held only to 1e-7 p0 and the pressure on y = 0
+    oscillated in the slip zone (2.6 .. 42 against Hertz' 30) before the nodes on the symmetry
+    plane got their normal and weighted slip without a component across it
+    (NodalNormalSupport::SymmetryMask).
+    The offset of c is the discretization's: on hertz3dgrid_30k (h = 0.075 a, 58k DoFs, 21 min)
+    it shrinks from -0.042 to -0.033 a on average by the areas (-0.024 .. -0.046) and from -0.031
+    to -0.022 a by the profile fit (-0.017 .. -0.029), about 0.4 h both, the profile rms to
+    0.066 .. 0.092 mu p0, and the contact radius from the active nodes' areas from 0.970 .. 0.977 a
+    to 0.992 .. 0.994 a (4 or 5 iterations per shift step)."""
     results, _ = run(3, "15k", str(tmp_path))
     print(_table(results))
     ratios = [r["load_ratio"] for r in results]
     assert ratios == sorted(ratios) and 0.8 < ratios[-1] < 1.0
     for r in results:
+        assert r["P"] == pytest.approx(results[0]["P"], rel=1e-3)
         assert r["slip_rule_error"] < 1e-8
         assert abs(r["c_error"]) < 0.05
-        assert r["iterations"] <= 6
+        assert abs(r["c_fit_error"]) < 0.05
+        assert r["traction_error_rms"] < 0.12
+        assert r["iterations"] <= 5

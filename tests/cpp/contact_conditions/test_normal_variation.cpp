@@ -162,10 +162,14 @@ const std::map<std::string, Builder>& Builders() {
 // ---------------------------------------------------------------------------------------------
 // 1. Derivatives of the nodal normals.
 
-void CheckNormalDerivatives(const std::string& case_name) {
+// `symmetry_plane`: the first slave node's VECTOR_LAGRANGE_MULTIPLIER_X is fixed, so its normal has
+// no x component (NodalNormalSupport::SymmetryMask) and its derivatives are those of the masked sum.
+void CheckNormalDerivatives(const std::string& case_name, bool symmetry_plane = false) {
   SCOPED_TRACE(case_name);
   Interface in;
   Builders().at(case_name)(in);
+  Node* on_plane = in.SlaveNodes().front();
+  if (symmetry_plane) on_plane->AddDof(VECTOR_LAGRANGE_MULTIPLIER_X).fixed = true;
   in.Finish();
   const NodalNormalSupport& support = *in.support;
   NodalNormalSupport::Derivatives d;
@@ -177,6 +181,12 @@ void CheckNormalDerivatives(const std::string& case_name) {
     EXPECT_LE((d.normal - NormalCalculationUtilities::GetNodalNormal(*node)).norm(), 1e-14) << "node " << node->Id();
     EXPECT_LE((d.normal - support.Normal(*node)).norm(), 0.0);
     EXPECT_GT(d.normal.dot(in.slave_direction), 0.9) << "node " << node->Id();
+    if (symmetry_plane && node == on_plane) {
+      Array3 unmasked = Array3::Zero();
+      for (const Geometry* face : support.Faces(*node)) unmasked += NodalNormalSupport::UnitCornerNormal(*face, *node);
+      EXPECT_GT(std::abs(unmasked.normalized().x()), 1e-3);  // the mask changes this normal
+      EXPECT_EQ(d.normal.x(), 0.0);
+    }
     for (Node* k : in.root.Nodes()) {
       const auto it = std::find(d.nodes.begin(), d.nodes.end(), k);
       for (int c = 0; c < in.dim; ++c) {
@@ -203,6 +213,9 @@ void CheckNormalDerivatives(const std::string& case_name) {
 TEST(NodalNormalSupport, Derivatives2DLines) { CheckNormalDerivatives("2D2N"); }
 TEST(NodalNormalSupport, Derivatives3DQuadrilaterals) { CheckNormalDerivatives("3D4N"); }
 TEST(NodalNormalSupport, Derivatives3DTriangles) { CheckNormalDerivatives("3D3N"); }
+TEST(NodalNormalSupport, DerivativesOnASymmetryPlane) {
+  for (const char* name : {"2D2N", "3D4N", "3D3N"}) CheckNormalDerivatives(name, true);
+}
 
 // A face's contribution to a nodal normal is its unit normal at that node (Kratos 10.4 evaluates
 // UnitNormal at the node's local coordinates): on a warped quadrilateral it differs from corner

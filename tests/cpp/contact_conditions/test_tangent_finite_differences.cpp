@@ -193,6 +193,33 @@ TYPED_TEST(FrictionalTangentTest, AllSlip) {
 }
 TYPED_TEST(FrictionalTangentTest, StickSlip) { Fixture<TypeParam>(Pattern::kStickSlip).CheckTangent(); }
 
+// A slave node on a symmetry plane (its multiplier component across the plane fixed, as the half
+// model of cases.cattaneo_mindlin does): its weighted slip has no component across the plane,
+// the others' are untouched, and the tangent still equals the finite differences.
+TYPED_TEST(FrictionalTangentTest, SlipOnASymmetryPlane) {
+  Fixture<TypeParam> fixture(Pattern::kAllSlip);
+  const ProcessInfo& info = fixture.root.GetProcessInfo();
+  auto nodal_slips = [&] {
+    for (Node* node : fixture.pair->GetGeometry().Nodes()) node->FastGetSolutionStepValue(WEIGHTED_SLIP).setZero();
+    fixture.pair->AddExplicitContribution(info);
+    std::vector<Array3> slips;
+    for (Node* node : fixture.pair->GetGeometry().Nodes())
+      slips.push_back(node->FastGetSolutionStepValue(WEIGHTED_SLIP));
+    return slips;
+  };
+  Node& on_plane = fixture.pair->GetGeometry()[0];
+  Dof& across = on_plane.AddDof(VECTOR_LAGRANGE_MULTIPLIER_Y);
+  across.fixed = true;
+  fixture.CheckTangent();
+  const std::vector<Array3> masked = nodal_slips();
+  across.fixed = false;
+  const std::vector<Array3> free = nodal_slips();
+  EXPECT_GT(std::abs(free[0].y()), 1e-3);
+  EXPECT_EQ(masked[0].y(), 0.0);
+  EXPECT_EQ(masked[0].x(), free[0].x());
+  for (std::size_t j = 1; j < free.size(); ++j) EXPECT_EQ(masked[j], free[j]) << "node " << j;
+}
+
 // Tresca (mu = 0, a nodal threshold) and the general bound tau - mu lbar_n (both non-zero).
 TYPED_TEST(FrictionalTangentTest, TrescaSlip) {
   for (const bool coulomb : {false, true}) {
