@@ -39,7 +39,7 @@ class FactorizationReuseSolver : public LinearSolver {
  public:
   struct Options {
     /// Relative size of the preconditioned residual that ends the Krylov solve.
-    double tolerance = 1.0e-12;
+    double tolerance = 1.0e-14;
     /// Bounds of the budget in substitutions per factorization (the measured cost ratio): at
     /// least a few tries, at most a GMRES basis of max_iterations vectors.
     int min_iterations = 4;
