@@ -22,8 +22,8 @@ FactorizationReuseSolver::FactorizationReuseSolver(std::unique_ptr<DirectSolver>
   if (!(options_.tolerance > 0.0) || options_.min_iterations < 1 || options_.max_iterations < options_.min_iterations ||
       !(options_.changed_row_fraction > 0.0))
     throw Error(Concat("FactorizationReuseSolver: invalid options (tolerance ", options_.tolerance, ", iterations ",
-                       options_.min_iterations, " to ",
-                       options_.max_iterations, ", changed_row_fraction ", options_.changed_row_fraction, ")"));
+                       options_.min_iterations, " to ", options_.max_iterations, ", changed_row_fraction ",
+                       options_.changed_row_fraction, ")"));
 }
 
 void FactorizationReuseSolver::Initialize(const SparseMatrix& A) {

@@ -58,9 +58,9 @@ class UmfpackSolver : public DirectSolver {
   double kept_strategy_ = 0.0;       ///< UMFPACK_STRATEGY of the analysis that ordered the factors
   double strategy_used_ = 0.0;       ///< UMFPACK_STRATEGY_USED of the last analysis
   bool ordering_kept_ = false;
-  double fresh_flops_ = 0.0;             ///< flops of the last factorization with a fresh ordering
-  double last_flops_ = 0.0;              ///< flops of the last factorization
-  double control_[20] = {};              ///< UMFPACK_CONTROL parameters, set by Initialize
+  double fresh_flops_ = 0.0;  ///< flops of the last factorization with a fresh ordering
+  double last_flops_ = 0.0;   ///< flops of the last factorization
+  double control_[20] = {};   ///< UMFPACK_CONTROL parameters, set by Initialize
 };
 
 }  // namespace mc

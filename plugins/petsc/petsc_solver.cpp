@@ -13,8 +13,8 @@
 #include <optional>
 #include <unordered_set>
 
-#include "core/model/dof.h"
 #include "core/linear_solvers/solve_clocks.h"
+#include "core/model/dof.h"
 #include "core/model/node.h"
 #include "core/utilities/string_utilities.h"
 #include "petsc/petsc_communicator.h"
