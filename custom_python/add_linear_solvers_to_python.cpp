@@ -31,7 +31,8 @@ void AddLinearSolversToPython(py::module_& m) {
           [](const LinearSolver& solver) {
             const LinearSolver::WorkCounters c = solver.Counters();
             return py::dict(py::arg("factorizations") = c.factorizations, py::arg("krylov_solves") = c.krylov_solves,
-                            py::arg("krylov_iterations") = c.krylov_iterations, py::arg("fallbacks") = c.fallbacks);
+                            py::arg("krylov_iterations") = c.krylov_iterations, py::arg("fallbacks") = c.fallbacks,
+                            py::arg("preconditioner_setups") = c.preconditioner_setups);
           },
           "Work done so far: numeric factorizations, Krylov solves with kept factors, their iterations, fallbacks to "
           "a fresh factorization.")

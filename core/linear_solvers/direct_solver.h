@@ -35,11 +35,6 @@ class DirectSolver : public LinearSolver {
   bool HasFactors() const noexcept { return has_factors_; }
   /// Order of the factorized matrix (-1 without factors).
   long FactorsSize() const noexcept { return has_factors_ ? factors_size_ : -1; }
-  /// About how many substitutions cost as much as the last numeric factorization: what a Krylov
-  /// solve preconditioned by these factors may spend. The default is for solvers that report no
-  /// flop counts; UMFPACK estimates it from its own.
-  virtual double FactorizationCostInSubstitutions() const { return 20.0; }
-
   /// Symbolic analyses run so far (tests check the reuse across value changes).
   int SymbolicAnalysesNumber() const noexcept { return symbolic_count_; }
   /// Numeric factorizations run so far.

@@ -19,11 +19,11 @@ constexpr double kMaxTrueResidual = 1e-6;
 FactorizationReuseSolver::FactorizationReuseSolver(std::unique_ptr<DirectSolver> direct, const Options& options)
     : direct_(std::move(direct)), options_(options) {
   if (!direct_) throw Error("FactorizationReuseSolver: no direct solver given");
-  if (!(options_.tolerance > 0.0) || !(options_.budget_fraction > 0.0) || options_.min_iterations < 1 ||
-      options_.max_iterations < options_.min_iterations || !(options_.changed_row_fraction > 0.0))
-    throw Error(Concat("FactorizationReuseSolver: invalid options (tolerance ", options_.tolerance,
-                       ", budget_fraction ", options_.budget_fraction, ", iterations ", options_.min_iterations, " to ",
-                       options_.max_iterations, ", changed_row_fraction ", options_.changed_row_fraction, ")"));
+  if (!(options_.tolerance > 0.0) || options_.min_iterations < 1 || options_.max_iterations < options_.min_iterations ||
+      !(options_.changed_row_fraction > 0.0))
+    throw Error(Concat("FactorizationReuseSolver: invalid options (tolerance ", options_.tolerance, ", iterations ",
+                       options_.min_iterations, " to ", options_.max_iterations, ", changed_row_fraction ",
+                       options_.changed_row_fraction, ")"));
 }
 
 void FactorizationReuseSolver::Initialize(const SparseMatrix& A) {
@@ -33,11 +33,11 @@ void FactorizationReuseSolver::Initialize(const SparseMatrix& A) {
 
 void FactorizationReuseSolver::Solve(const SparseMatrix& A, Vector& x, const Vector& b) {
   last_reused_ = false;
-  if (refactorize_ || !direct_->HasFactors() || direct_->FactorsSize() != A.rows()) {
+  const int budget = BudgetLeft();
+  if (!direct_->HasFactors() || direct_->FactorsSize() != A.rows() || budget < 1) {
     SolveDirect(A, x, b);
     return;
   }
-  const int budget = Budget();
   long changed = 0;
   {
     SolveClocks::Scope clock(SolveClocks::Process().comparison);
@@ -57,10 +57,10 @@ void FactorizationReuseSolver::Solve(const SparseMatrix& A, Vector& x, const Vec
   }
   clocks.krylov_other += krylov - (clocks.krylov_substitution - substitutions_before);
   krylov_iterations_ += last_iterations_;
+  spent_substitutions_ += last_iterations_;
   if (converged) {
     ++krylov_solves_;
     last_reused_ = true;
-    refactorize_ = 2 * last_iterations_ > budget;
     return;
   }
   ++fallbacks_;
@@ -69,7 +69,6 @@ void FactorizationReuseSolver::Solve(const SparseMatrix& A, Vector& x, const Vec
 
 void FactorizationReuseSolver::Clear() {
   direct_->Clear();
-  refactorize_ = false;
   basis_.clear();
   basis_.shrink_to_fit();
   factorized_ = SparseMatrix();
@@ -82,10 +81,24 @@ LinearSolver::WorkCounters FactorizationReuseSolver::Counters() const {
           .fallbacks = fallbacks_};
 }
 
+double FactorizationReuseSolver::SubstitutionSeconds() const noexcept {
+  return substitutions_ > 0 ? substitution_seconds_ / substitutions_ : 0.0;
+}
+
 int FactorizationReuseSolver::Budget() const {
-  const double iterations = options_.budget_fraction * direct_->FactorizationCostInSubstitutions();
-  return std::clamp(std::isfinite(iterations) ? static_cast<int>(iterations) : 0, options_.min_iterations,
+  const double ratio = factorization_seconds_ / SubstitutionSeconds();
+  return std::clamp(std::isfinite(ratio) ? static_cast<int>(ratio) : 0, options_.min_iterations,
                     options_.max_iterations);
+}
+
+void FactorizationReuseSolver::Substitute(Vector& x, const Vector& b, double& clock) {
+  const double before = clock;
+  {
+    SolveClocks::Scope scope(clock);
+    direct_->SubstituteFactors(x, b);
+  }
+  substitution_seconds_ += clock - before;
+  ++substitutions_;
 }
 
 namespace {
@@ -127,16 +140,18 @@ long FactorizationReuseSolver::ChangedRows(const SparseMatrix& A) {
 }
 
 void FactorizationReuseSolver::SolveDirect(const SparseMatrix& A, Vector& x, const Vector& b) {
-  direct_->FactorizeNumeric(A);
+  // The numeric factorization only: a symbolic analysis comes with a new pattern, whatever the rule.
   SolveClocks& clocks = SolveClocks::Process();
-  {
-    SolveClocks::Scope clock(clocks.direct_substitution);
-    direct_->SubstituteFactors(x, b);
-  }
+  const double before = clocks.factorization;
+  direct_->FactorizeNumeric(A);
+  factorization_seconds_ = clocks.factorization - before;
+  substitution_seconds_ = 0.0;
+  substitutions_ = 0;
+  spent_substitutions_ = 0;
+  Substitute(x, b, clocks.direct_substitution);
   SolveClocks::Scope clock(clocks.comparison);
   factorized_ = A;
   RowNorms(factorized_, factorized_row_norms_);
-  refactorize_ = false;
   last_iterations_ = 1;
 }
 
@@ -153,10 +168,7 @@ bool FactorizationReuseSolver::SolveWithKrylov(const SparseMatrix& A, Vector& x,
   rotated_rhs_.setZero(budget + 1);
 
   double& substitution = SolveClocks::Process().krylov_substitution;
-  {
-    SolveClocks::Scope clock(substitution);
-    direct_->SubstituteFactors(basis_[0], b);
-  }
+  Substitute(basis_[0], b, substitution);
   const double beta = basis_[0].norm();
   if (beta == 0.0) {
     x.setZero(n);
@@ -172,10 +184,7 @@ bool FactorizationReuseSolver::SolveWithKrylov(const SparseMatrix& A, Vector& x,
   for (int j = 0; j < budget; ++j) {
     work_.noalias() = A * basis_[j];
     Vector& w = basis_[j + 1];
-    {
-      SolveClocks::Scope clock(substitution);
-      direct_->SubstituteFactors(w, work_);
-    }
+    Substitute(w, work_, substitution);
     for (int pass = 0; pass < 2; ++pass) {
       for (int i = 0; i <= j; ++i) {
         const double h = basis_[i].dot(w);

@@ -20,33 +20,34 @@ namespace mc {
 /// substitution with the kept factors (a small fraction of a factorization).
 ///
 /// Each Solve:
-///  - no factors, factors of another size, or a refactorization requested by the previous solve:
-///    factorize A and substitute (the direct solve);
-///  - too many rows changed since the factorized matrix (changed_row_fraction): the direct solve;
+///  - no factors or factors of another size: factorize A and substitute (the direct solve);
+///  - the kept factors have used up their budget, or more rows changed since the factorized
+///    matrix (changed_row_fraction) than the budget has left: the direct solve;
 ///  - else GMRES, left-preconditioned by the factors, from x = 0. It stops when the
 ///    preconditioned residual |F^-1 (b - A x)|, which estimates the error of x since F ~ A, is
 ///    below `tolerance` times |F^-1 b| (~ |x|): the answer is the direct one to that relative
-///    accuracy. A solve that needed more than half of its budget asks for a fresh
-///    factorization at the next solve;
+///    accuracy;
 ///  - a Krylov solve that stalls (its convergence rate cannot meet the tolerance within the
-///    budget), breaks down or runs out of budget falls back to a fresh factorization of A, and
+///    budget left), breaks down or runs out of it falls back to a fresh factorization of A, and
 ///    the direct solve answers.
+/// The budget compares measured costs: the factors are kept while the substitutions GMRES has
+/// made with them (beyond the one a direct solve makes), at the measured time of a substitution,
+/// have cost less than their factorization took (so at most twice the work of the better choice
+/// in hindsight). Thread CPU times, so a loaded machine does not skew them.
 /// Singular matrices are reported by the factorization as before (SingularMatrixError).
 class FactorizationReuseSolver : public LinearSolver {
  public:
   struct Options {
     /// Relative size of the preconditioned residual that ends the Krylov solve.
-    double tolerance = 1.0e-12;
-    /// The iteration budget of a Krylov solve: this share of the cost of a factorization in
-    /// substitutions (DirectSolver::FactorizationCostInSubstitutions: about 15 for the 2D
-    /// contact systems, 40 for the 3D ones), within [min_iterations, max_iterations].
-    double budget_fraction = 0.75;
+    double tolerance = 1.0e-14;
+    /// Bounds of the budget in substitutions per factorization (the measured cost ratio): at
+    /// least a few tries, at most a GMRES basis of max_iterations vectors.
     int min_iterations = 4;
-    int max_iterations = 40;
+    int max_iterations = 60;
     /// A row of A whose change since the factorized matrix exceeds this fraction of its norm
     /// counts as changed. GMRES needs about one iteration per changed row (a rank-one change
     /// each; measured on the Hertz systems: 2 to 67 changed rows, 2 to 55 iterations), so when
-    /// they are at least the budget the solve refactorizes without trying.
+    /// they are at least the budget left the solve refactorizes without trying.
     double changed_row_fraction = 0.1;
   };
 
@@ -67,8 +68,14 @@ class FactorizationReuseSolver : public LinearSolver {
 
   WorkCounters Counters() const override;
   const DirectSolver& Direct() const noexcept { return *direct_; }
-  /// Iteration budget of a Krylov solve with the kept factors.
+  /// Substitutions a factorization is worth: its measured time over that of a substitution,
+  /// within [min_iterations, max_iterations].
   int Budget() const;
+  /// What is left of the budget of the kept factors: the iterations the next Krylov solve may take.
+  int BudgetLeft() const { return Budget() - spent_substitutions_; }
+  /// CPU seconds of the last numeric factorization, and of a substitution with its factors (mean).
+  double FactorizationSeconds() const noexcept { return factorization_seconds_; }
+  double SubstitutionSeconds() const noexcept;
   const Options& GetOptions() const noexcept { return options_; }
   /// Numeric factorizations so far.
   int FactorizationsNumber() const noexcept { return direct_->NumericFactorizationsNumber(); }
@@ -90,9 +97,15 @@ class FactorizationReuseSolver : public LinearSolver {
   bool SolveWithKrylov(const SparseMatrix& A, Vector& x, const Vector& b, int budget);
   void SolveDirect(const SparseMatrix& A, Vector& x, const Vector& b);
 
+  /// Substitutes with the kept factors, timed.
+  void Substitute(Vector& x, const Vector& b, double& clock);
+
   std::unique_ptr<DirectSolver> direct_;
   Options options_;
-  bool refactorize_ = false;
+  double factorization_seconds_ = 0.0;
+  double substitution_seconds_ = 0.0;  ///< all substitutions with the kept factors
+  int substitutions_ = 0;
+  int spent_substitutions_ = 0;  ///< by GMRES with the kept factors
   int last_iterations_ = 0;
   bool last_reused_ = false;
   int krylov_solves_ = 0;

@@ -48,12 +48,14 @@ class LinearSolver {
   virtual int IterationsNumber() const { return 1; }
   /// Work done since construction, for benchmarks and tests: numeric factorizations, solves
   /// answered by a Krylov method preconditioned with kept factors, their iterations (including
-  /// those of solves that fell back), and fallbacks to a fresh factorization.
+  /// those of solves that fell back), fallbacks to a fresh factorization, and the set-ups of a
+  /// Krylov method's preconditioner (PETSc: solves that kept the last one do not count).
   struct WorkCounters {
     long factorizations = 0;
     long krylov_solves = 0;
     long krylov_iterations = 0;
     long fallbacks = 0;
+    long preconditioner_setups = 0;
   };
   /// Zero for solvers that do not count (iterative ones); wrappers report their inner solver's.
   virtual WorkCounters Counters() const { return {}; }

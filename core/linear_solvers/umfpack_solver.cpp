@@ -42,14 +42,6 @@ static_assert(UMFPACK_CONTROL == 20, "UmfpackSolver::control_ holds UMFPACK_CONT
 /// flops; below, both orderings give about the same fill and AMD is quicker to compute.
 constexpr Eigen::Index kMetisOrderingMinEquations = 5000;
 
-/// A factorization costs about kCostScale * (flops / entries of L and U)^kCostExponent
-/// substitutions: the denser the factors, the more of the work runs in dense fronts (BLAS-3)
-/// while a substitution stays memory-bound. Fitted to CPU times with one thread on the Hertz
-/// contact systems: 2D 7k and 26k equations (89 and 137 flops per entry: 16 and 15
-/// substitutions), 3D 15k (648: 41).
-constexpr double kCostScale = 0.68;
-constexpr double kCostExponent = 0.63;
-
 /// UMFPACK's defaults except: the ordering (above), and no iterative refinement. Refinement
 /// costs two more triangular solves and a residual per solve; a Newton loop corrects the
 /// increment anyway, and on the benchmarks the solutions agree to round-off without it.
@@ -127,13 +119,6 @@ void UmfpackSolver::Factorize(const SparseMatrix& M) {
   }
   last_flops_ = info[UMFPACK_FLOPS];
   if (!ordering_kept_) fresh_flops_ = last_flops_;
-  const double entries = info[UMFPACK_LNZ] + info[UMFPACK_UNZ];
-  flops_per_factor_entry_ = entries > 0.0 ? info[UMFPACK_FLOPS] / entries : 0.0;
-}
-
-double UmfpackSolver::FactorizationCostInSubstitutions() const {
-  if (!(flops_per_factor_entry_ > 0.0)) return DirectSolver::FactorizationCostInSubstitutions();
-  return kCostScale * std::pow(flops_per_factor_entry_, kCostExponent);
 }
 
 // Without iterative refinement (UMFPACK_IRSTEP 0) umfpack_dl_solve does not read the matrix, so a

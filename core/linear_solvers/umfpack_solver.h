@@ -34,8 +34,6 @@ class UmfpackSolver : public DirectSolver {
   std::string Name() const override { return "umfpack"; }
   /// Whether the last symbolic analysis started from the ordering of the previous factors.
   bool LastAnalysisKeptOrdering() const noexcept { return ordering_kept_; }
-  /// From the flops of the factorization per entry of L and U (see the .cpp for the fit).
-  double FactorizationCostInSubstitutions() const override;
 
  private:
   /// Below this, min|U_ii| / max|U_ii| of the row-scaled factorization is round-off: a rigid-body
@@ -60,10 +58,9 @@ class UmfpackSolver : public DirectSolver {
   double kept_strategy_ = 0.0;       ///< UMFPACK_STRATEGY of the analysis that ordered the factors
   double strategy_used_ = 0.0;       ///< UMFPACK_STRATEGY_USED of the last analysis
   bool ordering_kept_ = false;
-  double fresh_flops_ = 0.0;             ///< flops of the last factorization with a fresh ordering
-  double last_flops_ = 0.0;              ///< flops of the last factorization
-  double control_[20] = {};              ///< UMFPACK_CONTROL parameters, set by Initialize
-  double flops_per_factor_entry_ = 0.0;  ///< of the last numeric factorization
+  double fresh_flops_ = 0.0;  ///< flops of the last factorization with a fresh ordering
+  double last_flops_ = 0.0;   ///< flops of the last factorization
+  double control_[20] = {};   ///< UMFPACK_CONTROL parameters, set by Initialize
 };
 
 }  // namespace mc

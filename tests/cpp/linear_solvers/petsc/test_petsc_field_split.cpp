@@ -60,6 +60,40 @@ TEST(PetscFieldSplit, ContactSystemSplitByDofsSolvesToTheDirectSolution) {
   EXPECT_LT(RelativeDifference(x, 0.5 * direct), 1e-9);
 }
 
+TEST(PetscFieldSplit, TheDisplacementMultigridIsKeptOverTheSolvesOfOnePattern) {
+  AssembledSystem<ContactSystem<3, 4, 4>> assembled(std::vector<bool>{true, false, true, true});
+  auto& [system, A, b, dofs] = assembled;
+  b.setLinSpaced(b.size(), -1.0, 2.0);
+  PetscSolver petsc(FieldSplitOptions());
+  petsc.ProvideAdditionalData(A, dofs);
+  Vector x;
+  petsc.Solve(A, x, b);
+  EXPECT_EQ(petsc.Counters().preconditioner_setups, 1);
+  const int first = petsc.IterationsNumber();
+
+  // The same matrix again: the kept multigrid costs no iteration more, so it stays.
+  const Vector c = Vector::LinSpaced(b.size(), 3.0, -1.0);
+  petsc.Solve(A, x, c);
+  EXPECT_LT(RelativeDifference(x, DirectSolution(A, c)), 1e-9);
+  EXPECT_LE(petsc.IterationsNumber(), first + 1);
+  EXPECT_EQ(petsc.Counters().preconditioner_setups, 1);
+
+  // Changed values (the contact rows of a Newton iteration): the answer is that of the new matrix.
+  SparseMatrix B = A;
+  for (Eigen::Index j = 0; j < B.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(B, j); it; ++it)
+      if (it.row() == it.col()) it.valueRef() *= 1.0 + 0.01 * static_cast<double>(j % 3);
+  petsc.Solve(B, x, b);
+  EXPECT_LT(RelativeDifference(x, DirectSolution(B, b)), 1e-9);
+  EXPECT_EQ(petsc.Counters().krylov_solves, 3);
+
+  // Another pattern is another KSP: set up afresh.
+  petsc.Clear();
+  petsc.Solve(A, x, b);
+  EXPECT_LT(RelativeDifference(x, DirectSolution(A, b)), 1e-9);
+  EXPECT_GE(petsc.Counters().preconditioner_setups, 2);
+}
+
 TEST(PetscFieldSplit, SmoothedAggregationGetsTheRigidBodyModesOfTheDisplacements) {
   AssembledSystem<ContactSystem<3, 4, 4>> assembled(std::vector<bool>{true, true, false, true});
   auto& [system, A, b, dofs] = assembled;
