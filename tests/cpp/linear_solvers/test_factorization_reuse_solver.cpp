@@ -221,10 +221,11 @@ SparseMatrix Poisson3D(int n) {
   return A;
 }
 
-TEST(FactorizationReuseSolver, TheBudgetFollowsTheCostOfTheFactorization) {
-  // 3D factors are denser than 2D ones of the same order: a factorization is worth more
-  // substitutions, so GMRES may iterate longer before refactorizing pays. The budget is the
-  // ratio of the measured times.
+TEST(FactorizationReuseSolver, TheBudgetIsTheMeasuredCostRatio) {
+  // The budget is the ratio of the measured factorization and substitution times, within the
+  // options' bounds, for 2D and 3D factors alike. (3D factors are denser, so their ratio is
+  // usually the larger; single timings of a 4096-unknown system on a shared machine do not show
+  // it reliably, so only the rule is tested here.)
   FactorizationReuseSolver planar(std::make_unique<UmfpackSolver>());
   const SparseMatrix A2 = Poisson2D(64);  // 4096 unknowns
   SolveFor(planar, A2, ManufacturedSolution(A2.rows()));
@@ -239,9 +240,6 @@ TEST(FactorizationReuseSolver, TheBudgetFollowsTheCostOfTheFactorization) {
                                            solver->GetOptions().max_iterations));
     EXPECT_EQ(solver->BudgetLeft(), solver->Budget());
   }
-  const double ratio2 = planar.FactorizationSeconds() / planar.SubstitutionSeconds();
-  const double ratio3 = solid.FactorizationSeconds() / solid.SubstitutionSeconds();
-  EXPECT_GT(ratio3, ratio2) << ratio2 << " " << ratio3;
 }
 
 TEST(FactorizationReuseSolver, CountersReportTheWork) {
