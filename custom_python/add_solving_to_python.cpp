@@ -219,7 +219,22 @@ void AddSolvingToPython(py::module_& m) {
       .def(
           "GetBuilderAndSolver",
           [](const ImplicitSolvingStrategy& s) -> BuilderAndSolver& { return s.GetBuilderAndSolver(); },
-          py::return_value_policy::reference_internal, "Its BuilderAndSolver.");
+          py::return_value_policy::reference_internal, "Its BuilderAndSolver.")
+      .def(
+          "BuildSystem",
+          [](ImplicitSolvingStrategy& s, ModelPart& part) {
+            BuilderAndSolver& b = s.GetBuilderAndSolver();
+            b.Build(s.GetScheme(), part);
+            py::list dofs;
+            for (const Dof* d : b.GetDofSet())
+              dofs.append(py::make_tuple(d->equation_id, d->node->Id(), d->variable->Name(), d->fixed));
+            return py::make_tuple(SparseMatrix(b.SystemMatrix()), Vector(b.Residual()), dofs);
+          },
+          py::arg("model_part"),
+          "Builds the system at the current state, as a Newton iteration does (the caller refreshes what the "
+          "strategy would first, e.g. the contact normals), and returns (A, b, dofs): the matrix (scipy.sparse "
+          "CSC), the residual b (A = -db/du on the free DoFs) and (equation id, node id, variable, fixed) per DoF; "
+          "for checking tangents against finite differences of the whole residual.");
   py::class_<LinearStrategy, ImplicitSolvingStrategy, std::shared_ptr<LinearStrategy>>(
       m, "LinearStrategy", "analysis_type linear: one build and solve per step (Kratos ResidualBasedLinearStrategy).")
       .def(py::init([](ModelPart& part, std::shared_ptr<Scheme> scheme, std::shared_ptr<BuilderAndSolver> builder,

@@ -145,6 +145,42 @@ def test_without_normal_variation_only_the_normal_derivatives_are_missing():
     assert 1e-6 * scale < error.max() < 1e-2 * scale
 
 
+def test_nv_global_tangent_is_the_derivative_of_the_global_residual_in_first_contact_stick():
+    """The same at the level of the whole system (ImplicitSolvingStrategy.BuildSystem): every column of
+    the contact nodes' free DoFs of the built matrix against central differences of the built residual
+    (elements, contact pairs, loads and Dirichlet rows together), the normals refreshed before each
+    build as the contact strategy does."""
+    analysis = first_contact_state("nodal_elemental_derivatives")
+    root = analysis.solver.GetComputingModelPart().GetRootModelPart()
+    strategy, updater = analysis.solver.strategy, analysis.solver.mortar_updater
+
+    def build():
+        updater.UpdateNormals(root)
+        matrix, residual, dofs = strategy.BuildSystem(root)
+        return matrix.tocsc(), np.asarray(residual), dofs
+
+    matrix, _, dofs = build()
+    contact_nodes = {node.Id for node in root.GetSubModelPart("Contact").Nodes}
+    columns = [(equation, node, name) for equation, node, name, fixed in dofs if node in contact_nodes and not fixed]
+    nodes = {node.Id: node for node in root.Nodes}
+    step, error, scale = 1e-7, 0.0, abs(matrix).max()
+    for equation, node_id, name in columns:
+        variable, node = mc.GetVariable(name), nodes[node_id]
+        value = node.GetSolutionStepValue(variable)
+        residuals = []
+        for shifted in (value + step, value - step):
+            node.SetSolutionStepValue(variable, shifted)
+            analysis.solver.strategy.MoveMesh()
+            residuals.append(build()[1])
+        node.SetSolutionStepValue(variable, value)
+        analysis.solver.strategy.MoveMesh()
+        fd = -(residuals[0] - residuals[1]) / (2.0 * step)
+        error = max(error, np.abs(matrix[:, equation].toarray().ravel() - fd).max())
+    print(f"NV: {len(columns)} columns, max |A - FD| / max |A| = {error / scale:.1e}")
+    assert len(columns) > 50
+    assert error < 1e-8 * scale
+
+
 def newton_history(normal_variation: str, steps: int):
     class History(StructuralMechanicsAnalysis):
         def FinalizeSolutionStep(self):
