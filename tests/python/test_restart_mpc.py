@@ -13,6 +13,7 @@ import shutil
 import h5py
 import numpy as np
 from test_mesh_tying import _cantilever_run
+from test_restart import checkpoint_path, resume_settings
 
 import mortarcontact as mc
 from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
@@ -20,10 +21,6 @@ from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
 from case_builder import fix_process, run_analysis, write_block_on_base
 
 STEPS = 4
-
-
-def _checkpoint(folder, label) -> str:
-    return os.path.join(folder, "Structure__restart_files", f"Structure_{label}.rest")
 
 
 class _Saving(StructuralMechanicsAnalysis):
@@ -37,8 +34,8 @@ class _Saving(StructuralMechanicsAnalysis):
             "Parameters": {"model_part_name": "Structure", "restart_control_type": "step",
                            "restart_save_frequency": 1}}]})))
         if self.resume is not None:
-            parameters["solver_settings"].AddValue("model_import_settings", mc.Parameters(json.dumps({
-                "input_type": "rest", "input_filename": "Structure", "restart_load_file_label": str(self.resume)})))
+            parameters["solver_settings"].AddValue("model_import_settings",
+                                                   mc.Parameters(json.dumps(resume_settings(self.resume))))
         super().__init__(model, parameters, **kwargs)
 
 
@@ -54,7 +51,7 @@ def _compare(folder, kept: str, whole, resumed) -> float:
     assert [entry[2] for entry in resumed.step_log] == [entry[2] for entry in whole.step_log[2:]]
     assert all(entry[3] for entry in whole.step_log + resumed.step_log)
     largest = 0.0
-    with h5py.File(kept, "r") as a, h5py.File(_checkpoint(folder, STEPS), "r") as b:
+    with h5py.File(kept, "r") as a, h5py.File(checkpoint_path(folder, STEPS), "r") as b:
         for flag in ("ACTIVE", "SLIP"):
             if f"nodes/flags/{flag}" in a:
                 assert np.array_equal(a[f"nodes/flags/{flag}"][()], b[f"nodes/flags/{flag}"][()]), flag
@@ -69,7 +66,7 @@ def _run_and_resume(folder, run):
     """run(analysis_class) -> analysis, in `folder`: the uninterrupted run, then the one resumed at step 2."""
     whole = run(_Saving)
     kept = os.path.join(folder, "uninterrupted.rest")
-    shutil.copy(_checkpoint(folder, STEPS), kept)
+    shutil.copy(checkpoint_path(folder, STEPS), kept)
     with h5py.File(kept, "r") as f:
         state = json.loads(f["solver"][()])
     return whole, run(_Resumed), kept, state
