@@ -40,7 +40,7 @@ def slip(sym, j):
     iteration the rotation of the slave normal carries the tangential residual into the gap
     equation, amplified by s / k = k / (c_tau eps) against the normal row's k: 40 with the default
     c_tau = 0.025 and k = eps. On the Cattaneo-Mindlin shift (hertz2d_2k, normal variation) Newton then
-    converged linearly (factors 0.3 to 1e-3 with exact tangents) and the last step diverged. With
+    converged linearly (factors 0.3 to 1e-3 with exact tangents) and step 7 of 8 diverged. With
     k^2/eps the slip row has the units and scale of the stick row (k s . T(wl)) and the normal
     row (k g), and Newton converges quadratically (tests/python/test_newton_convergence.py)."""
     n, s = sym.n1[j], sym.weighted_slip(j)

@@ -117,12 +117,13 @@ def test_frictional_newton_is_quadratic_once_stick_and_slip_settle(tmp_path):
     times the normal row's (ALM_frictional_mortar_condition/formulation.py says why that matters
     with Cartesian multiplier rows): approach step 2 went 1.7e-4, 5.3e-5, 1.8e-5, 7.7e-10 (order
     0.90), shift step 6 4.6e-4, 4.9e-5, 5.1e-8, 5.1e-11 (order 1.00, the sets settled after 5
-    iterations instead of 2) and step 7 diverged. There was no kink: along the Newton direction the
-    whole residual's remainder r(x + t dx) - r - t A dx was t^2 from the noise floor (t = 1e-5) to
-    t = 1, one-sided differences agreed, and the whole matrix equalled differences of the whole
-    residual but for the deliberate mean-gap correction of the multiplier rows (proportional to the
-    gap: without it the increments changed by less than 25 %). The remainder was the bilinear
-    term of the multiplier and displacement increments in the slip nodes' multiplier rows."""
+    iterations instead of 2), and in step 7 an iterate moved slave faces off the master (the run
+    stopped). There was no kink: along the Newton direction the whole residual's remainder
+    r(x + t dx) - r - t A dx was t^2 from the noise floor (t = 1e-5) to t = 1, one-sided
+    differences agreed, and the whole matrix equalled differences of the whole residual but for the
+    deliberate mean-gap correction of the multiplier rows (proportional to the gap: without it the
+    increments changed by less than 25 %). The remainder was the bilinear term of the multiplier
+    and displacement increments in the slip nodes' multiplier rows."""
     histories = run_hertz(str(tmp_path), "nodal_elemental_derivatives", "ALMContactFrictional")
     measured = [r for h in histories for r in orders(h)]
     print(f"ALMContactFrictional NV: increments {[[f'{n:.1e}' for n, _ in h] for h in histories]}; "
