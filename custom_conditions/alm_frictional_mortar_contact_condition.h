@@ -16,7 +16,7 @@ namespace mc {
 ///    (D du1 - M du2)_j; multiplier rows k g_j n_j + k T(s_j);
 ///  - slip (ACTIVE and SLIP): the Coulomb traction lbar_n (n_j - mu_j d_j), d_j the direction of
 ///    lbar_t = k T(lambda_j) + c_slip c_tau eps_j s_j; multiplier rows k g_j n_j and
-///    -k^2/(c_tau eps_j) T(k T(lambda_j) + mu_j lbar_n d_j) / k;
+///    -k^2/eps_j T(k T(lambda_j) + mu_j lbar_n d_j) / k (Kratos: k^2/(c_tau eps_j); formulation.py says why not);
 ///  - inactive: the multiplier rows are -k^2/eps_j lambda_j.
 /// The local RHS and its exact tangent are generated (automatic_differentiation/, generated/).
 template <int TDim, int TNumNodes, int TNumNodesMaster>
