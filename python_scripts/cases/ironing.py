@@ -83,7 +83,8 @@ def write_case(out_dir: str, friction: float = FRICTION, slip_augmentation: floa
              "DISPLACEMENT_bottom": {"nodes": nd + np.flatnonzero(np.abs(xs[:, 1] + SLAB_HEIGHT) < tol)},
              "Contact_slave": {"nodes": die_slave}, "Contact_master": {"nodes": nd + slab_master}}
     model_import = write_case_mesh(os.path.join(folder, f"{name}.msh"), coords,
-                                   [("SmallDisplacementElement2D3N", 1, np.vstack([cd, cs + nd]))], parts)
+                                   [("SmallDisplacementElement2D3N", 1, cd),
+                                    ("SmallDisplacementElement2D3N", len(cd) + 1, cs + nd)], parts)
     materials = {"properties": [
         {"model_part_name": f"Structure.Parts_{part}", "properties_id": pid,
          "Material": {"name": part, "constitutive_law": {"name": "LinearElasticPlaneStrain2DLaw"},
