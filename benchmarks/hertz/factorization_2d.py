@@ -28,9 +28,9 @@ import statistics
 import sys
 import time
 
-_threads = next((a.split("=", 1)[1] for a in sys.argv if a.startswith("--threads=")), "1")
-os.environ["OMP_NUM_THREADS"] = _threads  # before the BLAS that the solvers load
-os.environ["OPENBLAS_NUM_THREADS"] = _threads
+# Before the BLAS that the solvers load.
+os.environ["OMP_NUM_THREADS"] = next((a.split("=", 1)[1] for a in sys.argv if a.startswith("--threads=")), "1")
+os.environ["OPENBLAS_NUM_THREADS"] = os.environ["OMP_NUM_THREADS"]
 
 import numpy as np
 import scipy.sparse as sp
@@ -146,8 +146,9 @@ def mortarcontact_solver(A, b, settings: dict, repeat: int) -> dict:
 
 def superlu(A, b, permc: str, repeat: int) -> dict:
     runs = []
+    options = {"SymmetricMode": permc != "COLAMD"}
     for _ in range(repeat):
-        lu, seconds = timed(lambda: spla.splu(A, permc_spec=permc, options={"SymmetricMode": permc != "COLAMD"}))
+        lu, seconds = timed(lambda: spla.splu(A, permc_spec=permc, options=options))
         runs.append(seconds)
     x, solve = timed(lambda: lu.solve(b))
     return {"status": "ok", "first": statistics.median(runs), "again": None, "solve": solve,
@@ -164,7 +165,8 @@ def findings(umf: dict) -> str:
         f"{metis['fill'] / amd['fill']:.2f} x the fill, {metis['numeric'] / amd['numeric']:.2f} x the numeric time, "
         f"{metis['symbolic'] / amd['symbolic']:.1f} x the symbolic time.",
         f"- Multiplier rows: the whole matrix against its displacement block (METIS), "
-        f"{metis['numeric'] / block['numeric']:.2f} x the numeric time, {metis['fill'] / block['fill']:.2f} x the fill; "
+        f"{metis['numeric'] / block['numeric']:.2f} x the numeric time, "
+        f"{metis['fill'] / block['fill']:.2f} x the fill; "
         f"the unsymmetric strategy (pivoting off the diagonal) would cost {unsym['flops'] / metis['flops']:.1f} x "
         "the flops of the symmetric one UMFPACK chooses.",
         f"- BLAS rate of the numeric factorization (METIS): {metis['flops'] / metis['numeric'] / 1e9:.1f} GFlop/s "
@@ -260,7 +262,8 @@ def main() -> int:
             f"process, OMP_NUM_THREADS={args.threads}, medians of {args.repeat}; fill: nnz(L + U) less the "
             "diagonal counted twice.\n\n"
             f"Machine: {harness.machine_line(int(args.threads))}. BLAS: "
-            + ", ".join(f"`{p}`" for p in blas_libraries()) + ".\n\n" + "\n".join(lines) + "\n\n" + findings(umf) + "\n")
+            + ", ".join(f"`{p}`" for p in blas_libraries()) + ".\n\n" + "\n".join(lines) + "\n\n"
+            + findings(umf) + "\n")
     harness.write_report(args.output, text)
     return 0
 
