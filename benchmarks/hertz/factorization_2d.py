@@ -16,7 +16,8 @@ OMP_NUM_THREADS=1 unless --threads), each sparse direct solver on it:
 Medians of --repeat. Writes benchmarks/hertz/results_factorization_2d.md.
 
     python benchmarks/hertz/factorization_2d.py                      # hertz2d_30k
-    python benchmarks/hertz/factorization_2d.py --case hertz2d_250k --repeat 1
+    python benchmarks/hertz/factorization_2d.py --case hertz2d_250k --repeat 1 \
+        --output benchmarks/hertz/results_factorization_2d_250k.md
 """
 from __future__ import annotations
 
@@ -38,6 +39,8 @@ import scipy.sparse.linalg as spla
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
+import linear_solvers
+
 import harness
 
 # UMFPACK's C interface (suitesparse/umfpack.h): control and info indices.
@@ -50,17 +53,7 @@ STRATEGIES = {"auto": 0, "unsymmetric": 1, "symmetric": 3}
 
 def newton_matrix(folder: str):
     """(A, dofs) of the converged first load step: the matrix the next Newton iteration factorizes."""
-    import mortarcontact as mc
-    from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
-    from mortarcontact.project_parameters import read_project_parameters
-
-    params = read_project_parameters(os.path.join(folder, "ProjectParameters.json"))
-    problem = params["problem_data"]
-    step = params["solver_settings"]["time_stepping"]["time_step"].GetDouble()
-    problem["end_time"].SetDouble(problem["start_time"].GetDouble() + step)
-    analysis = StructuralMechanicsAnalysis(mc.Model(), params, progress=False, case_dir=folder)
-    analysis.Initialize()
-    analysis.RunSolutionLoop()
+    analysis = linear_solvers.first_step_analysis(folder)
     root = analysis.solver.GetComputingModelPart().GetRootModelPart()
     analysis.solver.mortar_updater.UpdateNormals(root)
     A, _, dofs = analysis.solver.strategy.BuildSystem(root)

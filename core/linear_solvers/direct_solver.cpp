@@ -42,6 +42,7 @@ void DirectSolver::FactorizeNumeric(const SparseMatrix& A) {
     std::vector<long> new_of_old;
     if (has_factors_ && MapEquations(M->rows(), new_of_old)) KeepOrderingForNextAnalysis(new_of_old);
     Initialize(*M);
+    if (AnalysisKeptOrdering()) ++kept_orderings_;
   }
   has_factors_ = false;
   {
@@ -56,15 +57,16 @@ void DirectSolver::FactorizeNumeric(const SparseMatrix& A) {
 
 void DirectSolver::ProvideAdditionalData(const SparseMatrix& A, const std::vector<Dof*>& dof_of_equation) {
   equations_.clear();
-  if (static_cast<Eigen::Index>(dof_of_equation.size()) != A.rows()) return;  // not one DoF per row
-  equations_.reserve(dof_of_equation.size());
-  for (const Dof* dof : dof_of_equation) equations_.emplace_back(static_cast<long>(dof->node->Id()), dof->variable);
+  if (static_cast<Eigen::Index>(dof_of_equation.size()) < A.rows()) return;  // not a DoF per row
+  equations_.reserve(static_cast<std::size_t>(A.rows()));
+  for (Eigen::Index i = 0; i < A.rows(); ++i)
+    equations_.emplace_back(static_cast<long>(dof_of_equation[i]->node->Id()), dof_of_equation[i]->variable);
 }
 
 bool DirectSolver::MapEquations(long rows, std::vector<long>& new_of_old) const {
   new_of_old.clear();
-  const bool known = static_cast<long>(equations_.size()) == rows &&
-                     static_cast<long>(factored_equations_.size()) == factors_size_;
+  const bool known =
+      static_cast<long>(equations_.size()) == rows && static_cast<long>(factored_equations_.size()) == factors_size_;
   if (!known || equations_ == factored_equations_) return factors_size_ == rows;
   struct KeyHash {
     std::size_t operator()(const EquationKey& k) const noexcept {

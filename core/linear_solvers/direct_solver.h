@@ -41,7 +41,11 @@ class DirectSolver : public LinearSolver {
   int SymbolicAnalysesNumber() const noexcept { return symbolic_count_; }
   /// Numeric factorizations run so far.
   int NumericFactorizationsNumber() const noexcept { return numeric_count_; }
-  WorkCounters Counters() const override { return {.factorizations = numeric_count_}; }
+  /// Symbolic analyses that started from the ordering of the factors held.
+  int KeptOrderingsNumber() const noexcept { return kept_orderings_; }
+  WorkCounters Counters() const override {
+    return {.factorizations = numeric_count_, .kept_orderings = kept_orderings_};
+  }
 
   /// The DoF (node and variable) of each equation, so that a pattern of another order than the
   /// factors held (contact multipliers added or removed at a new step) is still analysed from
@@ -67,6 +71,8 @@ class DirectSolver : public LinearSolver {
   /// to that of the new pattern (-1: gone); empty when the equations are the same. Not called
   /// after Clear.
   virtual void KeepOrderingForNextAnalysis(const std::vector<long>& new_of_old) {}
+  /// Whether the last analysis used the ordering kept by KeepOrderingForNextAnalysis.
+  virtual bool AnalysisKeptOrdering() const { return false; }
 
  private:
   /// The equations of the new pattern for those of the factors (see KeepOrderingForNextAnalysis);
@@ -83,6 +89,7 @@ class DirectSolver : public LinearSolver {
   SparseMatrix compressed_;
   int symbolic_count_ = 0;
   int numeric_count_ = 0;
+  int kept_orderings_ = 0;
   bool has_factors_ = false;
   long factors_size_ = -1;
 };

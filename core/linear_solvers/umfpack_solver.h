@@ -49,6 +49,7 @@ class UmfpackSolver : public DirectSolver {
   void Substitute(Vector& x, const Vector& b) override;
   void Release() override;
   void KeepOrderingForNextAnalysis(const std::vector<long>& new_of_old) override;
+  bool AnalysisKeptOrdering() const override { return ordering_kept_; }
   long SmallestPivotColumn() const;
   void FreeNumeric();
 
@@ -59,8 +60,8 @@ class UmfpackSolver : public DirectSolver {
   /// Column ordering for the next analysis (empty: compute one); without the new equations when
   /// the order changed, which the analysis places.
   std::vector<long> kept_ordering_;
-  double kept_strategy_ = 0.0;       ///< UMFPACK_STRATEGY of the analysis that ordered the factors
-  double strategy_used_ = 0.0;       ///< UMFPACK_STRATEGY_USED of the last analysis
+  double kept_strategy_ = 0.0;  ///< UMFPACK_STRATEGY of the analysis that ordered the factors
+  double strategy_used_ = 0.0;  ///< UMFPACK_STRATEGY_USED of the last analysis
   bool ordering_kept_ = false;
   double fresh_flops_ = 0.0;  ///< flops of the last factorization with a fresh ordering
   double last_flops_ = 0.0;   ///< flops of the last factorization

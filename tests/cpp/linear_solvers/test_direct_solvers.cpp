@@ -14,6 +14,7 @@
 
 #include "core/linear_solvers/cholmod_solver.h"
 #include "core/linear_solvers/eigen_sparse_lu_solver.h"
+#include "core/linear_solvers/factorization_reuse_solver.h"
 #include "core/linear_solvers/fallback_solver.h"
 #include "core/linear_solvers/klu_solver.h"
 #include "core/linear_solvers/scaling_solver.h"
@@ -168,7 +169,8 @@ GrownSystem InsertEquation(const SparseMatrix& A, const std::vector<Dof*>& dofs,
   const auto shifted = [at](long i) { return i < at ? i : i + 1; };
   std::vector<Eigen::Triplet<double>> entries;
   for (Eigen::Index j = 0; j < A.outerSize(); ++j)
-    for (SparseMatrix::InnerIterator it(A, j); it; ++it) entries.emplace_back(shifted(it.row()), shifted(j), it.value());
+    for (SparseMatrix::InnerIterator it(A, j); it; ++it)
+      entries.emplace_back(shifted(it.row()), shifted(j), it.value());
   for (const long neighbour : {at - 1, at + 1}) {
     entries.emplace_back(at, neighbour, -1.0);
     entries.emplace_back(neighbour, at, -1.0);
@@ -218,6 +220,16 @@ TEST(DirectSolvers, UmfpackMapsTheOrderingOfItsFactorsOntoTheEquationsOfAGrownSy
   const Vector exact_a = ManufacturedSolution(A.rows());
   umfpack.SubstituteFactors(x, A * exact_a);
   EXPECT_LT(RelativeError(x, exact_a), 1e-10);
+
+  // The same through the solver kept across solves, which passes the DoFs on.
+  FactorizationReuseSolver reuse(std::make_unique<UmfpackSolver>());
+  EXPECT_TRUE(reuse.AdditionalPhysicalDataIsNeeded());
+  reuse.ProvideAdditionalData(A, dofs);
+  reuse.Solve(A, x, A * exact_a);
+  reuse.ProvideAdditionalData(grown.matrix, grown.dofs);
+  reuse.Solve(grown.matrix, x, grown.matrix * exact);
+  EXPECT_EQ(reuse.Counters().kept_orderings, 1);
+  EXPECT_LT(RelativeError(x, exact), 1e-10);
 
   UmfpackSolver without_dofs;
   without_dofs.FactorizeNumeric(A);
