@@ -86,6 +86,7 @@ bench: install
 	$(PYTHON) benchmarks/hertz/linear_phase.py --cases hertz2d_8k,hertz2d_30k,hertz3d_15k,hertz3dgrid_15k
 	$(PYTHON) benchmarks/hertz/wait_policy.py
 	$(PYTHON) benchmarks/hertz/linear_solvers.py
+	$(PYTHON) benchmarks/hertz/factorization_2d.py
 	$(PYTHON) benchmarks/hertz/contact_scaling.py
 	$(PYTHON) benchmarks/structural_parity/run.py
 	$(PYTHON) benchmarks/kratos_cases/frictional_iterations.py

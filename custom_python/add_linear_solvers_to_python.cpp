@@ -32,10 +32,11 @@ void AddLinearSolversToPython(py::module_& m) {
             const LinearSolver::WorkCounters c = solver.Counters();
             return py::dict(py::arg("factorizations") = c.factorizations, py::arg("krylov_solves") = c.krylov_solves,
                             py::arg("krylov_iterations") = c.krylov_iterations, py::arg("fallbacks") = c.fallbacks,
-                            py::arg("preconditioner_setups") = c.preconditioner_setups);
+                            py::arg("preconditioner_setups") = c.preconditioner_setups,
+                            py::arg("kept_orderings") = c.kept_orderings);
           },
           "Work done so far: numeric factorizations, Krylov solves with kept factors, their iterations, fallbacks to "
-          "a fresh factorization.")
+          "a fresh factorization, symbolic analyses from the ordering of the factors held (kept_orderings).")
       .def(
           "Processes",
           [](const LinearSolver& solver) {

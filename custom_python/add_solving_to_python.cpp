@@ -112,7 +112,8 @@ void AddSolvingToPython(py::module_& m) {
             if (b.GetLinearSolver() != nullptr) c = b.GetLinearSolver()->Counters();
             return py::dict(py::arg("factorizations") = c.factorizations, py::arg("krylov_solves") = c.krylov_solves,
                             py::arg("krylov_iterations") = c.krylov_iterations, py::arg("fallbacks") = c.fallbacks,
-                            py::arg("preconditioner_setups") = c.preconditioner_setups);
+                            py::arg("preconditioner_setups") = c.preconditioner_setups,
+                            py::arg("kept_orderings") = c.kept_orderings);
           },
           "Work of its linear solver so far (LinearSolver.Counters).")
       .def("ResetLinearSolver", &BuilderAndSolver::ResetLinearSolver,

@@ -42,8 +42,8 @@ SOLVERS = (
 )
 
 
-def contact_system(folder: str):
-    """The last Newton system of the case's first load step, with contact active."""
+def first_step_analysis(folder: str):
+    """The case's analysis after its first load step (contact active), not finalized yet."""
     import mortarcontact as mc
     from mortarcontact.analysis_stage import StructuralMechanicsAnalysis
     from mortarcontact.project_parameters import read_project_parameters
@@ -55,6 +55,12 @@ def contact_system(folder: str):
     analysis = StructuralMechanicsAnalysis(mc.Model(), params, progress=False, case_dir=folder)
     analysis.Initialize()
     analysis.RunSolutionLoop()
+    return analysis
+
+
+def contact_system(folder: str):
+    """The last Newton system of the case's first load step, with contact active."""
+    analysis = first_step_analysis(folder)
     A = analysis.solver.strategy.GetBuilderAndSolver().GetSystemMatrix().tocsc()  # Finalize frees it
     analysis.Finalize()
     return A

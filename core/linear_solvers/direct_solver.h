@@ -2,6 +2,8 @@
 #pragma once
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "core/linear_solvers/linear_solver.h"
 #include "core/linear_solvers/sparse_pattern.h"
@@ -39,7 +41,17 @@ class DirectSolver : public LinearSolver {
   int SymbolicAnalysesNumber() const noexcept { return symbolic_count_; }
   /// Numeric factorizations run so far.
   int NumericFactorizationsNumber() const noexcept { return numeric_count_; }
-  WorkCounters Counters() const override { return {.factorizations = numeric_count_}; }
+  /// Symbolic analyses that started from the ordering of the factors held.
+  int KeptOrderingsNumber() const noexcept { return kept_orderings_; }
+  WorkCounters Counters() const override {
+    return {.factorizations = numeric_count_, .kept_orderings = kept_orderings_};
+  }
+
+  /// The DoF (node and variable) of each equation, so that a pattern of another order than the
+  /// factors held (contact multipliers added or removed at a new step) is still analysed from
+  /// their ordering, mapped equation by equation. Without it, only a pattern of the same order is.
+  bool AdditionalPhysicalDataIsNeeded() const override { return true; }
+  void ProvideAdditionalData(const SparseMatrix& A, const std::vector<Dof*>& dof_of_equation) override;
 
  protected:
   /// `library` names the solver in error messages ("UMFPACK").
@@ -54,16 +66,30 @@ class DirectSolver : public LinearSolver {
   virtual void Substitute(Vector& x, const Vector& b) = 0;
   /// Frees the library's symbolic and numeric objects (no-op when there are none).
   virtual void Release() = 0;
-  /// Called before the analysis of a new pattern of the same order as the factors held: a solver
-  /// may keep their column ordering for that analysis (UMFPACK). Not called after Clear.
-  virtual void KeepOrderingForNextAnalysis() {}
+  /// Called before the analysis of a new pattern when factors are held: a solver may keep their
+  /// column ordering for that analysis (UMFPACK). `new_of_old` maps each equation of the factors
+  /// to that of the new pattern (-1: gone); empty when the equations are the same. Not called
+  /// after Clear.
+  virtual void KeepOrderingForNextAnalysis(const std::vector<long>& new_of_old) {}
+  /// Whether the last analysis used the ordering kept by KeepOrderingForNextAnalysis.
+  virtual bool AnalysisKeptOrdering() const { return false; }
 
  private:
+  /// The equations of the new pattern for those of the factors (see KeepOrderingForNextAnalysis);
+  /// false when they cannot be related (no DoFs provided and another order).
+  bool MapEquations(long rows, std::vector<long>& new_of_old) const;
+
+  /// Node id and variable of an equation.
+  using EquationKey = std::pair<long, const void*>;
+
   std::string library_;
+  std::vector<EquationKey> equations_;           ///< of the last ProvideAdditionalData
+  std::vector<EquationKey> factored_equations_;  ///< of the factors held
   SparsePattern pattern_;
   SparseMatrix compressed_;
   int symbolic_count_ = 0;
   int numeric_count_ = 0;
+  int kept_orderings_ = 0;
   bool has_factors_ = false;
   long factors_size_ = -1;
 };

@@ -78,7 +78,8 @@ LinearSolver::WorkCounters FactorizationReuseSolver::Counters() const {
   return {.factorizations = direct_->NumericFactorizationsNumber(),
           .krylov_solves = krylov_solves_,
           .krylov_iterations = krylov_iterations_,
-          .fallbacks = fallbacks_};
+          .fallbacks = fallbacks_,
+          .kept_orderings = direct_->KeptOrderingsNumber()};
 }
 
 double FactorizationReuseSolver::SubstitutionSeconds() const noexcept {

@@ -61,6 +61,11 @@ class FactorizationReuseSolver : public LinearSolver {
   /// Records the pattern; the kept factors stay valid as a preconditioner of the new pattern.
   void Initialize(const SparseMatrix& A) override;
   void Solve(const SparseMatrix& A, Vector& x, const Vector& b) override;
+  /// The direct solver's: the DoFs of the equations relate a new pattern to the kept ordering.
+  bool AdditionalPhysicalDataIsNeeded() const override { return direct_->AdditionalPhysicalDataIsNeeded(); }
+  void ProvideAdditionalData(const SparseMatrix& A, const std::vector<Dof*>& dof_of_equation) override {
+    direct_->ProvideAdditionalData(A, dof_of_equation);
+  }
   /// Frees the factors and the Krylov basis.
   void Clear() override;
   /// GMRES iterations of the last solve (1 for a direct solve).

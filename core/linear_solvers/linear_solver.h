@@ -56,6 +56,7 @@ class LinearSolver {
     long krylov_iterations = 0;
     long fallbacks = 0;
     long preconditioner_setups = 0;
+    long kept_orderings = 0;  ///< symbolic analyses from the ordering of the factors held (UMFPACK)
   };
   /// Zero for solvers that do not count (iterative ones); wrappers report their inner solver's.
   virtual WorkCounters Counters() const { return {}; }

@@ -51,6 +51,37 @@ void SetControl(double (&control)[UMFPACK_CONTROL], Eigen::Index equations) {
   if (equations >= kMetisOrderingMinEquations) control[UMFPACK_ORDERING] = UMFPACK_ORDERING_METIS;
 }
 
+/// `ordering` (a column ordering of some of M's columns) completed with the others, each placed
+/// right after the last of its neighbours (the rows of its column) already ordered: eliminated
+/// once they are, it adds about as little fill as it can without reordering the rest. False when
+/// `ordering` is not a partial permutation of M's columns.
+bool CompleteOrdering(const SparseMatrix& M, std::vector<long>& ordering) {
+  const Eigen::Index n = M.cols();
+  if (static_cast<Eigen::Index>(ordering.size()) > n) return false;
+  std::vector<long> position(static_cast<std::size_t>(n), -1);
+  for (std::size_t k = 0; k < ordering.size(); ++k) {
+    const long column = ordering[k];
+    if (column < 0 || column >= n || position[column] >= 0) return false;
+    position[column] = static_cast<long>(k);
+  }
+  if (static_cast<Eigen::Index>(ordering.size()) == n) return true;
+  // Sort key: 2 k for the k-th ordered column, 2 k + 1 for a new one after the ordered column k.
+  std::vector<std::pair<long, long>> keyed;
+  keyed.reserve(static_cast<std::size_t>(n));
+  for (std::size_t k = 0; k < ordering.size(); ++k) keyed.emplace_back(2 * static_cast<long>(k), ordering[k]);
+  const long last = static_cast<long>(ordering.size()) - 1;
+  for (Eigen::Index j = 0; j < n; ++j) {
+    if (position[j] >= 0) continue;
+    long after = -1;
+    for (SparseMatrix::InnerIterator it(M, j); it; ++it) after = std::max(after, position[it.row()]);
+    keyed.emplace_back(2 * (after < 0 ? last : after) + 1, static_cast<long>(j));
+  }
+  std::stable_sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  ordering.resize(static_cast<std::size_t>(n));
+  for (std::size_t k = 0; k < keyed.size(); ++k) ordering[k] = keyed[k].second;
+  return true;
+}
+
 }  // namespace
 
 UmfpackSolver::UmfpackSolver() : DirectSolver("UMFPACK") { SuiteSparseMemory::Install(); }
@@ -64,7 +95,7 @@ void UmfpackSolver::Analyze(const SparseMatrix& M) {
   double info[UMFPACK_INFO];
   std::vector<long> ordering;
   ordering.swap(kept_ordering_);
-  ordering_kept_ = static_cast<Eigen::Index>(ordering.size()) == M.cols();
+  ordering_kept_ = !ordering.empty() && CompleteOrdering(M, ordering);
   if (ordering_kept_) {
     // Without its strategy the symmetric ordering would be postordered as an unsymmetric one,
     // with row pivoting off the diagonal: 10 times the flops on hertz2d_30k.
@@ -131,16 +162,20 @@ void UmfpackSolver::Substitute(Vector& x, const Vector& b) {
     throw SolutionError(Concat("UMFPACK solve failed: ", UmfpackStatusText(solve_status)));
 }
 
-void UmfpackSolver::KeepOrderingForNextAnalysis() {
+void UmfpackSolver::KeepOrderingForNextAnalysis(const std::vector<long>& new_of_old) {
   kept_ordering_.clear();
   if (last_flops_ > kMaxFlopsGrowth * fresh_flops_) return;  // the ordering has aged: a fresh one
   kept_strategy_ = strategy_used_;
   SuiteSparse_long n_row = 0, n_col = 0, nz_diag = 0, lnz = 0, unz = 0, recip = 0;
   if (numeric_ == nullptr || umfpack_dl_get_lunz(&lnz, &unz, &n_row, &n_col, &nz_diag, numeric_) != UMFPACK_OK) return;
+  if (!new_of_old.empty() && static_cast<SuiteSparse_long>(new_of_old.size()) != n_col) return;
   std::vector<SuiteSparse_long> q(static_cast<std::size_t>(n_col));
   if (umfpack_dl_get_numeric(nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, q.data(), nullptr, &recip,
                              nullptr, numeric_) == UMFPACK_OK)
-    kept_ordering_.assign(q.begin(), q.end());
+    for (const SuiteSparse_long column : q) {
+      const long kept = new_of_old.empty() ? static_cast<long>(column) : new_of_old[static_cast<std::size_t>(column)];
+      if (kept >= 0) kept_ordering_.push_back(kept);
+    }
 }
 
 // The diagonal of U in pivot order, with the column permutation Q, gives the original column of

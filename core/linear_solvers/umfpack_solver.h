@@ -12,8 +12,10 @@ namespace mc {
 /// analysis is the column ordering; `Solve` factorizes the current values and solves (no
 /// iterative refinement).
 ///
-/// A new pattern of the same order as the factors held (the contact pairs changed at a new step)
-/// is analysed from the column ordering of those factors, with the strategy (symmetric or not)
+/// A new pattern (the contact pairs changed at a new step) is analysed from the column ordering
+/// of the factors held, its equations mapped to the new ones by their DoFs when the order changed
+/// (contact multipliers added or removed; a new equation is placed right after the last of its
+/// neighbours in that ordering), with the strategy (symmetric or not)
 /// of the analysis that ordered them, instead of a fresh METIS / AMD ordering: the patterns differ
 /// only at the interface, so the ordering stays about as good (hertz2d_30k, steps 2-4: factor
 /// flops +11 % to -12 % of a fresh ordering's) while the analysis takes a fifth of the time (the
@@ -46,7 +48,8 @@ class UmfpackSolver : public DirectSolver {
   void Factorize(const SparseMatrix& A) override;
   void Substitute(Vector& x, const Vector& b) override;
   void Release() override;
-  void KeepOrderingForNextAnalysis() override;
+  void KeepOrderingForNextAnalysis(const std::vector<long>& new_of_old) override;
+  bool AnalysisKeptOrdering() const override { return ordering_kept_; }
   long SmallestPivotColumn() const;
   void FreeNumeric();
 
@@ -54,9 +57,11 @@ class UmfpackSolver : public DirectSolver {
   void* numeric_ = nullptr;
   std::vector<long> outer_;  ///< column pointers and row indices widened for umfpack_dl_*
   std::vector<long> inner_;
-  std::vector<long> kept_ordering_;  ///< column ordering for the next analysis (empty: compute one)
-  double kept_strategy_ = 0.0;       ///< UMFPACK_STRATEGY of the analysis that ordered the factors
-  double strategy_used_ = 0.0;       ///< UMFPACK_STRATEGY_USED of the last analysis
+  /// Column ordering for the next analysis (empty: compute one); without the new equations when
+  /// the order changed, which the analysis places.
+  std::vector<long> kept_ordering_;
+  double kept_strategy_ = 0.0;  ///< UMFPACK_STRATEGY of the analysis that ordered the factors
+  double strategy_used_ = 0.0;  ///< UMFPACK_STRATEGY_USED of the last analysis
   bool ordering_kept_ = false;
   double fresh_flops_ = 0.0;  ///< flops of the last factorization with a fresh ordering
   double last_flops_ = 0.0;   ///< flops of the last factorization

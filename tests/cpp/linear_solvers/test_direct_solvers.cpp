@@ -2,21 +2,27 @@
 // Linear solvers area: the direct solvers (UMFPACK, KLU, CHOLMOD, Eigen SparseLU, scaling and
 // fallback wrappers) reach the manufactured solution of SPD and non-symmetric systems to 1e-10,
 // reuse the symbolic analysis when only values change, and name the equation of a zero pivot;
-// UMFPACK analyses a new pattern from the ordering of its factors and reuses their memory.
+// UMFPACK analyses a new pattern from the ordering of its factors (mapped by DoF onto the equations
+// of a system of another order) and reuses their memory.
 #include <gtest/gtest.h>
 #include <suitesparse/SuiteSparse_config.h>
 
 #include <cstring>
 #include <functional>
 #include <memory>
+#include <vector>
 
 #include "core/linear_solvers/cholmod_solver.h"
 #include "core/linear_solvers/eigen_sparse_lu_solver.h"
+#include "core/linear_solvers/factorization_reuse_solver.h"
 #include "core/linear_solvers/fallback_solver.h"
 #include "core/linear_solvers/klu_solver.h"
 #include "core/linear_solvers/scaling_solver.h"
 #include "core/linear_solvers/suitesparse_memory.h"
 #include "core/linear_solvers/umfpack_solver.h"
+#include "core/model/dof.h"
+#include "core/model/node.h"
+#include "core/variables/kernel_variables.h"
 #include "test_matrices.h"
 
 namespace mc {
@@ -149,6 +155,87 @@ TEST(DirectSolvers, UmfpackAnalysesANewPatternFromTheOrderingOfItsFactors) {
   umfpack.FactorizeNumeric(A);
   EXPECT_FALSE(umfpack.LastAnalysisKeptOrdering());
   umfpack.SubstituteFactors(x, A * exact);
+  EXPECT_LT(RelativeError(x, exact), 1e-10);
+}
+
+// A with one equation inserted before equation `at` (a new contact multiplier: all later
+// equations shift by one), coupled to the equations at and at - 1 of A, and the DoFs of the rows.
+struct GrownSystem {
+  SparseMatrix matrix;
+  std::vector<Dof*> dofs;
+};
+
+GrownSystem InsertEquation(const SparseMatrix& A, const std::vector<Dof*>& dofs, Dof* inserted, long at) {
+  const auto shifted = [at](long i) { return i < at ? i : i + 1; };
+  std::vector<Eigen::Triplet<double>> entries;
+  for (Eigen::Index j = 0; j < A.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(A, j); it; ++it)
+      entries.emplace_back(shifted(it.row()), shifted(j), it.value());
+  for (const long neighbour : {at - 1, at + 1}) {
+    entries.emplace_back(at, neighbour, -1.0);
+    entries.emplace_back(neighbour, at, -1.0);
+  }
+  entries.emplace_back(at, at, 4.0);
+  GrownSystem grown{SparseMatrix(A.rows() + 1, A.cols() + 1), dofs};
+  grown.matrix.setFromTriplets(entries.begin(), entries.end());
+  grown.matrix.makeCompressed();
+  grown.dofs.insert(grown.dofs.begin() + at, inserted);
+  return grown;
+}
+
+// A new pattern of another order (contact multipliers added at a new step, equations renumbered):
+// with the DoFs of the equations, UMFPACK maps the ordering of its factors onto the new equations
+// and places the new one; the solve is exact. Without them it cannot relate the two and orders
+// afresh.
+TEST(DirectSolvers, UmfpackMapsTheOrderingOfItsFactorsOntoTheEquationsOfAGrownSystem) {
+  const SparseMatrix A = ConvectionDiffusion2D(kGrid);
+  VariablesList variables;
+  variables.Add(TEMPERATURE);
+  std::vector<std::unique_ptr<Node>> nodes;
+  std::vector<Dof> dof_storage(static_cast<std::size_t>(A.rows()) + 1);
+  std::vector<Dof*> dofs;
+  for (std::size_t i = 0; i < dof_storage.size(); ++i) {
+    nodes.push_back(std::make_unique<Node>(static_cast<IndexType>(i + 1), Array3::Zero(), variables, 1));
+    dof_storage[i].node = nodes.back().get();
+    dof_storage[i].variable = &TEMPERATURE;
+    if (i < static_cast<std::size_t>(A.rows())) dofs.push_back(&dof_storage[i]);
+  }
+  const GrownSystem grown = InsertEquation(A, dofs, &dof_storage.back(), kGrid * kGrid / 2);
+  const Vector exact = ManufacturedSolution(grown.matrix.rows());
+  Vector x;
+
+  UmfpackSolver umfpack;
+  umfpack.ProvideAdditionalData(A, dofs);
+  umfpack.FactorizeNumeric(A);
+  EXPECT_FALSE(umfpack.LastAnalysisKeptOrdering());
+  umfpack.ProvideAdditionalData(grown.matrix, grown.dofs);
+  umfpack.FactorizeNumeric(grown.matrix);
+  EXPECT_TRUE(umfpack.LastAnalysisKeptOrdering());
+  umfpack.SubstituteFactors(x, grown.matrix * exact);
+  EXPECT_LT(RelativeError(x, exact), 1e-10);
+  // And back: the new equation removed again.
+  umfpack.ProvideAdditionalData(A, dofs);
+  umfpack.FactorizeNumeric(A);
+  EXPECT_TRUE(umfpack.LastAnalysisKeptOrdering());
+  const Vector exact_a = ManufacturedSolution(A.rows());
+  umfpack.SubstituteFactors(x, A * exact_a);
+  EXPECT_LT(RelativeError(x, exact_a), 1e-10);
+
+  // The same through the solver kept across solves, which passes the DoFs on.
+  FactorizationReuseSolver reuse(std::make_unique<UmfpackSolver>());
+  EXPECT_TRUE(reuse.AdditionalPhysicalDataIsNeeded());
+  reuse.ProvideAdditionalData(A, dofs);
+  reuse.Solve(A, x, A * exact_a);
+  reuse.ProvideAdditionalData(grown.matrix, grown.dofs);
+  reuse.Solve(grown.matrix, x, grown.matrix * exact);
+  EXPECT_EQ(reuse.Counters().kept_orderings, 1);
+  EXPECT_LT(RelativeError(x, exact), 1e-10);
+
+  UmfpackSolver without_dofs;
+  without_dofs.FactorizeNumeric(A);
+  without_dofs.FactorizeNumeric(grown.matrix);
+  EXPECT_FALSE(without_dofs.LastAnalysisKeptOrdering());
+  without_dofs.SubstituteFactors(x, grown.matrix * exact);
   EXPECT_LT(RelativeError(x, exact), 1e-10);
 }
 
