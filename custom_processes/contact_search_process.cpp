@@ -403,29 +403,42 @@ void ContactSearchProcess::AssignAutomaticRoles(const std::vector<Condition*>& c
     }
 }
 
-std::size_t ContactSearchProcess::BodyOf(const Condition& condition) {
-  if (body_of_node_.empty()) {
-    // Union-find over the nodes of each element: the bodies are the connected sets of elements.
-    std::unordered_map<const Node*, std::size_t> index;
-    for (const Element* element : root_.Elements())
-      for (const Node* node : element->GetGeometry().Nodes()) index.emplace(node, index.size());
-    DisjointSets bodies(index.size());
-    for (const Element* element : root_.Elements()) {
-      const Geometry& geometry = element->GetGeometry();
-      for (std::size_t k = 1; k < geometry.PointsNumber(); ++k)
-        bodies.Join(index.at(&geometry[k]), index.at(&geometry[0]));
-    }
-    std::unordered_map<std::size_t, std::size_t> numbers;
-    for (const auto& [node, i] : index)
-      body_of_node_.emplace(node, numbers.emplace(bodies.Find(i), numbers.size()).first->second);
+void ContactSearchProcess::FindBodies() {
+  // Union-find over the nodes of each element: the bodies are the connected sets of elements.
+  std::unordered_map<const Node*, std::size_t> index;
+  for (const Element* element : root_.Elements())
+    for (const Node* node : element->GetGeometry().Nodes()) index.emplace(node, index.size());
+  DisjointSets bodies(index.size());
+  for (const Element* element : root_.Elements()) {
+    const Geometry& geometry = element->GetGeometry();
+    for (std::size_t k = 1; k < geometry.PointsNumber(); ++k)
+      bodies.Join(index.at(&geometry[k]), index.at(&geometry[0]));
   }
+  std::unordered_map<std::size_t, std::size_t> numbers;
+  body_of_node_.clear();
+  for (const auto& [node, i] : index)
+    body_of_node_.emplace(node, numbers.emplace(bodies.Find(i), numbers.size()).first->second);
+  bodiless_offset_ = body_of_node_.size();
+  // Only the faces' first nodes are looked up: kept alone, no pointer outlives a cut of the model
+  // across the ranks (the interface is replicated, the rest mostly destroyed).
+  std::unordered_map<const Node*, std::size_t> of_faces;
+  for (const Condition* condition : interface_.Conditions())
+    if (const auto it = body_of_node_.find(&condition->GetGeometry()[0]); it != body_of_node_.end())
+      of_faces.emplace(*it);
+  body_of_node_ = std::move(of_faces);
+  bodies_found_ = true;
+}
+
+std::size_t ContactSearchProcess::BodyOf(const Condition& condition) {
+  if (!bodies_found_) FindBodies();
   // A face whose nodes belong to no element (a contact surface without a body) is a body of its own.
   const auto it = body_of_node_.find(&condition.GetGeometry()[0]);
-  return it != body_of_node_.end() ? it->second : body_of_node_.size() + condition.Id();
+  return it != body_of_node_.end() ? it->second : bodiless_offset_ + condition.Id();
 }
 
 void ContactSearchProcess::FindMeshNeighbours() {
-  if (!mesh_neighbours_.empty()) return;
+  // On a piece of a cut model the paths leave the piece: NearInMesh refuses instead.
+  if (!mesh_neighbours_.empty() || root_.GetNodePartition()) return;
   for (const Element* element : root_.Elements())
     for (const Node* node : element->GetGeometry().Nodes()) {
       auto& around = mesh_neighbours_[node];
@@ -439,6 +452,13 @@ void ContactSearchProcess::FindMeshNeighbours() {
 }
 
 bool ContactSearchProcess::NearInMesh(const Geometry& from, const Geometry& to, double reach) const {
+  // Every rank searches the whole (replicated) interface and must take the same decision, but a
+  // path may cross nodes its piece lacks. Raised alike on every rank (same data, same search).
+  if (root_.GetNodePartition())
+    throw NotImplementedError(Concat("the contact search of slot '", slot_.id,
+                                     "': telling a thin body's far side from a self contact walks the mesh, which "
+                                     "a model cut across the ranks (MORTARCONTACT_PARTITIONED_MODEL=1) does not "
+                                     "hold; run without MORTARCONTACT_PARTITIONED_MODEL"));
   // Dijkstra over the element edges (current lengths), stopped at `reach`: the far side of a body
   // lies about its thickness away through it; the other arm of a bent body, or the other side of
   // a self contact, only by the long way round.
