@@ -452,13 +452,6 @@ void ContactSearchProcess::FindMeshNeighbours() {
 }
 
 bool ContactSearchProcess::NearInMesh(const Geometry& from, const Geometry& to, double reach) const {
-  // Every rank searches the whole (replicated) interface and must take the same decision, but a
-  // path may cross nodes its piece lacks. Raised alike on every rank (same data, same search).
-  if (root_.GetNodePartition())
-    throw NotImplementedError(Concat("the contact search of slot '", slot_.id,
-                                     "': telling a thin body's far side from a self contact walks the mesh, which "
-                                     "a model cut across the ranks (MORTARCONTACT_PARTITIONED_MODEL=1) does not "
-                                     "hold; run without MORTARCONTACT_PARTITIONED_MODEL"));
   // Dijkstra over the element edges (current lengths), stopped at `reach`: the far side of a body
   // lies about its thickness away through it; the other arm of a bent body, or the other side of
   // a self contact, only by the long way round.
@@ -551,7 +544,12 @@ ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
   std::vector<std::vector<std::size_t>> candidates(all.size());
   double min_radius = std::numeric_limits<double>::max(), max_radius = 0.0;
   std::size_t truncated = 0;
-#pragma omp parallel reduction(min : min_radius) reduction(max : max_radius) reduction(+ : truncated)
+  // Every rank of a cut model searches the whole (replicated) interface and must decide alike, but
+  // a mesh walk may cross nodes its piece lacks: refused after the loop, alike on every rank.
+  const bool cut = root_.GetNodePartition() != nullptr;
+  bool walk_on_piece = false;
+#pragma omp parallel reduction(min : min_radius) reduction(max : max_radius) reduction(+ : truncated) \
+    reduction(|| : walk_on_piece)
   {
     std::vector<std::size_t> found;
 #pragma omp for schedule(dynamic, 64)
@@ -591,7 +589,13 @@ ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
         const double depth = (slave.center - master.center).dot(slave.normal);  // > 0: behind the slave
         if (master.body != slave.body) return depth <= std::max(slave.length, master.length);
         const double face = std::min(slave.length, master.length);
-        return depth <= 0.1 * face || (depth <= face && !NearInMesh(slave_geometry, master_geometry, 2.0 * face));
+        if (depth <= 0.1 * face) return true;
+        if (!(depth <= face)) return false;
+        if (cut) {
+          walk_on_piece = true;
+          return false;
+        }
+        return !NearInMesh(slave_geometry, master_geometry, 2.0 * face);
       };
       // How far the master's projection overlaps the slave's (negative: apart by about that much).
       auto overlap = [&](const FaceData& master) {
@@ -655,6 +659,11 @@ ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
       }
     }
   }
+  if (walk_on_piece)
+    throw NotImplementedError(Concat("the contact search of ", interface_.FullName(),
+                                     ": telling a thin body's far side from a self contact walks the mesh, which a "
+                                     "model cut across the ranks (MORTARCONTACT_PARTITIONED_MODEL=1) does not hold; "
+                                     "run without MORTARCONTACT_PARTITIONED_MODEL"));
   if (truncated > 0)
     Logger::Warning(Concat("contact search of ", interface_.FullName(), ": ", truncated,
                            " slave conditions had more candidates than max_number_results ", allocation,

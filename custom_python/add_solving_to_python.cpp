@@ -1,5 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <optional>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 #include "core/linear_solvers/assembly_communicator.h"
 #include "core/linear_solvers/linear_solver.h"
@@ -346,6 +349,12 @@ void AddSolvingToPython(py::module_& m) {
             ModelPartPartitioner([&owners = *partition](const Node& node) { return owners.Owner(node); },
                                  communicator->Rank())
                 .Cut(root, replicated);
+#if defined(__GLIBC__)
+        // The entities cut away are many small blocks amid the heap, which glibc keeps mapped; the
+        // later large blocks (the system, the solver's factors) are mapped apart and would not
+        // reuse them.
+        malloc_trim(0);
+#endif
         return py::dict(py::arg("owned_nodes") = piece.owned_nodes, py::arg("ghost_nodes") = piece.ghost_nodes,
                         py::arg("elements") = piece.elements, py::arg("conditions") = piece.conditions);
       },
