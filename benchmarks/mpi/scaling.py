@@ -75,7 +75,7 @@ def main() -> int:
     parser.add_argument("--case", default="hertz2d_100k", help="a Hertz case name, e.g. hertz2d_100k, hertz3d_50k")
     parser.add_argument("--solver", choices=sorted(SOLVERS), default="mumps")
     parser.add_argument("--partitioned-model", action="store_true",
-                        help="also on 2 processes each cutting the model to its piece (MORTARCONTACT_PARTITIONED_MODEL)")
+                        help="also on 2 processes, each cutting the model (MORTARCONTACT_PARTITIONED_MODEL)")
     args = parser.parse_args()
     from mortarcontact.cases import hertz
 
