@@ -192,14 +192,15 @@ PARTITIONED = dict(ENV, MORTARCONTACT_PARTITIONED_MODEL="1")
 
 
 @pytest.mark.parametrize("run", sorted(RUNS))
-def test_a_model_cut_across_two_ranks_gives_the_serial_answer(tmp_path, run):
+@pytest.mark.parametrize("ranks", (2, 3))
+def test_a_model_cut_across_the_ranks_gives_the_serial_answer(tmp_path, run, ranks):
     """The same Newton iterations and values as the serial run. The outputs are not gathered yet:
     rank 0 writes the displacements of its piece (checked to be a part of the model, compared
     there) and the contact pressures of the whole interface, which every rank keeps."""
     case, components, linear_solver = RUNS[run]
     answers = {}
-    for ranks, env in ((1, ENV), (2, PARTITIONED)):
-        folder = tmp_path / f"ranks{ranks}"
+    for processes, env in ((1, ENV), (ranks, PARTITIONED)):
+        folder = tmp_path / f"ranks{processes}"
         folder.mkdir()
         path = _write_case(folder, case, components, linear_solver, CONTACT_SETTINGS.get(run, {}))
         # Only the block builder solves a piece (the elimination builder is refused there): both runs
@@ -209,10 +210,10 @@ def test_a_model_cut_across_two_ranks_gives_the_serial_answer(tmp_path, run):
         parameters["solver_settings"]["block_builder"] = True
         with open(path, "w") as f:
             json.dump(parameters, f, indent=1)
-        done = _run(folder, ranks, env)
+        done = _run(folder, processes, env)
         assert done.returncode == 0, done.stdout + done.stderr
-        answers[ranks] = _results(folder)
-    serial, cut = answers[1], answers[2]
+        answers[processes] = _results(folder)
+    serial, cut = answers[1], answers[ranks]
     assert len(serial["iterations"]) >= 2
     assert cut["iterations"] == serial["iterations"]
     serial_nodes = {k[1] for k in serial["values"] if k[0] == "displacements.json"}
@@ -248,3 +249,15 @@ def test_what_does_not_distribute_is_one_clear_error(tmp_path, error):
     assert len(messages) == 1, done.stderr  # rank 0's only
     for part in parts:
         assert part in messages[0], messages[0]
+
+
+def test_the_elimination_builder_on_a_cut_model_is_one_clear_error(tmp_path):
+    # Kratos' 3D patch asks for the elimination builder ("block_builder": false).
+    _write_case(tmp_path, RUNS["patch3d-mumps"][0], False, MUMPS, {})
+    done = _run(tmp_path, 2, PARTITIONED)
+    assert done.returncode == 3, done.stdout + done.stderr
+    assert "Traceback" not in done.stderr
+    messages = [line for line in done.stderr.splitlines() if line.startswith("mortarcontact: not implemented")]
+    assert len(messages) == 1, done.stderr  # rank 0's only
+    assert "elimination builder on a model cut across 2 processes" in messages[0], messages[0]
+    assert '"block_builder": true' in messages[0], messages[0]
