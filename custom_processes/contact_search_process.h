@@ -169,7 +169,7 @@ class ContactSearchProcess {
   std::size_t bodiless_offset_ = 0;
   bool bodies_found_ = false;
   /// Per node of an element, the other nodes of the elements that hold it (sorted); built only
-  /// when a slave face may meet a face of its own body.
+  /// when a slave face may meet a face of its own body, never on a piece of a cut model.
   std::unordered_map<const Node*, std::vector<const Node*>> mesh_neighbours_;
   double total_seconds_ = 0.0;
   std::size_t searches_ = 0;

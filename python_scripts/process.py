@@ -28,12 +28,6 @@ class Process:
         return None
 
     def ExecuteInitialize(self) -> None: ...
-
-    def ExecuteBeforeModelCut(self) -> list:
-        """Under mpirun with MORTARCONTACT_PARTITIONED_MODEL=1, after every ExecuteInitialize and
-        before the model is cut into the ranks' pieces: computes what needs the whole model and
-        returns the model parts every rank must keep whole (the contact interfaces)."""
-        return []
     def Check(self) -> None: ...
     def ExecuteBeforeSolutionLoop(self) -> None: ...
     def ExecuteInitializeSolutionStep(self) -> None: ...
@@ -41,6 +35,12 @@ class Process:
     def ExecuteBeforeOutputStep(self) -> None: ...
     def ExecuteAfterOutputStep(self) -> None: ...
     def ExecuteFinalize(self) -> None: ...
+
+    def ExecuteBeforeModelCut(self) -> list:
+        """Under mpirun with MORTARCONTACT_PARTITIONED_MODEL=1, after every ExecuteInitialize and
+        before the model is cut into the ranks' pieces: computes what needs the whole model and
+        returns the model parts every rank must keep whole (the contact interfaces)."""
+        return []
 
     def ExecuteAfterFailure(self) -> None:
         """The run stops on a solution error (mortarcontact's hook, not Kratos'): a process that
