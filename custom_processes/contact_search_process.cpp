@@ -403,29 +403,42 @@ void ContactSearchProcess::AssignAutomaticRoles(const std::vector<Condition*>& c
     }
 }
 
-std::size_t ContactSearchProcess::BodyOf(const Condition& condition) {
-  if (body_of_node_.empty()) {
-    // Union-find over the nodes of each element: the bodies are the connected sets of elements.
-    std::unordered_map<const Node*, std::size_t> index;
-    for (const Element* element : root_.Elements())
-      for (const Node* node : element->GetGeometry().Nodes()) index.emplace(node, index.size());
-    DisjointSets bodies(index.size());
-    for (const Element* element : root_.Elements()) {
-      const Geometry& geometry = element->GetGeometry();
-      for (std::size_t k = 1; k < geometry.PointsNumber(); ++k)
-        bodies.Join(index.at(&geometry[k]), index.at(&geometry[0]));
-    }
-    std::unordered_map<std::size_t, std::size_t> numbers;
-    for (const auto& [node, i] : index)
-      body_of_node_.emplace(node, numbers.emplace(bodies.Find(i), numbers.size()).first->second);
+void ContactSearchProcess::FindBodies() {
+  // Union-find over the nodes of each element: the bodies are the connected sets of elements.
+  std::unordered_map<const Node*, std::size_t> index;
+  for (const Element* element : root_.Elements())
+    for (const Node* node : element->GetGeometry().Nodes()) index.emplace(node, index.size());
+  DisjointSets bodies(index.size());
+  for (const Element* element : root_.Elements()) {
+    const Geometry& geometry = element->GetGeometry();
+    for (std::size_t k = 1; k < geometry.PointsNumber(); ++k)
+      bodies.Join(index.at(&geometry[k]), index.at(&geometry[0]));
   }
+  std::unordered_map<std::size_t, std::size_t> numbers;
+  body_of_node_.clear();
+  for (const auto& [node, i] : index)
+    body_of_node_.emplace(node, numbers.emplace(bodies.Find(i), numbers.size()).first->second);
+  bodiless_offset_ = body_of_node_.size();
+  // Only the faces' first nodes are looked up: kept alone, no pointer outlives a cut of the model
+  // across the ranks (the interface is replicated, the rest mostly destroyed).
+  std::unordered_map<const Node*, std::size_t> of_faces;
+  for (const Condition* condition : interface_.Conditions())
+    if (const auto it = body_of_node_.find(&condition->GetGeometry()[0]); it != body_of_node_.end())
+      of_faces.emplace(*it);
+  body_of_node_ = std::move(of_faces);
+  bodies_found_ = true;
+}
+
+std::size_t ContactSearchProcess::BodyOf(const Condition& condition) {
+  if (!bodies_found_) FindBodies();
   // A face whose nodes belong to no element (a contact surface without a body) is a body of its own.
   const auto it = body_of_node_.find(&condition.GetGeometry()[0]);
-  return it != body_of_node_.end() ? it->second : body_of_node_.size() + condition.Id();
+  return it != body_of_node_.end() ? it->second : bodiless_offset_ + condition.Id();
 }
 
 void ContactSearchProcess::FindMeshNeighbours() {
-  if (!mesh_neighbours_.empty()) return;
+  // On a piece of a cut model the paths leave the piece: NearInMesh refuses instead.
+  if (!mesh_neighbours_.empty() || root_.GetNodePartition()) return;
   for (const Element* element : root_.Elements())
     for (const Node* node : element->GetGeometry().Nodes()) {
       auto& around = mesh_neighbours_[node];
@@ -531,7 +544,12 @@ ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
   std::vector<std::vector<std::size_t>> candidates(all.size());
   double min_radius = std::numeric_limits<double>::max(), max_radius = 0.0;
   std::size_t truncated = 0;
-#pragma omp parallel reduction(min : min_radius) reduction(max : max_radius) reduction(+ : truncated)
+  // Every rank of a cut model searches the whole (replicated) interface and must decide alike, but
+  // a mesh walk may cross nodes its piece lacks: refused after the loop, alike on every rank.
+  const bool cut = root_.GetNodePartition() != nullptr;
+  bool walk_on_piece = false;
+#pragma omp parallel reduction(min : min_radius) reduction(max : max_radius) reduction(+ : truncated) \
+    reduction(|| : walk_on_piece)
   {
     std::vector<std::size_t> found;
 #pragma omp for schedule(dynamic, 64)
@@ -571,7 +589,13 @@ ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
         const double depth = (slave.center - master.center).dot(slave.normal);  // > 0: behind the slave
         if (master.body != slave.body) return depth <= std::max(slave.length, master.length);
         const double face = std::min(slave.length, master.length);
-        return depth <= 0.1 * face || (depth <= face && !NearInMesh(slave_geometry, master_geometry, 2.0 * face));
+        if (depth <= 0.1 * face) return true;
+        if (!(depth <= face)) return false;
+        if (cut) {
+          walk_on_piece = true;
+          return false;
+        }
+        return !NearInMesh(slave_geometry, master_geometry, 2.0 * face);
       };
       // How far the master's projection overlaps the slave's (negative: apart by about that much).
       auto overlap = [&](const FaceData& master) {
@@ -635,6 +659,11 @@ ContactSearchStatistics ContactSearchProcess::UpdateMortarConditions() {
       }
     }
   }
+  if (walk_on_piece)
+    throw NotImplementedError(Concat("the contact search of ", interface_.FullName(),
+                                     ": telling a thin body's far side from a self contact walks the mesh, which a "
+                                     "model cut across the ranks (MORTARCONTACT_PARTITIONED_MODEL=1) does not hold; "
+                                     "run without MORTARCONTACT_PARTITIONED_MODEL"));
   if (truncated > 0)
     Logger::Warning(Concat("contact search of ", interface_.FullName(), ": ", truncated,
                            " slave conditions had more candidates than max_number_results ", allocation,

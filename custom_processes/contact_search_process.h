@@ -111,6 +111,12 @@ class ContactSearchProcess {
   /// process interval they are all inactive).
   void SetInterfaceActive(bool active);
 
+  /// Finds the bodies (connected sets of elements of the root model part) now and keeps those of
+  /// the interface's faces: called on the whole model before it is cut across the ranks
+  /// (MORTARCONTACT_PARTITIONED_MODEL), where a body cut into pieces would fall apart. Without a
+  /// cut, the first search finds them.
+  void FindBodies();
+
   ModelPart& InterfacePart() const noexcept { return interface_; }
   ModelPart& ComputingPart() const noexcept { return computing_; }
   const Parameters& Settings() const noexcept { return settings_; }
@@ -159,8 +165,11 @@ class ContactSearchProcess {
   /// NORMAL_GAP of each slave node at the previous search (static_check_movement).
   std::unordered_map<const Node*, double> previous_gap_;
   std::unordered_map<const Node*, std::size_t> body_of_node_;
+  /// The body of a face on no element is this plus its id: above every body's number.
+  std::size_t bodiless_offset_ = 0;
+  bool bodies_found_ = false;
   /// Per node of an element, the other nodes of the elements that hold it (sorted); built only
-  /// when a slave face may meet a face of its own body.
+  /// when a slave face may meet a face of its own body, never on a piece of a cut model.
   std::unordered_map<const Node*, std::vector<const Node*>> mesh_neighbours_;
   double total_seconds_ = 0.0;
   std::size_t searches_ = 0;

@@ -84,6 +84,9 @@ void AddContactProcessesToPython(py::module_& m) {
           "master conditions, pairs, active and isolated nodes, search radii, seconds).")
       .def("ClearMortarConditions", &ContactSearchProcess::ClearMortarConditions,
            "Removes this slot's pair conditions.")
+      .def("FindBodies", &ContactSearchProcess::FindBodies,
+           "Finds the bodies the interface's faces lie on now, on the whole model, before it is cut across the "
+           "ranks (the first search does it otherwise).")
       .def("SetInterfaceActive", &ContactSearchProcess::SetInterfaceActive, py::arg("active"),
            "Sets ACTIVE on the interface nodes, conditions and pairs (all inactive outside the process interval).")
       .def("InterfacePart", &ContactSearchProcess::InterfacePart, py::return_value_policy::reference,

@@ -1,8 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <optional>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
+#include "core/linear_solvers/assembly_communicator.h"
+#include "core/linear_solvers/linear_solver.h"
 #include "core/model/master_slave_constraint.h"
 #include "core/model/model_part.h"
+#include "core/model/model_part_partitioner.h"
 #include "core/solving/and_criteria.h"
 #include "core/solving/block_builder_and_solver.h"
 #include "core/solving/displacement_criteria.h"
@@ -12,6 +18,7 @@
 #include "core/solving/line_search_strategy.h"
 #include "core/solving/linear_strategy.h"
 #include "core/solving/newton_raphson_strategy.h"
+#include "core/solving/node_partition.h"
 #include "core/solving/or_criteria.h"
 #include "core/solving/residual_based_bdf_displacement_scheme.h"
 #include "core/solving/residual_based_bossak_displacement_scheme.h"
@@ -330,6 +337,33 @@ void AddSolvingToPython(py::module_& m) {
            "largest eigenvalue of M_e^-1 K_e (lumped mass); infinity without stiffness.")
       .def("SetUpDofsAndMass", &ExplicitStrategy::SetUpDofsAndMass,
            "The DoF set and the lumped mass (NODAL_MASS), before the first step (the first step does it too).");
+  m.def(
+      "CutModelPart",
+      [](ModelPart& root, const LinearSolver& solver, const std::vector<const ModelPart*>& replicated) {
+        const AssemblyCommunicator* communicator = solver.Communicator();
+        if (!communicator) throw Error("CutModelPart: the linear solver solves on one process; nothing to cut");
+        // Made once on the whole model and kept with it: the builder numbers the piece with it
+        // (re-partitioning the piece would give other owners on each rank).
+        auto partition = std::make_shared<const NodePartition>(root, *communicator);
+        root.SetNodePartition(partition);
+        const ModelPartPartitioner::Piece piece =
+            ModelPartPartitioner([&owners = *partition](const Node& node) { return owners.Owner(node); },
+                                 communicator->Rank())
+                .Cut(root, replicated);
+#if defined(__GLIBC__)
+        // The entities cut away are many small blocks amid the heap, which glibc keeps mapped; the
+        // later large blocks (the system, the solver's factors) are mapped apart and would not
+        // reuse them.
+        malloc_trim(0);
+#endif
+        return py::dict(py::arg("owned_nodes") = piece.owned_nodes, py::arg("ghost_nodes") = piece.ghost_nodes,
+                        py::arg("elements") = piece.elements, py::arg("conditions") = piece.conditions);
+      },
+      py::arg("root"), py::arg("linear_solver"), py::arg("replicated"),
+      "Collective under mpirun (issue 17, step 3): partitions the nodes of the whole model `root` with METIS over "
+      "the linear solver's processes, keeps the partition with the model and cuts it to this rank's piece (the "
+      "entities touching its nodes, their nodes, the `replicated` sub model parts whole). Returns the piece's "
+      "counts.");
 }
 
 }  // namespace mc::python

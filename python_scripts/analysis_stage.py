@@ -3,6 +3,7 @@
 construct:  read and migrate ProjectParameters.json, choose and validate the solver, add variables
 Initialize: import mdpa and materials, add DoFs, create the processes (lists in alphabetical
             order of their names, file order inside a list; outputs last), ExecuteInitialize,
+            [under mpirun with MORTARCONTACT_PARTITIONED_MODEL=1: the model cut to the rank's piece],
             solver Initialize, Check, ExecuteBeforeSolutionLoop
 each step:  advance time, ExecuteInitializeSolutionStep, solver InitializeSolutionStep, Predict,
             SolveSolutionStep, solver FinalizeSolutionStep, ExecuteFinalizeSolutionStep, output
@@ -22,7 +23,7 @@ from .process_factory import create_process_lists, naming_the_item
 from .project_parameters import migrate_project_parameters, read_project_parameters
 from .restart import attach_run
 from .solvers import create_solver
-from .utilities import secondary_process, warn
+from .utilities import partitioned_model, secondary_process, warn
 
 
 class ConvergenceFailure(_core.SolutionError):
@@ -76,6 +77,8 @@ class StructuralMechanicsAnalysis:
         for process in self._all_processes():
             with naming_the_item(getattr(process, "item_where", "")):
                 process.ExecuteInitialize()
+        if partitioned_model():
+            self._cut_model()
         self.solver.set_sub_step_callbacks(self._initialize_sub_step, self._finalize_sub_step)
         self.solver.Initialize()
         self.Check()
@@ -184,6 +187,17 @@ class StructuralMechanicsAnalysis:
         return text + (f"; wrote {', '.join(files)}" if files else "; no result files written")
 
     # -- helpers ----------------------------------------------------------------------------
+    def _cut_model(self) -> None:
+        """Each rank keeps its piece of the model from here on (docs/DESIGN.md, several processes).
+        The outputs are not gathered yet: rank 0 writes what its piece holds."""
+        piece = self.solver.CutModel(self._all_processes())
+        if self.echo_level >= 1:
+            print(f"model cut across {_core.LaunchedProcesses()} processes; rank 0 keeps {piece['owned_nodes']} "
+                  f"owned and {piece['ghost_nodes']} ghost nodes, {piece['elements']} elements")
+        if not secondary_process():
+            warn("MORTARCONTACT_PARTITIONED_MODEL=1: the outputs (VTU, JSON output, restart) are not gathered across "
+                 "the ranks yet; they hold rank 0's piece of the model (its nodes and the whole contact interface)")
+
     def _all_processes(self):
         return [*self.processes, *self.output_processes]
 

@@ -1,6 +1,7 @@
 """Base class of every process (boundary conditions, loads, contact, checks, outputs).
 
-The analysis stage calls the hooks in this order (spec 1.7): ``ExecuteInitialize``, ``Check``,
+The analysis stage calls the hooks in this order (spec 1.7): ``ExecuteInitialize``,
+``ExecuteBeforeModelCut`` (only when the model is cut across the ranks), ``Check``,
 ``ExecuteBeforeSolutionLoop``; per step ``ExecuteInitializeSolutionStep``, then after the solve
 ``ExecuteFinalizeSolutionStep``; around output ``ExecuteBeforeOutputStep`` / ``PrintOutput`` /
 ``ExecuteAfterOutputStep``; at the end ``ExecuteFinalize``, or ``ExecuteAfterFailure`` when a
@@ -34,6 +35,12 @@ class Process:
     def ExecuteBeforeOutputStep(self) -> None: ...
     def ExecuteAfterOutputStep(self) -> None: ...
     def ExecuteFinalize(self) -> None: ...
+
+    def ExecuteBeforeModelCut(self) -> list:
+        """Under mpirun with MORTARCONTACT_PARTITIONED_MODEL=1, after every ExecuteInitialize and
+        before the model is cut into the ranks' pieces: computes what needs the whole model and
+        returns the model parts every rank must keep whole (the contact interfaces)."""
+        return []
 
     def ExecuteAfterFailure(self) -> None:
         """The run stops on a solution error (mortarcontact's hook, not Kratos'): a process that

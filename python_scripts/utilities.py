@@ -51,6 +51,15 @@ def secondary_process() -> bool:
     return _core.LaunchedRank() > 0
 
 
+def partitioned_model() -> bool:
+    """Whether each rank of a run under ``mpirun`` cuts the model to its piece after the processes'
+    ExecuteInitialize (``MORTARCONTACT_PARTITIONED_MODEL=1``; issue 17, step 3, not yet the default:
+    the outputs are rank 0's piece)."""
+    from . import _core
+
+    return os.environ.get("MORTARCONTACT_PARTITIONED_MODEL") == "1" and _core.LaunchedProcesses() > 1
+
+
 def publish_file(temporary: str, path: str) -> None:
     """Renames a finished temporary file over ``path`` with the mode of a file created normally
     (0666 less the umask, usually 0644) instead of mkstemp's private 0600. In a secondary process

@@ -6,6 +6,7 @@ the same Newton iterations.
 
     python benchmarks/mpi/scaling.py --case hertz2d_100k --solver mumps
     python benchmarks/mpi/scaling.py --case hertz3d_50k --solver fieldsplit
+    python benchmarks/mpi/scaling.py --case hertz2d_100k --partitioned-model   # + 2 ranks, model cut
 
 The per-rank records come from benchmarks/hertz/case_runner.py (rank r > 0 writes
 ``<output>.rank<r>.json``).
@@ -30,17 +31,19 @@ SOLVERS = {
 }
 
 
-def run(case_dir: str, solver: dict, ranks: int, work: str) -> list[dict]:
-    output = os.path.join(work, f"ranks{ranks}.json")
+def run(case_dir: str, solver: dict, ranks: int, work: str, partitioned: bool = False) -> list[dict]:
+    """The per-rank records of one run; `partitioned`: each rank cuts the model to its piece
+    (MORTARCONTACT_PARTITIONED_MODEL=1)."""
+    output = os.path.join(work, f"ranks{ranks}{'cut' if partitioned else ''}.json")
     command = [sys.executable, RUNNER, "--code", "mortarcontact", "--linear-solver", json.dumps(solver),
                case_dir, output]
     if ranks > 1:
         command = [shutil.which("mpirun"), "-n", str(ranks), *command]
     # A waiting rank yields its core (shared machines) instead of polling.
     env = dict(os.environ, OMP_NUM_THREADS="1", OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-               OMPI_MCA_mpi_yield_when_idle="1")
+               OMPI_MCA_mpi_yield_when_idle="1", MORTARCONTACT_PARTITIONED_MODEL="1" if partitioned else "0")
     subprocess.run(command, check=True, env=env)
-    records = [output, *sorted(glob.glob(os.path.join(work, f"ranks{ranks}.rank*.json")))]
+    records = [output, *sorted(glob.glob(f"{os.path.splitext(output)[0]}.rank*.json"))]
     loaded = []
     for path in records:
         with open(path) as f:
@@ -51,7 +54,7 @@ def run(case_dir: str, solver: dict, ranks: int, work: str) -> list[dict]:
     return loaded
 
 
-def row(ranks: int, records: list[dict]) -> str:
+def row(ranks, records: list[dict]) -> str:
     def per_rank(*names, digits=2):
         return " / ".join(f"{sum(r['phases'][n] for n in names):.{digits}f}" for r in records)
 
@@ -62,7 +65,8 @@ def row(ranks: int, records: list[dict]) -> str:
     return (f"| {ranks} | {iterations} | {per_rank('elements', 'conditions', 'build_other')} | {per_rank('solve')} | "
             f"{per_rank('dof_setup')} | {per_rank('search', 'weighted_gap', 'normals')} | "
             f"{per_rank_value('analysis_seconds')} | {per_rank_value('analysis_cpu_seconds')} | "
-            f"{per_rank_value('setup_rss_mb', 0)} | {per_rank_value('peak_rss_mb', 0)} | "
+            f"{per_rank_value('setup_rss_mb', 0)} | {per_rank_value('setup_resident_mb', 0)} | "
+            f"{per_rank_value('peak_rss_mb', 0)} | "
             f"{per_rank_value('matrix_entries', 2, 1e6)} |")
 
 
@@ -70,6 +74,8 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--case", default="hertz2d_100k", help="a Hertz case name, e.g. hertz2d_100k, hertz3d_50k")
     parser.add_argument("--solver", choices=sorted(SOLVERS), default="mumps")
+    parser.add_argument("--partitioned-model", action="store_true",
+                        help="also on 2 processes, each cutting the model (MORTARCONTACT_PARTITIONED_MODEL)")
     args = parser.parse_args()
     from mortarcontact.cases import hertz
 
@@ -78,17 +84,19 @@ def main() -> int:
     with tempfile.TemporaryDirectory() as work:
         case_dir = hertz.write_case(family, label, work)
         results = {ranks: run(case_dir, SOLVERS[args.solver], ranks, work) for ranks in (1, 2)}
+        if args.partitioned_model:
+            results["2, model cut"] = run(case_dir, SOLVERS[args.solver], 2, work, partitioned=True)
     steps = {ranks: [s["iterations"] for s in records[0]["steps"]] for ranks, records in results.items()}
-    if steps[1] != steps[2]:
+    if any(iterations != steps[1] for iterations in steps.values()):
         raise SystemExit(f"the Newton iterations differ: {steps}")
     dofs = results[1][0].get("dofs", "?")
     print(f"{args.case} ({dofs} DoFs), PETSc {args.solver}, one thread per process; wall-clock seconds per rank "
           f"(rank 0 / rank 1); load average before and after: {load_before} / {os.getloadavg()[0]:.1f}")
     print()
     print("| processes | Newton iterations | assembly | linear solve | DoF set-up + pattern | contact search + "
-          "mortar | analysis | analysis CPU s | memory after set-up (MB) | peak memory (MB) | "
-          "matrix entries kept (M) |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|")
+          "mortar | analysis | analysis CPU s | peak memory after set-up (MB) | resident after set-up (MB) | "
+          "peak memory (MB) | matrix entries kept (M) |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
     for ranks, records in results.items():
         print(row(ranks, records))
     return 0

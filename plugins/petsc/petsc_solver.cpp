@@ -297,7 +297,16 @@ void PetscSolver::Solve(const SparseMatrix& A, Vector& x, const Vector& b) {
     throw SolutionError(Concat("PETSc: pc_type 'fieldsplit' splits the rows by their DoF, given for ",
                                primal_rows_.size() + multiplier_rows_.size(), " of the ", M.cols(),
                                " rows (ProvideAdditionalData)"));
-  if (!handles_ || !pattern_.Matches(M)) Initialize(M);
+  bool rebuild = !handles_ || !pattern_.Matches(M);
+  if (communicator_) {
+    // Setting up is collective, but each rank sees its own rows: on a piece of a cut model a new
+    // contact pair may change one rank's pattern alone (the ranks then waited in different
+    // collectives: hertz3d_50k, field split, 2 ranks).
+    double any = rebuild ? 1.0 : 0.0;
+    communicator_->SumToAll(&any, 1);
+    rebuild = any > 0.0;
+  }
+  if (rebuild) Initialize(M);
   // Same pattern: refresh the values in place (PETSc keeps its symbolic factorization).
   Eigen::SparseMatrix<double, Eigen::RowMajor, PetscInt>& rows = handles_->rows;
   rows = M;

@@ -116,6 +116,13 @@ class SearchBaseProcess(Process):
                 self.root, interface, sp, slot=slot, condition_name=self.condition_stem,
                 predefined_master_slave=bool(slaves), property_id=properties.Id))
 
+    def ExecuteBeforeModelCut(self) -> list:
+        # Every rank searches the whole interface (the pairs reach master faces anywhere) and
+        # computes every pair, so the pairs' part is replicated too.
+        for search in self.searches:
+            search.FindBodies()
+        return [part for search in self.searches for part in (search.InterfacePart(), search.ComputingPart())]
+
     def _adapt_search(self, interfaces) -> None:
         """adapt_search (spec 4.3): search_factor and active_check_factor times the ratio of the
         largest to the smallest NODAL_H, as Kratos does. Kratos takes the ratio over every node of

@@ -148,7 +148,7 @@ class ContactMechanicalSolver(MechanicalSolver):
         updater = _core.ContactMortarUpdater()
         self.mortar_updater = updater  # its timings are read by the benchmarks
         criteria = create_contact_convergence_criteria(s, self._formulation_of_run(), self.echo_level, updater)
-        linear_solver = self._create_contact_linear_solver()
+        linear_solver = self._linear_solver()
         self.contact_linear_solver = linear_solver  # the tests read whether MixedULM condensed
         initialize, finalize = self.sub_step_callbacks
         return create_contact_strategy(part, s, self._create_scheme(part), linear_solver, criteria,
@@ -163,6 +163,9 @@ class ContactMechanicalSolver(MechanicalSolver):
                 not is_pure_slip(self.formulation, root.GetSubModelPart("Contact")):
             return self.formulation
         return _core.ContactFormulation.Get(self.formulation.mortar_type + "PureSlip")
+
+    def _new_linear_solver(self):
+        return self._create_contact_linear_solver()
 
     def _create_contact_linear_solver(self):
         """The user's solver, optionally rescaled, wrapped in the condensing MixedULM solver for the

@@ -50,6 +50,7 @@ class MechanicalSolver:
         self.mesh_record = None  # the mesh file and its import settings, for checkpoints
         self.mesh_path = None  # the mesh file read, named in errors about its entities
         self.sub_step_callbacks = (None, None)
+        self._early_linear_solver = None  # made by CutModel, taken by _create_strategy
         self._time_step_checked = False
         self._predicted_time_step = None  # (time step, steps since it was predicted)
         self.convergence_history = ConvergenceHistory.from_settings(settings["convergence_history"])
@@ -281,11 +282,35 @@ class MechanicalSolver:
         self.strategy = self._create_strategy()
         self.strategy.Initialize()
 
+    def CutModel(self, processes) -> dict:
+        """Under mpirun with MORTARCONTACT_PARTITIONED_MODEL=1 (issue 17, step 3), after the
+        processes' ExecuteInitialize: cuts the whole model to this rank's piece. The linear solver
+        is made first, on the whole model: its communicator partitions the nodes, and what it
+        decides from the model's size is what the serial run decides. Each process computes what
+        needs the whole model (ExecuteBeforeModelCut) and names the parts every rank keeps whole.
+        Returns the piece's counts."""
+        self._check_explicit_on_one_process()
+        if self.checkpoint is not None:
+            raise _core.NotImplementedFeatureError(
+                "model_import_settings.input_type 'rest': resuming a model cut across the ranks "
+                "(MORTARCONTACT_PARTITIONED_MODEL=1); resume without it")
+        self._early_linear_solver = self._new_linear_solver()
+        replicated = [part for process in processes for part in process.ExecuteBeforeModelCut()]
+        return _core.CutModelPart(self.main_model_part, self._early_linear_solver, replicated)
+
+    def _linear_solver(self):
+        """The linear solver CutModel made, else a new one."""
+        solver, self._early_linear_solver = self._early_linear_solver, None
+        return solver if solver is not None else self._new_linear_solver()
+
+    def _new_linear_solver(self):
+        return _core.CreateLinearSolver(self.settings["linear_solver_settings"])
+
     def _create_strategy(self):
         s = self.settings
         part = self.GetComputingModelPart()
         self._check_explicit_on_one_process()
-        linear_solver = _core.CreateLinearSolver(s["linear_solver_settings"])
+        linear_solver = self._linear_solver()
         if self.explicit:
             return _core.ExplicitStrategy(part, _core.ExplicitCentralDifferencesScheme(),
                                           compute_reactions=s["compute_reactions"].GetBool(),

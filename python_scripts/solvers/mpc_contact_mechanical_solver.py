@@ -77,7 +77,7 @@ class MPCContactMechanicalSolver(MechanicalSolver):
                 f"{s.Where()}.step_splitting: step splitting is not implemented with mpc_contact_settings; remove it "
                 "and give a smaller time_stepping.time_step, or use ALM contact (contact_settings, whose "
                 "adaptative_strategy, split_factor and max_number_splits split a step that does not converge)")
-        builder = create_builder_and_solver(s, _core.CreateLinearSolver(s["linear_solver_settings"]))
+        builder = create_builder_and_solver(s, self._linear_solver())
         return _core.ResidualBasedNewtonRaphsonMPCContactStrategy(
             part, self._create_scheme(part), self._create_criteria(), builder, settings=s["mpc_contact_settings"],
             max_iteration=s["max_iteration"].GetInt(), compute_reactions=True, reform_dofs_at_each_step=True,

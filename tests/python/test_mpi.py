@@ -123,11 +123,11 @@ def _write_case(folder, case: str, components, linear_solver: dict, contact_sett
     return path
 
 
-def _run(folder, ranks: int) -> subprocess.CompletedProcess:
+def _run(folder, ranks: int, env: dict = ENV) -> subprocess.CompletedProcess:
     command = [CLI, "run", "--no-progress", "ProjectParameters.json"]
     if ranks > 1:
         command = [MPIRUN, "-n", str(ranks), *command]
-    return subprocess.run(command, cwd=folder, env=ENV, capture_output=True, text=True, timeout=300)
+    return subprocess.run(command, cwd=folder, env=env, capture_output=True, text=True, timeout=300)
 
 
 def _results(folder) -> dict:
@@ -180,6 +180,53 @@ def test_two_three_and_four_ranks_give_the_serial_answer(tmp_path, run):
         assert len(summaries) == 1, outputs[ranks]
 
 
+def _worst_difference(distributed: dict, serial: dict, file: str) -> tuple[float, float]:
+    """The largest difference of `file`'s values at the nodes `distributed` has, and the serial scale."""
+    keys = [k for k in distributed if k[0] == file]
+    scale = max(np.abs(serial[k]).max() for k in keys)
+    return max(np.abs(distributed[k] - serial[k]).max() for k in keys), scale
+
+
+#: Each rank keeps its piece of the model (MORTARCONTACT_PARTITIONED_MODEL=1, issue 17 step 3).
+PARTITIONED = dict(ENV, MORTARCONTACT_PARTITIONED_MODEL="1")
+
+
+@pytest.mark.parametrize("run", sorted(RUNS))
+@pytest.mark.parametrize("ranks", (2, 3))
+def test_a_model_cut_across_the_ranks_gives_the_serial_answer(tmp_path, run, ranks):
+    """The same Newton iterations and values as the serial run. The outputs are not gathered yet:
+    rank 0 writes the displacements of its piece (checked to be a part of the model, compared
+    there) and the contact pressures of the whole interface, which every rank keeps."""
+    case, components, linear_solver = RUNS[run]
+    answers = {}
+    for processes, env in ((1, ENV), (ranks, PARTITIONED)):
+        folder = tmp_path / f"ranks{processes}"
+        folder.mkdir()
+        path = _write_case(folder, case, components, linear_solver, CONTACT_SETTINGS.get(run, {}))
+        # Only the block builder solves a piece (the elimination builder is refused there): both runs
+        # take it.
+        with open(path) as f:
+            parameters = json.load(f)
+        parameters["solver_settings"]["block_builder"] = True
+        with open(path, "w") as f:
+            json.dump(parameters, f, indent=1)
+        done = _run(folder, processes, env)
+        assert done.returncode == 0, done.stdout + done.stderr
+        answers[processes] = _results(folder)
+    serial, cut = answers[1], answers[ranks]
+    assert len(serial["iterations"]) >= 2
+    assert cut["iterations"] == serial["iterations"]
+    serial_nodes = {k[1] for k in serial["values"] if k[0] == "displacements.json"}
+    cut_nodes = {k[1] for k in cut["values"] if k[0] == "displacements.json"}
+    assert cut_nodes < serial_nodes, "rank 0 keeps a part of the model only"
+    pressures = [k for k in serial["values"] if k[0] == "pressures.json"]
+    assert sorted(k for k in cut["values"] if k[0] == "pressures.json") == sorted(pressures)
+    for file in ("displacements.json", "pressures.json"):
+        worst, scale = _worst_difference(cut["values"], serial["values"], file)
+        assert scale > 0.0, f"{file}: nothing to compare"
+        assert worst <= TOLERANCE.get(run, 1e-12) * scale, f"{file}: {worst:.3g} against {scale:.3g}"
+
+
 ERRORS = {
     # Not a silent run of the whole problem on every rank: the error names the key and 'petsc'.
     "serial-solver": ({"solver_type": "skyline_lu_factorization"}, 2, "input error",
@@ -202,3 +249,15 @@ def test_what_does_not_distribute_is_one_clear_error(tmp_path, error):
     assert len(messages) == 1, done.stderr  # rank 0's only
     for part in parts:
         assert part in messages[0], messages[0]
+
+
+def test_the_elimination_builder_on_a_cut_model_is_one_clear_error(tmp_path):
+    # Kratos' 3D patch asks for the elimination builder ("block_builder": false).
+    _write_case(tmp_path, RUNS["patch3d-mumps"][0], False, MUMPS, {})
+    done = _run(tmp_path, 2, PARTITIONED)
+    assert done.returncode == 3, done.stdout + done.stderr
+    assert "Traceback" not in done.stderr
+    messages = [line for line in done.stderr.splitlines() if line.startswith("mortarcontact: not implemented")]
+    assert len(messages) == 1, done.stderr  # rank 0's only
+    assert "elimination builder on a model cut across 2 processes" in messages[0], messages[0]
+    assert '"block_builder": true' in messages[0], messages[0]

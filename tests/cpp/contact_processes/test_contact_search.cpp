@@ -11,7 +11,9 @@
 
 #include "contact_processes_test_utilities.h"
 #include "core/model/model.h"
+#include "core/model/model_part_partitioner.h"
 #include "core/model/registry.h"
+#include "core/solving/node_partition.h"
 #include "core/variables/kernel_variables.h"
 #include "custom_processes/contact_interface_builder.h"
 #include "custom_processes/contact_search_process.h"
@@ -360,6 +362,32 @@ TEST(ContactSearch, CrossedFacesOfOneBodyArePairedTheFarSideOfAThinBodyIsNot) {
   ModelPart& thin = test::BuildInterface(root, {"Contact_Part"});
   ContactSearchProcess thin_search(root, thin, SearchSettings(), automatic);
   EXPECT_EQ(thin_search.UpdateMortarConditions().pairs, 0u);
+}
+
+TEST(ContactSearch, OnAModelCutAcrossTheRanksTheMeshWalkIsRefused) {
+  // The crossed C of the test above, cut like one rank of a run on two (MORTARCONTACT_PARTITIONED_
+  // MODEL): this rank owns the nodes left of x = 0.5 and keeps the whole interface, the bodies
+  // found on the whole model before the cut. Telling the faces next to the column apart walks the
+  // mesh through nodes the piece lacks: one clear error, the same on every rank.
+  Model model;
+  ModelPart& interface = BuildC2D(model, -0.1);
+  ModelPart& root = interface.GetRootModelPart();
+  ContactSearchSlot automatic;
+  automatic.predefined_master_slave = false;
+  ContactSearchProcess search(root, interface, SearchSettings(), automatic);
+  search.FindBodies();
+  const std::size_t faces = interface.NumberOfConditions();
+  root.SetNodePartition(std::make_shared<const NodePartition>());  // what marks a model cut
+  const ModelPartPartitioner::Piece piece =
+      ModelPartPartitioner([](const Node& node) { return node.X0().x() < 0.5 ? 0 : 1; }, 0).Cut(root, {&interface});
+  ASSERT_LT(piece.elements, 10u);  // a piece, not the whole C
+  ASSERT_EQ(interface.NumberOfConditions(), faces);
+  try {
+    search.UpdateMortarConditions();
+    FAIL() << "the mesh walk ran on a piece";
+  } catch (const NotImplementedError& e) {
+    EXPECT_NE(std::string(e.what()).find("MORTARCONTACT_PARTITIONED_MODEL"), std::string::npos) << e.what();
+  }
 }
 
 // The interface of the shared 2D Hertz case: hemisphere (slave) on a plate.
