@@ -26,8 +26,11 @@ application: y = P r_p; z_r = AMG(S)(r_r - A_rp y); z_p = P (r_p - A_pr z_r).
 
 Both preconditioners use the same multigrid here (pyamg's smoothed aggregation with the rigid-body
 modes, one V-cycle; BoomerAMG in the solver itself), GMRES to 1e-8, so the counts compare the
-treatments of the contact constraints, not the multigrids. Needs pyamg (`pip install pyamg`); it
-is not a dependency of mortarcontact.
+treatments of the contact constraints, not the multigrids. In the solver the field split runs
+BoomerAMG, which does better on the displacement block: 24 iterations per solve on hertz3d_15k,
+28.5 on hertz3d_600k; PETSc's GAMG on the condensed system (rigid-body modes, threshold 0.01) took
+17 on hertz3d_15k at three times the CPU of the whole run, its set-up at every Newton iteration
+(issue 14, 2026-11-28). Needs pyamg (`pip install pyamg`); it is not a dependency of mortarcontact.
 
     python benchmarks/hertz/condensed_preconditioner.py                       # hertz3d_15k, hertz3d_50k
     python benchmarks/hertz/condensed_preconditioner.py --cases hertz3d_150k --states 2:2,4:2
