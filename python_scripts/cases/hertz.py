@@ -80,7 +80,7 @@ GEOMETRY = {
 }
 SIZES = {
     "hertz2d": {"2k": 1.38, "8k": 0.69, "30k": 0.356, "100k": 0.195, "250k": 0.123},
-    "hertz3d": {"15k": 0.836, "50k": 0.524, "150k": 0.343, "600k": 0.2},
+    "hertz3d": {"15k": 0.836, "50k": 0.524, "150k": 0.343, "600k": 0.2, "2m": 0.142},
     "hertz3dgrid": {"15k": 1.0, "30k": 0.75, "50k": 0.6, "80k": 0.5},
 }
 # hertz3dgrid: cube side ``scale * spacing`` in the structured zones, the sphere's [0, L]^2 x [0, D]
