@@ -188,15 +188,20 @@ class StructuralMechanicsAnalysis:
 
     # -- helpers ----------------------------------------------------------------------------
     def _cut_model(self) -> None:
-        """Each rank keeps its piece of the model from here on (docs/DESIGN.md, several processes).
-        The outputs are not gathered yet: rank 0 writes what its piece holds."""
+        """Each rank keeps its piece of the model from here on (docs/DESIGN.md, several processes);
+        the processes (not the output processes, made on rank 0 only) are handed the ranks to
+        gather their results from the pieces."""
         piece = self.solver.CutModel(self._all_processes())
+        # Only the processes every rank creates: a collective on rank 0 alone would wait forever.
+        for process in self.processes:
+            process.ExecuteAfterModelCut(self.solver.ranks)
         if self.echo_level >= 1:
             print(f"model cut across {_core.LaunchedProcesses()} processes; rank 0 keeps {piece['owned_nodes']} "
                   f"owned and {piece['ghost_nodes']} ghost nodes, {piece['elements']} elements")
         if not secondary_process():
-            warn("MORTARCONTACT_PARTITIONED_MODEL=1: the outputs (VTU, JSON output, restart) are not gathered across "
-                 "the ranks yet; they hold rank 0's piece of the model (its nodes and the whole contact interface)")
+            warn("MORTARCONTACT_PARTITIONED_MODEL=1: the output_processes (VTU, restart checkpoints, a JSON output "
+                 "listed there) are not gathered across the ranks yet; they hold rank 0's piece of the model (its "
+                 "nodes and the whole contact interface)")
 
     def _all_processes(self):
         return [*self.processes, *self.output_processes]

@@ -54,7 +54,7 @@ def secondary_process() -> bool:
 def partitioned_model() -> bool:
     """Whether each rank of a run under ``mpirun`` cuts the model to its piece after the processes'
     ExecuteInitialize (``MORTARCONTACT_PARTITIONED_MODEL=1``; issue 17, step 3, not yet the default:
-    the outputs are rank 0's piece)."""
+    the output_processes write rank 0's piece)."""
     from . import _core
 
     return os.environ.get("MORTARCONTACT_PARTITIONED_MODEL") == "1" and _core.LaunchedProcesses() > 1
