@@ -16,6 +16,8 @@ class Ranks:
 
     def __init__(self, linear_solver):
         self._linear_solver = linear_solver
+        self.rank = _core.LaunchedRank()
+        self.size = linear_solver.Processes()
 
     def all_gather(self, value) -> list:
         """Collective: every rank's ``value`` (picklable), in rank order, on every rank."""

@@ -296,6 +296,58 @@ def test_a_json_check_on_a_cut_model_passes_or_fails_on_every_rank_with_one_mess
     assert messages[2][:len(messages[1])] == messages[1]
 
 
+def test_the_vtu_output_of_a_cut_model_is_a_piece_per_rank_under_a_pvtu(tmp_path):
+    """vtk_output on 2 ranks: each step a PVTU (written by rank 0, listed by the PVD) over one VTU
+    piece per rank; the pieces' points not flagged as ghosts are the serial run's nodes, each once,
+    with its displacements, and the pieces' cells are the serial run's cells, each once."""
+    import xml.etree.ElementTree as ET
+
+    import meshio
+
+    written = {}
+    for processes, env in ((1, ENV), (2, PARTITIONED)):
+        folder = tmp_path / f"ranks{processes}"
+        folder.mkdir()
+        path = _write_cut_case(folder, "hertz2d-mumps")
+        with open(path) as f:
+            parameters = json.load(f)
+        part = parameters["processes"]["json_output"][0]["Parameters"]["model_part_name"]
+        parameters["output_processes"] = {"vtk_output": [
+            {"python_module": "vtk_output_process", "kratos_module": "KratosMultiphysics",
+             "Parameters": {"model_part_name": part, "output_path": "vtk", "write_ids": True,
+                            "nodal_solution_step_data_variables": ["DISPLACEMENT"]}}]}
+        with open(path, "w") as f:
+            json.dump(parameters, f, indent=1)
+        done = _run(folder, processes, env)
+        assert done.returncode == 0, done.stdout + done.stderr
+        written[processes] = folder / "vtk"
+    collection = ET.parse(next(written[2].glob("*.pvd"))).getroot()
+    steps = [entry.get("file") for entry in collection.iter("DataSet")]
+    serial_steps = [entry.get("file") for entry in ET.parse(next(written[1].glob("*.pvd"))).getroot().iter("DataSet")]
+    assert [name.replace(".pvtu", ".vtu") for name in steps] == serial_steps
+    for name, serial_name in zip(steps, serial_steps):
+        grid = ET.parse(written[2] / name).getroot().find("PUnstructuredGrid")
+        sources = [piece.get("Source") for piece in grid.iter("Piece")]
+        assert len(sources) == 2
+        declared = {array.get("Name") for array in grid.find("PPointData")}
+        serial = meshio.read(written[1] / serial_name)
+        ids, displacements, cells = [], [], []
+        for source in sources:
+            piece = meshio.read(written[2] / source)
+            assert set(piece.point_data) == declared
+            owned = piece.point_data["vtkGhostType"] == 0
+            ids.append(piece.point_data["KRATOS_NODE_ID"][owned])
+            displacements.append(piece.point_data["DISPLACEMENT"][owned])
+            cells.append(np.concatenate(piece.cell_data["KRATOS_ELEMENT_ID"]))
+        ids, displacements, cells = np.concatenate(ids), np.concatenate(displacements), np.concatenate(cells)
+        assert sorted(ids) == sorted(serial.point_data["KRATOS_NODE_ID"]), f"{name}: not every node once"
+        assert sorted(cells) == sorted(np.concatenate(serial.cell_data["KRATOS_ELEMENT_ID"])), name
+        order = np.argsort(ids)
+        scale = np.abs(serial.point_data["DISPLACEMENT"]).max()
+        assert scale > 0.0, f"{name}: nothing to compare"
+        assert np.abs(displacements[order] - serial.point_data["DISPLACEMENT"]).max() <= 1e-12 * scale, name
+
+
 ERRORS = {
     # Not a silent run of the whole problem on every rank: the error names the key and 'petsc'.
     "serial-solver": ({"solver_type": "skyline_lu_factorization"}, 2, "input error",
