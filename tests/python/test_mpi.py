@@ -191,10 +191,11 @@ def _worst_difference(distributed: dict, serial: dict, file: str) -> tuple[float
 PARTITIONED = dict(ENV, MORTARCONTACT_PARTITIONED_MODEL="1")
 
 
-def _write_cut_case(folder, run: str) -> str:
+def _write_cut_case(folder, run: str, more=None) -> str:
     """`_write_case` with the block builder (the only one solving a piece; the elimination builder
     is refused there) and a third JSON output: the resultant (sum over the nodes) of the
-    displacements, which a cut model must sum over the nodes each rank owns, each once."""
+    displacements, which a cut model must sum over the nodes each rank owns, each once. `more`
+    (parameters, name of the model part) adds to the parameters."""
     case, components, linear_solver = RUNS[run]
     path = _write_case(folder, case, components, linear_solver, CONTACT_SETTINGS.get(run, {}))
     with open(path) as f:
@@ -203,6 +204,8 @@ def _write_cut_case(folder, run: str) -> str:
     outputs = parameters["processes"]["json_output"]
     outputs.append(json.loads(json.dumps(outputs[0])))
     outputs[-1]["Parameters"].update(resultant_solution=True, output_file_name="resultant.json")
+    if more is not None:
+        more(parameters, outputs[0]["Parameters"]["model_part_name"])
     with open(path, "w") as f:
         json.dump(parameters, f, indent=1)
     return path
@@ -263,22 +266,19 @@ def test_a_json_check_on_a_cut_model_passes_or_fails_on_every_rank_with_one_mess
     shifted = json.loads(json.dumps(displacements))
     for node in ids[len(ids) // 2:]:
         shifted[f"NODE_{node}"]["DISPLACEMENT_Y"] = [v + 1.0 for v in shifted[f"NODE_{node}"]["DISPLACEMENT_Y"]]
+    def check(parameters, part):
+        parameters["processes"]["json_check_process"] = [
+            {"python_module": "from_json_check_result_process", "kratos_module": "KratosMultiphysics",
+             "Parameters": {"model_part_name": part, "check_variables": ["DISPLACEMENT"],
+                            "input_file_name": "reference.json", "time_frequency": 0.0,
+                            "tolerance": 1e-6, "relative_tolerance": 1e-6}}]
+
     messages = {}
     for name, contents in (("passes", displacements), ("fails", shifted)):
         for processes, env in ((1, ENV), (2, PARTITIONED)):
             folder = tmp_path / f"{name}{processes}"
             folder.mkdir()
-            path = _write_cut_case(folder, "hertz2d-mumps")
-            with open(path) as f:
-                parameters = json.load(f)
-            part = parameters["processes"]["json_output"][0]["Parameters"]["model_part_name"]
-            parameters["processes"]["json_check_process"] = [
-                {"python_module": "from_json_check_result_process", "kratos_module": "KratosMultiphysics",
-                 "Parameters": {"model_part_name": part, "check_variables": ["DISPLACEMENT"],
-                                "input_file_name": "reference.json", "time_frequency": 0.0,
-                                "tolerance": 1e-6, "relative_tolerance": 1e-6}}]
-            with open(path, "w") as f:
-                json.dump(parameters, f, indent=1)
+            _write_cut_case(folder, "hertz2d-mumps", check)
             with open(folder / "reference.json", "w") as f:
                 json.dump(contents, f)
             done = _run(folder, processes, env)
@@ -304,20 +304,17 @@ def test_the_vtu_output_of_a_cut_model_is_a_piece_per_rank_under_a_pvtu(tmp_path
 
     import meshio
 
-    written = {}
-    for processes, env in ((1, ENV), (2, PARTITIONED)):
-        folder = tmp_path / f"ranks{processes}"
-        folder.mkdir()
-        path = _write_cut_case(folder, "hertz2d-mumps")
-        with open(path) as f:
-            parameters = json.load(f)
-        part = parameters["processes"]["json_output"][0]["Parameters"]["model_part_name"]
+    def vtk_output(parameters, part):
         parameters["output_processes"] = {"vtk_output": [
             {"python_module": "vtk_output_process", "kratos_module": "KratosMultiphysics",
              "Parameters": {"model_part_name": part, "output_path": "vtk", "write_ids": True,
                             "nodal_solution_step_data_variables": ["DISPLACEMENT"]}}]}
-        with open(path, "w") as f:
-            json.dump(parameters, f, indent=1)
+
+    written = {}
+    for processes, env in ((1, ENV), (2, PARTITIONED)):
+        folder = tmp_path / f"ranks{processes}"
+        folder.mkdir()
+        _write_cut_case(folder, "hertz2d-mumps", vtk_output)
         done = _run(folder, processes, env)
         assert done.returncode == 0, done.stdout + done.stderr
         written[processes] = folder / "vtk"
