@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
+#include <pybind11/numpy.h>
+
 #include <optional>
 #if defined(__GLIBC__)
 #include <malloc.h>
@@ -364,6 +366,37 @@ void AddSolvingToPython(py::module_& m) {
       "the linear solver's processes, keeps the partition with the model and cuts it to this rank's piece (the "
       "entities touching its nodes, their nodes, the `replicated` sub model parts whole). Returns the piece's "
       "counts.");
+  m.def(
+      "AllGather",
+      [](const LinearSolver& solver, const py::bytes& data) {
+        const AssemblyCommunicator* communicator = solver.Communicator();
+        if (!communicator) throw Error("AllGather: the linear solver solves on one process; nothing to gather");
+        std::vector<std::string> gathered;
+        {
+          const std::string bytes = data;
+          py::gil_scoped_release release;
+          gathered = communicator->AllGather(bytes);
+        }
+        py::list result;
+        for (const std::string& bytes : gathered) result.append(py::bytes(bytes));
+        return result;
+      },
+      py::arg("linear_solver"), py::arg("data"),
+      "Collective under mpirun: every rank's `data` (bytes), in rank order, on every rank.");
+  m.def(
+      "OwnedNodes",
+      [](const ModelPart& part) {
+        const NodePartition* partition = part.GetNodePartition();
+        if (!partition) throw Error(Concat("OwnedNodes: model part '", part.FullName(), "' is not cut across ranks"));
+        const int rank = AssemblyCommunicator::LaunchedRank();
+        py::array_t<bool> owned(static_cast<py::ssize_t>(part.NumberOfNodes()));
+        bool* out = owned.mutable_data();
+        for (const Node* node : part.Nodes()) *out++ = partition->Owner(*node) == rank;
+        return owned;
+      },
+      py::arg("model_part"),
+      "Of a model cut across the ranks (CutModelPart): whether this rank owns each node of `model_part`, in "
+      "the order of its nodes (node-id order).");
 }
 
 }  // namespace mc::python

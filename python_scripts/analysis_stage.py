@@ -21,7 +21,7 @@ from contextlib import contextmanager
 from . import _core
 from .process_factory import create_process_lists, naming_the_item
 from .project_parameters import migrate_project_parameters, read_project_parameters
-from .restart import attach_run
+from .restart import SaveRestartProcess, attach_run
 from .solvers import create_solver
 from .utilities import partitioned_model, secondary_process, warn
 
@@ -71,8 +71,10 @@ class StructuralMechanicsAnalysis:
         self.solver.ImportModelPart()
         self.solver.AddDofs()
         self.processes = self._create_processes("processes")
-        # Under mpirun the ranks hold the same model: only rank 0 writes it out.
-        self.output_processes = [] if secondary_process() else self._create_processes("output_processes")
+        # Under mpirun the ranks hold the same model: only rank 0 writes it out. A model cut across
+        # the ranks is written by every rank (its piece) and gathered: every rank makes them.
+        writes = not secondary_process() or partitioned_model()
+        self.output_processes = self._create_processes("output_processes") if writes else []
         attach_run(self._all_processes(), self.solver.mesh_record, self.solver)
         for process in self._all_processes():
             with naming_the_item(getattr(process, "item_where", "")):
@@ -188,15 +190,17 @@ class StructuralMechanicsAnalysis:
 
     # -- helpers ----------------------------------------------------------------------------
     def _cut_model(self) -> None:
-        """Each rank keeps its piece of the model from here on (docs/DESIGN.md, several processes).
-        The outputs are not gathered yet: rank 0 writes what its piece holds."""
+        """Each rank keeps its piece of the model from here on (docs/DESIGN.md, several processes);
+        the processes are handed the ranks to gather their results from the pieces."""
         piece = self.solver.CutModel(self._all_processes())
+        for process in self._all_processes():
+            process.ExecuteAfterModelCut(self.solver.ranks)
         if self.echo_level >= 1:
             print(f"model cut across {_core.LaunchedProcesses()} processes; rank 0 keeps {piece['owned_nodes']} "
                   f"owned and {piece['ghost_nodes']} ghost nodes, {piece['elements']} elements")
-        if not secondary_process():
-            warn("MORTARCONTACT_PARTITIONED_MODEL=1: the outputs (VTU, JSON output, restart) are not gathered across "
-                 "the ranks yet; they hold rank 0's piece of the model (its nodes and the whole contact interface)")
+        if not secondary_process() and any(isinstance(p, SaveRestartProcess) for p in self.output_processes):
+            warn("MORTARCONTACT_PARTITIONED_MODEL=1: restart checkpoints are not gathered across the ranks yet; "
+                 "they hold rank 0's piece of the model (its nodes and the whole contact interface)")
 
     def _all_processes(self):
         return [*self.processes, *self.output_processes]

@@ -42,6 +42,10 @@ class Process:
         returns the model parts every rank must keep whole (the contact interfaces)."""
         return []
 
+    def ExecuteAfterModelCut(self, ranks) -> None:
+        """Right after the model is cut (see ``ExecuteBeforeModelCut``): ``ranks`` (a ``Ranks``)
+        gathers what a process reports on the whole model from the ranks' pieces."""
+
     def ExecuteAfterFailure(self) -> None:
         """The run stops on a solution error (mortarcontact's hook, not Kratos'): a process that
         writes its results only at the end writes what the converged steps produced."""

@@ -3,6 +3,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace mc {
@@ -26,6 +27,9 @@ class AssemblyCommunicator {
   /// list rank r sent here: the neighbour exchange of a distributed numbering and of ghost values.
   virtual std::vector<std::vector<std::int64_t>> Exchange(
       const std::vector<std::vector<std::int64_t>>& outgoing) const = 0;
+  /// Every rank's `bytes`, in rank order, on every rank (one Exchange): how the outputs of a model
+  /// cut across the ranks reach rank 0, and how a check on each rank's piece reaches every rank.
+  std::vector<std::string> AllGather(const std::string& bytes) const;
 
   /// How many processes the launcher (mpirun, mpiexec, srun) started this one among, and its
   /// rank, read from the launcher's environment (OMPI_COMM_WORLD_SIZE, PMI_SIZE, ...) before any

@@ -62,17 +62,22 @@ class _PartWriter:
         self.series_mesh_key = None
         self._cells_key = None
         self._cells = None
+        self.ranks = None  # a model cut across the ranks: this rank writes its piece under a PVTU
 
     # --- mesh ----------------------------------------------------------------------------------
     def cells(self, entity_type: str):
-        """[(meshio type, connectivity as point indices, entity ids)], and whether they are
-        conditions; cached while the numbers of nodes / elements / conditions do not change."""
+        """[(meshio type, connectivity as point indices, entity ids)], whether they are conditions,
+        and the points: the indices of the part's nodes they are (all of them but on a piece) and
+        whether each is a ghost; cached while the numbers of nodes / elements / conditions do not
+        change. A piece of a cut model holds the entities whose first node the rank owns, the nodes
+        it owns and the ghosts those entities use (flagged, so that ParaView shows each node once)."""
         part = self.part
         key = (entity_type, part.NumberOfNodes(), part.NumberOfElements(), part.NumberOfConditions())
         if key == self._cells_key:
             return self._cells
         use_conditions = entity_type == "condition" or (entity_type == "automatic" and part.NumberOfElements() == 0)
         node_ids = part.NodeIds()
+        owned = self.ranks.owned_nodes(part) if self.ranks is not None else np.ones(len(node_ids), dtype=bool)
         groups = entity_connectivity(part, conditions=use_conditions) if entity_type != "none" else {}
         blocks = []
         for geometry, (ids, connectivity) in sorted(groups.items()):
@@ -87,28 +92,51 @@ class _PartWriter:
                             int(np.count_nonzero(~inside)), "conditions" if use_conditions else "elements",
                             part.FullName())
                 index, ids = index[inside], ids[inside]
+            if self.ranks is not None:  # the entities whose first node this rank owns
+                index, ids = index[owned[index[:, 0]]], ids[owned[index[:, 0]]]
+                if not len(ids):  # meshio writes no empty block
+                    continue
             if cell_type in _VTK_ORDER:
                 index = index[:, _VTK_ORDER[cell_type]]
             blocks.append((cell_type, index.astype(np.int64), ids))
         if not blocks:
-            # A part of nodes only: one vertex per node so that ParaView shows them.
-            blocks.append(("vertex", np.arange(len(node_ids), dtype=np.int64).reshape(-1, 1), node_ids))
+            # A part of nodes only: one vertex per (owned) node so that ParaView shows them.
+            index = np.flatnonzero(owned)
+            blocks.append(("vertex", index.astype(np.int64).reshape(-1, 1), node_ids[index]))
             use_conditions = None
-        self._cells_key, self._cells = key, (blocks, use_conditions)
+        # The points: the owned nodes and the ghosts the cells use, renumbered in node order.
+        used = owned.copy()
+        for _, connectivity, _ in blocks:
+            used[connectivity.ravel()] = True
+        points = np.flatnonzero(used)
+        renumbered = np.full(len(node_ids), -1, dtype=np.int64)
+        renumbered[points] = np.arange(len(points))
+        blocks = [(cell_type, renumbered[connectivity], ids) for cell_type, connectivity, ids in blocks]
+        self._cells_key, self._cells = key, (blocks, use_conditions, points, ~owned[points])
         return self._cells
 
     # --- files ---------------------------------------------------------------------------------
     def write_vtu(self, label: int, time: float, mesh: meshio.Mesh, binary: bool) -> None:
-        name = f"{self.base_name}_{label}.vtu"
+        """The step's VTU file; of a cut model, this rank's piece ``<name>_<rank>_<label>.vtu``
+        (Kratos' naming of its MPI pieces) and, by rank 0, the ``<name>_<label>.pvtu`` of them all."""
+        if self.ranks is None:
+            name = f"{self.base_name}_{label}.vtu"
+            piece = name
+        else:
+            name = f"{self.base_name}_{label}.pvtu"
+            piece = f"{self.base_name}_{self.ranks.rank}_{label}.vtu"
         handle, temporary = tempfile.mkstemp(prefix=".", suffix=".vtu", dir=self.folder)
         os.close(handle)
         try:
             meshio.vtu.write(temporary, mesh, binary=binary)
-            publish_file(temporary, os.path.join(self.folder, name))
+            publish_file(temporary, os.path.join(self.folder, piece), every_rank=self.ranks is not None)
         except BaseException:
             if os.path.exists(temporary):
                 os.remove(temporary)
             raise
+        if self.ranks is not None:
+            pieces = [f"{self.base_name}_{rank}_{label}.vtu" for rank in range(self.ranks.size)]
+            write_text_atomically(os.path.join(self.folder, name), _pvtu(mesh, pieces))
         self.pvd_entries = [(t, f) for t, f in self.pvd_entries if f != name] + [(time, name)]
         self.write_pvd()
 
@@ -152,11 +180,37 @@ class _PartWriter:
         return [os.path.join(self.folder, f"{self.base_name}.pvd")] if self.pvd_entries else []
 
 
+def _pvtu(mesh: meshio.Mesh, pieces: list[str]) -> str:
+    """The PUnstructuredGrid over ``pieces``, which hold the arrays of ``mesh`` (this rank's piece:
+    every piece has the same arrays), typed as meshio writes them (points always 3D)."""
+
+    def vtk_type(dtype: np.dtype) -> str:  # Float64, Int64, UInt8, ...
+        return f"{ {'f': 'Float', 'u': 'UInt'}.get(dtype.kind, 'Int')}{dtype.itemsize * 8}"
+
+    def declarations(arrays) -> list[str]:
+        return [f'      <PDataArray type="{vtk_type(data.dtype)}" Name={quoteattr(name)} '
+                f'NumberOfComponents="{data.shape[1] if data.ndim == 2 else 1}"/>' for name, data in arrays]
+
+    cells = [(name, np.concatenate(blocks)) for name, blocks in mesh.cell_data.items()]
+    lines = ['<?xml version="1.0"?>',
+             '<VTKFile type="PUnstructuredGrid" version="0.1" byte_order="LittleEndian">',
+             '  <PUnstructuredGrid GhostLevel="0">',  # no ghost cells; ghost points flagged in the pieces
+             "    <PPointData>", *declarations(mesh.point_data.items()), "    </PPointData>",
+             "    <PCellData>", *declarations(cells), "    </PCellData>",
+             "    <PPoints>",
+             f'      <PDataArray type="{vtk_type(mesh.points.dtype)}" NumberOfComponents="3"/>',
+             "    </PPoints>",
+             *(f"    <Piece Source={quoteattr(piece)}/>" for piece in pieces),
+             "  </PUnstructuredGrid>", "</VTKFile>", ""]
+    return "\n".join(lines)
+
+
 class VtkOutputProcess(OutputProcess):
     """Writes one VTU file per output step (``<path>/<prefix><part><postfix>_<step>.vtu``) and a
     ``.pvd`` collection listing every step with its TIME, rewritten after each step so that
     ParaView can open it during the run. ``file_format`` ``"xdmf"`` writes one XDMF + HDF5 time
-    series per part instead (mesh fixed in time).
+    series per part instead (mesh fixed in time). Of a model cut across the ranks, each rank writes
+    its piece ``<...>_<rank>_<step>.vtu`` and rank 0 the ``<...>_<step>.pvtu`` the PVD lists.
 
     Cells: the elements of the part (``entity_type`` "automatic": the conditions if there are no
     elements; a part with neither is written as vertices). Point data: the historical variables
@@ -244,6 +298,16 @@ class VtkOutputProcess(OutputProcess):
         self.writers = [_PartWriter(part, self.folder, f"{prefix}{part.FullName()}{postfix}", self.file_format)
                         for part in parts]
 
+    def ExecuteAfterModelCut(self, ranks) -> None:
+        if self.file_format == "xdmf":
+            raise _core.NotImplementedFeatureError(
+                f"{self.settings['file_format'].Where()}: 'xdmf' of a model cut across {ranks.size} processes "
+                "(MORTARCONTACT_PARTITIONED_MODEL=1); use \"binary\" or \"ascii\" (a VTU piece per process)")
+        if not self.writers:
+            self.ExecuteInitialize()
+        for writer in self.writers:
+            writer.ranks = ranks
+
     def Check(self) -> None:
         key = "nodal_solution_step_data_variables"
         for writer in self.writers:
@@ -320,18 +384,21 @@ class VtkOutputProcess(OutputProcess):
     def _mesh(self, writer: _PartWriter) -> meshio.Mesh:
         part = writer.part
         entity = "none" if part.NumberOfElements() == 0 and part.NumberOfConditions() == 0 else self.entity_type
-        blocks, conditions = writer.cells(entity)
+        blocks, conditions, nodes, ghosts = writer.cells(entity)
         deformed = self.settings["write_deformed_configuration"].GetBool()
-        points = np.asarray(part.NodeCoordinates(not deformed), dtype=float)
+        points = np.asarray(part.NodeCoordinates(not deformed), dtype=float)[nodes]
         point_data = {}
         for key, historical in (("nodal_solution_step_data_variables", True), ("nodal_data_value_variables", False)):
             for variable in self.variables[key]:
-                point_data[variable.Name()] = nodal_values(part, variable, historical=historical)
-                self.unset.check(part, variable, historical, point_data[variable.Name()])
+                values = nodal_values(part, variable, historical=historical)
+                self.unset.check(part, variable, historical, values)
+                point_data[variable.Name()] = values[nodes]
         for flag in self.flags["nodal_flags"]:
-            point_data[flag.Name()] = nodal_flags(part, flag).astype(np.float64)
+            point_data[flag.Name()] = nodal_flags(part, flag)[nodes].astype(np.float64)
         if self.settings["write_ids"].GetBool():
-            point_data["KRATOS_NODE_ID"] = part.NodeIds().astype(np.int64)
+            point_data["KRATOS_NODE_ID"] = part.NodeIds()[nodes].astype(np.int64)
+        if writer.ranks is not None:  # VTK's flag of a point another piece holds (vtkDataSetAttributes)
+            point_data["vtkGhostType"] = np.where(ghosts, 1, 0).astype(np.uint8)
         cell_data = self._cell_data(part, blocks, conditions)
         cells = [(cell_type, connectivity) for cell_type, connectivity, _ in blocks]
         return meshio.Mesh(points, cells, point_data=point_data, cell_data=cell_data)

@@ -77,6 +77,46 @@ def gauss_point_columns(element, variable_name: str, info) -> dict[str, list[flo
                            "on integration points")
 
 
+def owned_mask(ranks, part, mask: np.ndarray) -> np.ndarray:
+    """``mask`` restricted to the nodes this rank reports (all of them without ``ranks``)."""
+    return mask if ranks is None else mask & ranks.owned_nodes(part)
+
+
+def selected_elements(part, flag_name: str, ranks) -> list:
+    """The elements with the ``check_for_flag`` flag ("" = all) that this rank reports."""
+    flag = _core.GetFlag(flag_name) if flag_name else None
+    owned = None if ranks is None else ranks.owned_elements(part)
+    return [element for element in part.Elements
+            if (flag is None or element.Is(flag)) and (owned is None or element.Id in owned)]
+
+
+def merge_pieces(pieces: list[tuple[dict, dict]]) -> dict:
+    """The serial run's results from each rank's ``(results of the entities it owns, {node key:
+    node id})``: the times, the resultants summed over the ranks, the nodes in node-id order, then
+    the elements in id order. A resultant sums the ranks' partial sums: it differs from the serial
+    sum in the last bits only."""
+    merged: dict = {"TIME": pieces[0][0]["TIME"]}
+    resultants = [data["RESULTANT"] for data, _ in pieces if "RESULTANT" in data]
+    if resultants:
+        merged["RESULTANT"] = _summed(resultants)
+    entities, node_ids = {}, {}
+    for data, ids in pieces:
+        entities.update((key, value) for key, value in data.items() if key not in ("TIME", "RESULTANT"))
+        node_ids.update(ids)
+    nodes = sorted((key for key in entities if key in node_ids), key=node_ids.__getitem__)
+    elements = sorted((key for key in entities if key not in node_ids), key=lambda key: int(key.split("_")[1]))
+    merged.update((key, entities[key]) for key in (*nodes, *elements))
+    return merged
+
+
+def _summed(series: list):
+    """The element-wise sum of equally nested ``{key: [...] or {...}}`` (a key some lack counts 0)."""
+    if isinstance(series[0], list):
+        return [float(sum(values)) for values in zip(*series)]
+    keys = list(dict.fromkeys(key for entry in series for key in entry))
+    return {key: _summed([entry[key] for entry in series if key in entry]) for key in keys}
+
+
 def write_json_atomically(path: str, data) -> None:
     write_text_atomically(path, json.dumps(data, indent=4))
 
@@ -123,6 +163,10 @@ class JsonResultsProcess(Process):
         self.counter = TimeCounter(s["time_frequency"].GetDouble())
         self.model_part = None
         self.unset = UnsetVariableWarning(self.NAME)
+        self.ranks = None  # a model cut across the ranks: each reports what it owns
+
+    def ExecuteAfterModelCut(self, ranks) -> None:
+        self.ranks = ranks
 
     def RestartState(self):
         return {"elapsed": self.counter.elapsed}

@@ -12,7 +12,9 @@ from ._json_results import (
     gauss_point_columns,
     node_keys,
     node_mask,
+    owned_mask,
     results_model_part,
+    selected_elements,
     value_columns,
 )
 
@@ -58,8 +60,9 @@ class FromJsonCheckResultProcess(JsonResultsProcess):
     ``input_file_name`` (required), ``model_part_name`` (required), ``sub_model_part_name`` (""),
     ``check_for_flag`` (""), ``historical_value`` (true), ``tolerance`` (1e-3, absolute),
     ``relative_tolerance`` (1e-6), ``time_frequency`` (1.0), ``use_node_coordinates`` (false),
-    ``check_only_local_entities`` (false; serial runs check everything), ``help``. A non-historical
-    variable that no node holds is checked as zeros, with a warning.
+    ``check_only_local_entities`` (false; without effect: every entity is checked once, on a model
+    cut across the ranks by its owner), ``help``. A non-historical variable that no node holds is
+    checked as zeros, with a warning.
     """
 
     NAME = "from_json_check_result_process"
@@ -115,9 +118,7 @@ class FromJsonCheckResultProcess(JsonResultsProcess):
             return
         time = float(info.GetValue(_core.TIME))
         i, j, w = interpolation_weights(self.times, time)
-        failures: list[str] = []
-        self._check_nodes(time, i, j, w, failures)
-        self._check_gauss_points(time, i, j, w, failures)
+        failures = self._failures(time, i, j, w)
         self.checks_done += 1
         if failures:
             shown = "\n  ".join(failures[:10])
@@ -125,6 +126,27 @@ class FromJsonCheckResultProcess(JsonResultsProcess):
             raise CheckResultError(f"{self.file_name}: {len(failures)} value(s) differ from the reference "
                                    f"at time {time:.10g} (tolerance {self.tolerance:g}, relative_tolerance "
                                    f"{self.relative_tolerance:g}):\n  {shown}{more}")
+
+    def _failures(self, time, i, j, w) -> list[str]:
+        """The failed comparisons in the serial run's order. Of a model cut across the ranks, each
+        rank compares the entities it owns and every rank gets all the failures (and the first
+        rank's reference error), so that every rank passes or stops together, with one message."""
+        failures: list[tuple[tuple, str]] = []  # (place in the serial order, message)
+        problem = ""
+        try:
+            self._check_nodes(time, i, j, w, failures)
+            self._check_gauss_points(time, i, j, w, failures)
+        except _core.InputError as error:
+            if self.ranks is None:
+                raise
+            problem = str(error)
+        if self.ranks is not None:
+            pieces = self.ranks.all_gather((failures, problem))
+            problem = next((piece_problem for _, piece_problem in pieces if piece_problem), "")
+            if problem:
+                raise _core.InputError(problem)
+            failures = sorted(failure for piece_failures, _ in pieces for failure in piece_failures)
+        return [message for _, message in failures]
 
     def RestartState(self):
         return {**super().RestartState(), "checks_done": self.checks_done}
@@ -141,29 +163,28 @@ class FromJsonCheckResultProcess(JsonResultsProcess):
     def _check_nodes(self, time, i, j, w, failures) -> None:
         if not self.variables:
             return
-        mask = node_mask(self.model_part, self.flag)
+        mask = owned_mask(self.ranks, self.model_part, node_mask(self.model_part, self.flag))
         keys = node_keys(self.model_part, mask, self.use_coordinates)
         ids = self.model_part.NodeIds()[mask]
-        for name in self.variables:
-            for key, values in value_columns(self.model_part, name, self.historical, mask, self.unset).items():
+        for v, name in enumerate(self.variables):
+            columns = value_columns(self.model_part, name, self.historical, mask, self.unset)
+            for c, (key, values) in enumerate(columns.items()):
                 series = np.asarray([self._reference_series(node_key, key) for node_key in keys]).reshape(len(keys), -1)
                 reference = (1.0 - w) * series[:, i] + w * series[:, j] if len(keys) else np.zeros(0)
                 bad = np.flatnonzero(~is_close(values, reference, self.tolerance, self.relative_tolerance))
-                failures.extend(self._failure(f"node {ids[k]}", key, time, values[k], reference[k]) for k in bad)
+                failures.extend(((0, v, c, int(ids[k]), 0), self._failure(f"node {ids[k]}", key, time, values[k],
+                                                                          reference[k])) for k in bad)
 
     def _check_gauss_points(self, time, i, j, w, failures) -> None:
         if not self.gauss_variables:
             return
         info = self.model_part.ProcessInfo
-        flag = _core.GetFlag(self.flag) if self.flag else None
-        for element in self.model_part.Elements:
-            if flag is not None and not element.Is(flag):
-                continue
-            for name in self.gauss_variables:
-                for key, values in gauss_point_columns(element, name, info).items():
+        for element in selected_elements(self.model_part, self.flag, self.ranks):
+            for v, name in enumerate(self.gauss_variables):
+                for c, (key, values) in enumerate(gauss_point_columns(element, name, info).items()):
                     for gp, value in enumerate(values):
                         series = self._reference_series(f"ELEMENT_{element.Id}", key, str(gp))
                         reference = (1.0 - w) * series[i] + w * series[j]
                         if not is_close(value, reference, self.tolerance, self.relative_tolerance):
-                            failures.append(self._failure(f"element {element.Id} point {gp}", key, time, value,
-                                                          reference))
+                            failures.append(((1, element.Id, v, c, gp), self._failure(
+                                f"element {element.Id} point {gp}", key, time, value, reference)))

@@ -8,9 +8,12 @@ from .. import _core
 from ._json_results import (
     JsonResultsProcess,
     gauss_point_columns,
+    merge_pieces,
     node_keys,
     node_mask,
+    owned_mask,
     results_model_part,
+    selected_elements,
     value_columns,
     write_json_atomically,
 )
@@ -48,6 +51,7 @@ class JsonOutputProcess(JsonResultsProcess):
         super().__init__(model, settings)
         self.resultant = self.settings["resultant_solution"].GetBool()
         self.data: dict = {"TIME": []}
+        self.node_ids: dict[str, int] = {}  # node key -> id, to merge the pieces of a cut model
         self.written = False
 
     def ExecuteInitialize(self) -> None:
@@ -66,8 +70,10 @@ class JsonOutputProcess(JsonResultsProcess):
     def _sample_nodes(self) -> None:
         if not self.variables:
             return
-        mask = node_mask(self.model_part, self.flag)
+        mask = owned_mask(self.ranks, self.model_part, node_mask(self.model_part, self.flag))
         keys = node_keys(self.model_part, mask, self.use_coordinates)
+        if self.ranks is not None and not self.resultant:
+            self.node_ids.update(zip(keys, self.model_part.NodeIds()[mask].tolist()))
         for name in self.variables:
             for key, values in value_columns(self.model_part, name, self.historical, mask, self.unset).items():
                 if self.resultant:
@@ -80,10 +86,7 @@ class JsonOutputProcess(JsonResultsProcess):
         if not self.gauss_variables:
             return
         info = self.model_part.ProcessInfo
-        flag = _core.GetFlag(self.flag) if self.flag else None
-        for element in self.model_part.Elements:
-            if flag is not None and not element.Is(flag):
-                continue
+        for element in selected_elements(self.model_part, self.flag, self.ranks):
             for name in self.gauss_variables:
                 try:
                     columns = gauss_point_columns(element, name, info)
@@ -103,8 +106,10 @@ class JsonOutputProcess(JsonResultsProcess):
                             series.append(value)
 
     def write(self) -> None:
-        """Writes what was recorded so far (atomically)."""
-        write_json_atomically(self.file_name, self.data)
+        """Writes what was recorded so far (atomically); of a cut model, what the ranks recorded,
+        merged on every rank (collective) and written by rank 0."""
+        data = self.data if self.ranks is None else merge_pieces(self.ranks.all_gather((self.data, self.node_ids)))
+        write_json_atomically(self.file_name, data)
         self.written = True
 
     def OutputFiles(self) -> list[str]:

@@ -8,7 +8,7 @@ import re
 from .. import _core
 from ..process import OutputProcess
 from ..processes.model_part_resolution import resolve_model_part
-from ..utilities import warn_about_keys_without_effect
+from ..utilities import secondary_process, warn_about_keys_without_effect
 from .checkpoint import pretty_time, write_checkpoint
 
 SERIALIZER_TRACES = ("no_trace", "trace_error", "trace_all")
@@ -132,7 +132,9 @@ class SaveRestartProcess(OutputProcess):
         self._remove_old_files()
 
     def _remove_old_files(self) -> None:
-        if self.max_files < 0:
+        # Under mpirun with a model cut across the ranks every rank runs this process; rank 0 alone
+        # writes the files and prunes them.
+        if self.max_files < 0 or secondary_process():
             return
         pattern = re.compile(re.escape(self.stem) + r"_(.+)\.rest$")
         labelled = []

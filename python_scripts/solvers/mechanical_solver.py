@@ -8,6 +8,7 @@ import os
 
 from .. import _core
 from ..processes.model_part_resolution import resolve_model_part
+from ..ranks import Ranks
 from ..restart import Checkpoint, mesh_record, restart_file_name, restart_folder
 from ..utilities import nearest, warn
 from .convergence_history import ConvergenceHistory
@@ -47,6 +48,7 @@ class MechanicalSolver:
         self.strategy = None
         self.pending_fixities = None
         self.checkpoint = None  # the restart checkpoint to resume from (input_type "rest")
+        self.ranks = None  # a model cut across the ranks: gathers their results (CutModel)
         self.mesh_record = None  # the mesh file and its import settings, for checkpoints
         self.mesh_path = None  # the mesh file read, named in errors about its entities
         self.sub_step_callbacks = (None, None)
@@ -288,7 +290,7 @@ class MechanicalSolver:
         is made first, on the whole model: its communicator partitions the nodes, and what it
         decides from the model's size is what the serial run decides. Each process computes what
         needs the whole model (ExecuteBeforeModelCut) and names the parts every rank keeps whole.
-        Returns the piece's counts."""
+        Returns the piece's counts; ``self.ranks`` then gathers the pieces' results."""
         self._check_explicit_on_one_process()
         if self.checkpoint is not None:
             raise _core.NotImplementedFeatureError(
@@ -296,7 +298,9 @@ class MechanicalSolver:
                 "(MORTARCONTACT_PARTITIONED_MODEL=1); resume without it")
         self._early_linear_solver = self._new_linear_solver()
         replicated = [part for process in processes for part in process.ExecuteBeforeModelCut()]
-        return _core.CutModelPart(self.main_model_part, self._early_linear_solver, replicated)
+        piece = _core.CutModelPart(self.main_model_part, self._early_linear_solver, replicated)
+        self.ranks = Ranks(self._early_linear_solver)
+        return piece
 
     def _linear_solver(self):
         """The linear solver CutModel made, else a new one."""

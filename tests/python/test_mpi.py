@@ -191,40 +191,158 @@ def _worst_difference(distributed: dict, serial: dict, file: str) -> tuple[float
 PARTITIONED = dict(ENV, MORTARCONTACT_PARTITIONED_MODEL="1")
 
 
+def _write_cut_case(folder, run: str, more=None) -> str:
+    """`_write_case` with the block builder (the only one solving a piece; the elimination builder
+    is refused there) and a third JSON output: the resultant (sum over the nodes) of the
+    displacements, which a cut model must sum over the nodes each rank owns, each once. `more`
+    (parameters, name of the model part) adds to the parameters."""
+    case, components, linear_solver = RUNS[run]
+    path = _write_case(folder, case, components, linear_solver, CONTACT_SETTINGS.get(run, {}))
+    with open(path) as f:
+        parameters = json.load(f)
+    parameters["solver_settings"]["block_builder"] = True
+    outputs = parameters["processes"]["json_output"]
+    outputs.append(json.loads(json.dumps(outputs[0])))
+    outputs[-1]["Parameters"].update(resultant_solution=True, output_file_name="resultant.json")
+    if more is not None:
+        more(parameters, outputs[0]["Parameters"]["model_part_name"])
+    with open(path, "w") as f:
+        json.dump(parameters, f, indent=1)
+    return path
+
+
+def _json_file(folder, name: str) -> dict:
+    with open(os.path.join(folder, name)) as f:
+        return json.load(f)
+
+
 @pytest.mark.parametrize("run", sorted(RUNS))
 @pytest.mark.parametrize("ranks", (2, 3))
 def test_a_model_cut_across_the_ranks_gives_the_serial_answer(tmp_path, run, ranks):
-    """The same Newton iterations and values as the serial run. The outputs are not gathered yet:
-    rank 0 writes the displacements of its piece (checked to be a part of the model, compared
-    there) and the contact pressures of the whole interface, which every rank keeps."""
-    case, components, linear_solver = RUNS[run]
-    answers = {}
+    """The same Newton iterations and the serial run's JSON files: rank 0 writes the values every
+    rank gathered of the nodes it owns, with the same keys in the same order, and the resultant
+    summed over the ranks."""
+    answers, files = {}, {}
     for processes, env in ((1, ENV), (ranks, PARTITIONED)):
         folder = tmp_path / f"ranks{processes}"
         folder.mkdir()
-        path = _write_case(folder, case, components, linear_solver, CONTACT_SETTINGS.get(run, {}))
-        # Only the block builder solves a piece (the elimination builder is refused there): both runs
-        # take it.
-        with open(path) as f:
-            parameters = json.load(f)
-        parameters["solver_settings"]["block_builder"] = True
-        with open(path, "w") as f:
-            json.dump(parameters, f, indent=1)
+        _write_cut_case(folder, run)
         done = _run(folder, processes, env)
         assert done.returncode == 0, done.stdout + done.stderr
         answers[processes] = _results(folder)
+        files[processes] = {name: _json_file(folder, name) for name in ("displacements.json", "pressures.json",
+                                                                          "resultant.json")}
     serial, cut = answers[1], answers[ranks]
     assert len(serial["iterations"]) >= 2
     assert cut["iterations"] == serial["iterations"]
-    serial_nodes = {k[1] for k in serial["values"] if k[0] == "displacements.json"}
-    cut_nodes = {k[1] for k in cut["values"] if k[0] == "displacements.json"}
-    assert cut_nodes < serial_nodes, "rank 0 keeps a part of the model only"
-    pressures = [k for k in serial["values"] if k[0] == "pressures.json"]
-    assert sorted(k for k in cut["values"] if k[0] == "pressures.json") == sorted(pressures)
+    for name, contents in files[1].items():
+        assert list(files[ranks][name]) == list(contents), f"{name}: other entities or another order"
+        assert files[ranks][name]["TIME"] == contents["TIME"]
     for file in ("displacements.json", "pressures.json"):
         worst, scale = _worst_difference(cut["values"], serial["values"], file)
         assert scale > 0.0, f"{file}: nothing to compare"
         assert worst <= TOLERANCE.get(run, 1e-12) * scale, f"{file}: {worst:.3g} against {scale:.3g}"
+    # Each node counted once: a ghost counted twice moves the sum by its own value.
+    serial_sums, cut_sums = (files[n]["resultant.json"]["RESULTANT"] for n in (1, ranks))
+    scale = max(np.abs(series).max() for series in serial_sums.values())
+    assert scale > 0.0, "resultant.json: nothing to compare"
+    for key, series in serial_sums.items():
+        worst = np.abs(np.asarray(cut_sums[key]) - np.asarray(series)).max()
+        assert worst <= TOLERANCE.get(run, 1e-12) * scale, f"resultant {key}: {worst:.3g} against {scale:.3g}"
+
+
+def test_a_json_check_on_a_cut_model_passes_or_fails_on_every_rank_with_one_message(tmp_path):
+    """from_json_check_result_process against the serial run's displacements: passes on 2 ranks
+    as it did; with the values of the upper half of the node ids moved by 1 (nodes of both ranks'
+    pieces), every rank stops with exit 5 and rank 0 prints the serial run's message, whose count
+    includes the failures found on rank 1."""
+    reference = tmp_path / "reference"
+    reference.mkdir()
+    _write_cut_case(reference, "hertz2d-mumps")
+    done = _run(reference, 1)
+    assert done.returncode == 0, done.stdout + done.stderr
+    displacements = _json_file(reference, "displacements.json")
+    ids = sorted(int(key[len("NODE_"):]) for key in displacements if key.startswith("NODE_"))
+    shifted = json.loads(json.dumps(displacements))
+    for node in ids[len(ids) // 2:]:
+        shifted[f"NODE_{node}"]["DISPLACEMENT_Y"] = [v + 1.0 for v in shifted[f"NODE_{node}"]["DISPLACEMENT_Y"]]
+    def check(parameters, part):
+        parameters["processes"]["json_check_process"] = [
+            {"python_module": "from_json_check_result_process", "kratos_module": "KratosMultiphysics",
+             "Parameters": {"model_part_name": part, "check_variables": ["DISPLACEMENT"],
+                            "input_file_name": "reference.json", "time_frequency": 0.0,
+                            "tolerance": 1e-6, "relative_tolerance": 1e-6}}]
+
+    messages = {}
+    for name, contents in (("passes", displacements), ("fails", shifted)):
+        for processes, env in ((1, ENV), (2, PARTITIONED)):
+            folder = tmp_path / f"{name}{processes}"
+            folder.mkdir()
+            _write_cut_case(folder, "hertz2d-mumps", check)
+            with open(folder / "reference.json", "w") as f:
+                json.dump(contents, f)
+            done = _run(folder, processes, env)
+            assert "Traceback" not in done.stderr
+            if name == "passes":
+                assert done.returncode == 0, done.stdout + done.stderr
+                continue
+            assert done.returncode == 5, done.stdout + done.stderr
+            lines = done.stderr.splitlines()
+            failed = [k for k, line in enumerate(lines) if line.startswith("mortarcontact: check failed")]
+            assert len(failed) == 1, done.stderr  # rank 0's only
+            messages[processes] = lines[failed[0]:]
+    assert f"{len(ids) - len(ids) // 2} value(s) differ" in messages[1][0], messages[1]
+    # mpirun adds its own notice of the non-zero exit after it.
+    assert messages[2][:len(messages[1])] == messages[1]
+
+
+def test_the_vtu_output_of_a_cut_model_is_a_piece_per_rank_under_a_pvtu(tmp_path):
+    """vtk_output on 2 ranks: each step a PVTU (written by rank 0, listed by the PVD) over one VTU
+    piece per rank; the pieces' points not flagged as ghosts are the serial run's nodes, each once,
+    with its displacements, and the pieces' cells are the serial run's cells, each once."""
+    import xml.etree.ElementTree as ET
+
+    import meshio
+
+    def vtk_output(parameters, part):
+        parameters["output_processes"] = {"vtk_output": [
+            {"python_module": "vtk_output_process", "kratos_module": "KratosMultiphysics",
+             "Parameters": {"model_part_name": part, "output_path": "vtk", "write_ids": True,
+                            "nodal_solution_step_data_variables": ["DISPLACEMENT"]}}]}
+
+    written = {}
+    for processes, env in ((1, ENV), (2, PARTITIONED)):
+        folder = tmp_path / f"ranks{processes}"
+        folder.mkdir()
+        _write_cut_case(folder, "hertz2d-mumps", vtk_output)
+        done = _run(folder, processes, env)
+        assert done.returncode == 0, done.stdout + done.stderr
+        written[processes] = folder / "vtk"
+    collection = ET.parse(next(written[2].glob("*.pvd"))).getroot()
+    steps = [entry.get("file") for entry in collection.iter("DataSet")]
+    serial_steps = [entry.get("file") for entry in ET.parse(next(written[1].glob("*.pvd"))).getroot().iter("DataSet")]
+    assert [name.replace(".pvtu", ".vtu") for name in steps] == serial_steps
+    for name, serial_name in zip(steps, serial_steps):
+        grid = ET.parse(written[2] / name).getroot().find("PUnstructuredGrid")
+        sources = [piece.get("Source") for piece in grid.iter("Piece")]
+        assert len(sources) == 2
+        declared = {array.get("Name") for array in grid.find("PPointData")}
+        serial = meshio.read(written[1] / serial_name)
+        ids, displacements, cells = [], [], []
+        for source in sources:
+            piece = meshio.read(written[2] / source)
+            assert set(piece.point_data) == declared
+            owned = piece.point_data["vtkGhostType"] == 0
+            ids.append(piece.point_data["KRATOS_NODE_ID"][owned])
+            displacements.append(piece.point_data["DISPLACEMENT"][owned])
+            cells.append(np.concatenate(piece.cell_data["KRATOS_ELEMENT_ID"]))
+        ids, displacements, cells = np.concatenate(ids), np.concatenate(displacements), np.concatenate(cells)
+        assert sorted(ids) == sorted(serial.point_data["KRATOS_NODE_ID"]), f"{name}: not every node once"
+        assert sorted(cells) == sorted(np.concatenate(serial.cell_data["KRATOS_ELEMENT_ID"])), name
+        order = np.argsort(ids)
+        scale = np.abs(serial.point_data["DISPLACEMENT"]).max()
+        assert scale > 0.0, f"{name}: nothing to compare"
+        assert np.abs(displacements[order] - serial.point_data["DISPLACEMENT"]).max() <= 1e-12 * scale, name
 
 
 ERRORS = {
