@@ -111,20 +111,38 @@ class StructuralMechanicsAnalysis:
     def RunSolutionLoop(self) -> None:
         with self._progress_display() as advance:
             while self.KeepAdvancingSolutionLoop():
-                started = wallclock.perf_counter()
-                self.time = self.solver.AdvanceInTime(self.time)
-                self.step += 1
-                self.InitializeSolutionStep()
-                self.solver.Predict()
-                converged = self.solver.SolveSolutionStep()
-                iterations = self.solver.LastIterationCount()
-                if not converged:
-                    self._report_non_convergence()
-                self.FinalizeSolutionStep()
-                self.OutputSolutionStep()
-                self.step_log.append((self.step, self.time, iterations, converged,
-                                      wallclock.perf_counter() - started))
-                advance(self.time, iterations)
+                self._run_next_step(advance)
+
+    def OpenStep(self, step: int) -> None:
+        """Runs the steps before ``step`` as ``RunSolutionLoop`` does, then opens ``step`` (time
+        advanced, processes and solver initialised, the prediction made) without solving it: to
+        look inside a load step from a script, a notebook or a test. Next, e.g.,
+        ``solver.strategy.SetMaxIterationNumber(k)`` and ``solver.SolveSolutionStep()`` to stop
+        after k Newton iterations, or ``solver.strategy.BuildSystem(model_part)``. After
+        ``Initialize``."""
+        if step <= self.step:
+            raise ValueError(f"step {step} is not after the current step {self.step}")
+        while self.step + 1 < step:
+            self._run_next_step(lambda *_: None)
+        self._open_next_step()
+
+    def _open_next_step(self) -> None:
+        self.time = self.solver.AdvanceInTime(self.time)
+        self.step += 1
+        self.InitializeSolutionStep()
+        self.solver.Predict()
+
+    def _run_next_step(self, advance) -> None:
+        started = wallclock.perf_counter()
+        self._open_next_step()
+        converged = self.solver.SolveSolutionStep()
+        iterations = self.solver.LastIterationCount()
+        if not converged:
+            self._report_non_convergence()
+        self.FinalizeSolutionStep()
+        self.OutputSolutionStep()
+        self.step_log.append((self.step, self.time, iterations, converged, wallclock.perf_counter() - started))
+        advance(self.time, iterations)
 
     def InitializeSolutionStep(self) -> None:
         if self.echo_level >= 1 and not self.progress:

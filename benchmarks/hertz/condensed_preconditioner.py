@@ -66,16 +66,9 @@ def newton_system(folder: str, step: int, iterations: int) -> dict:
     analysis = StructuralMechanicsAnalysis(mc.Model(), params, progress=False, case_dir=folder,
                                            stop_on_non_convergence=False)
     analysis.Initialize()
-    for s in range(1, step + 1):
-        analysis.time = analysis.solver.AdvanceInTime(analysis.time)
-        analysis.step += 1
-        analysis.InitializeSolutionStep()
-        analysis.solver.Predict()
-        if s == step:
-            analysis.solver.strategy.SetMaxIterationNumber(iterations)
-        analysis.solver.SolveSolutionStep()
-        if s < step:
-            analysis.FinalizeSolutionStep()
+    analysis.OpenStep(step)
+    analysis.solver.strategy.SetMaxIterationNumber(iterations)
+    analysis.solver.SolveSolutionStep()
     root = analysis.solver.GetComputingModelPart().GetRootModelPart()
     analysis.solver.mortar_updater.UpdateNormals(root)
     A, b, dofs = analysis.solver.strategy.BuildSystem(root)

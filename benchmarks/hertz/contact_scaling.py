@@ -57,10 +57,7 @@ def measure(case_dir: str, repeat: int, linear_solver: str | None) -> dict:
     parameters = case_runner.mortarcontact_parameters(os.path.join(case_dir, "ProjectParameters.json"), linear_solver)
     analysis = StructuralMechanicsAnalysis(mc.Model(), parameters, progress=False, case_dir=case_dir)
     analysis.Initialize()
-    analysis.time = analysis.solver.AdvanceInTime(analysis.time)
-    analysis.step += 1
-    analysis.InitializeSolutionStep()
-    analysis.solver.Predict()
+    analysis.OpenStep(1)
     if not analysis.solver.SolveSolutionStep():
         raise RuntimeError(f"{case_dir}: the first load step did not converge")
     searches = [s for p in analysis.processes for s in getattr(p, "searches", [])]

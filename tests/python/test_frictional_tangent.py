@@ -59,14 +59,8 @@ def first_contact_state(normal_variation: str) -> StructuralMechanicsAnalysis:
     analysis = StructuralMechanicsAnalysis(mc.Model(), parameters(normal_variation, FIRST_CONTACT_STEP),
                                            progress=False, case_dir=CASE)
     analysis.Initialize()
-    for step in range(1, FIRST_CONTACT_STEP + 1):
-        analysis.time = analysis.solver.AdvanceInTime(analysis.time)
-        analysis.step += 1
-        analysis.InitializeSolutionStep()
-        analysis.solver.Predict()
-        assert analysis.solver.SolveSolutionStep()
-        if step < FIRST_CONTACT_STEP:
-            analysis.FinalizeSolutionStep()
+    analysis.OpenStep(FIRST_CONTACT_STEP)
+    assert analysis.solver.SolveSolutionStep()
     return analysis
 
 
