@@ -110,26 +110,13 @@ class Umfpack:
         return result
 
 
-def timed(solve):
-    t = time.process_time()
-    x = solve()
-    return x, time.process_time() - t
-
-
-def perturbed(A, k: int):
-    """The same pattern with other values: a solver that skips an unchanged matrix still factorizes."""
-    B = A.copy()
-    B.setdiag(B.diagonal() * (1.0 + 1e-12 * k))
-    return B
-
-
 def mortarcontact_solver(A, b, settings: dict, repeat: int) -> dict:
     import mortarcontact as mc
 
     try:
         solver = mc.CreateLinearSolver(mc.Parameters(json.dumps(settings)))
-        x, first = timed(lambda: solver.Solve(A, b))
-        again = [timed(lambda k=k: solver.Solve(perturbed(A, k), b, initialize=False))[1]
+        x, first, _ = linear_solvers.timed(lambda: solver.Solve(A, b))
+        again = [linear_solvers.timed(lambda k=k: solver.Solve(linear_solvers.perturbed(A, k), b, initialize=False))[1]
                  for k in range(1, repeat + 1)]
     except (mc.Error, RuntimeError) as error:
         return {"status": f"failed: {str(error).splitlines()[0][:140]}"}
@@ -141,9 +128,9 @@ def superlu(A, b, permc: str, repeat: int) -> dict:
     runs = []
     options = {"SymmetricMode": permc != "COLAMD"}
     for _ in range(repeat):
-        lu, seconds = timed(lambda: spla.splu(A, permc_spec=permc, options=options))
+        lu, seconds, _ = linear_solvers.timed(lambda: spla.splu(A, permc_spec=permc, options=options))
         runs.append(seconds)
-    x, solve = timed(lambda: lu.solve(b))
+    x, solve, _ = linear_solvers.timed(lambda: lu.solve(b))
     return {"status": "ok", "first": statistics.median(runs), "again": None, "solve": solve,
             "fill": lu.L.nnz + lu.U.nnz - A.shape[0], "residual": float(np.linalg.norm(b - A @ x) / np.linalg.norm(b))}
 

@@ -51,7 +51,7 @@ void DirectSolver::FactorizeNumeric(const SparseMatrix& A) {
   }
   has_factors_ = true;
   factors_size_ = M->rows();
-  if (factored_equations_ != equations_) factored_equations_ = equations_;
+  factored_equations_ = equations_;
   ++numeric_count_;
 }
 

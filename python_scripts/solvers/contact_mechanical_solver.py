@@ -165,9 +165,6 @@ class ContactMechanicalSolver(MechanicalSolver):
         return _core.ContactFormulation.Get(self.formulation.mortar_type + "PureSlip")
 
     def _new_linear_solver(self):
-        return self._create_contact_linear_solver()
-
-    def _create_contact_linear_solver(self):
         """The user's solver, optionally rescaled, wrapped in the condensing MixedULM solver for the
         vector-multiplier formulations (spec 2.7.1): the scalar system cannot be condensed."""
         s = self.settings

@@ -632,7 +632,7 @@ def _contact_linear_solver(tmp_path, mortar_type="ALMContactFrictionless", conta
     analysis = _run(tmp_path, edit=lambda p: (_contact(mortar_type=mortar_type, **contact)(p),
                                               _process(contact_type=contact_type)(p)))
     assert not isinstance(analysis, Exception), analysis
-    return analysis.solver._create_contact_linear_solver().Name()
+    return analysis.solver._new_linear_solver().Name()
 
 
 def test_rescale_linear_solver_wraps_the_solver(tmp_path):
