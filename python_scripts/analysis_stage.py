@@ -21,7 +21,7 @@ from contextlib import contextmanager
 from . import _core
 from .process_factory import create_process_lists, naming_the_item
 from .project_parameters import migrate_project_parameters, read_project_parameters
-from .restart import SaveRestartProcess, attach_run
+from .restart import attach_run
 from .solvers import create_solver
 from .utilities import partitioned_model, secondary_process, warn
 
@@ -93,7 +93,7 @@ class StructuralMechanicsAnalysis:
             self.solver.GetComputingModelPart().ProcessInfo.SetValue(_core.TIME, self.time)
             return
         # A resumed run: everything above was built as in a fresh run; the state is the checkpoint's.
-        checkpoint.restore_model(self.solver.main_model_part)
+        checkpoint.restore_model(self.solver.main_model_part, piece=partitioned_model())
         checkpoint.restore_processes(self._all_processes())
         checkpoint.restore_solver(self.solver)
         checkpoint.close()
@@ -216,9 +216,6 @@ class StructuralMechanicsAnalysis:
         if self.echo_level >= 1:
             print(f"model cut across {_core.LaunchedProcesses()} processes; rank 0 keeps {piece['owned_nodes']} "
                   f"owned and {piece['ghost_nodes']} ghost nodes, {piece['elements']} elements")
-        if not secondary_process() and any(isinstance(p, SaveRestartProcess) for p in self.output_processes):
-            warn("MORTARCONTACT_PARTITIONED_MODEL=1: restart checkpoints are not gathered across the ranks yet; "
-                 "they hold rank 0's piece of the model (its nodes and the whole contact interface)")
 
     def _all_processes(self):
         return [*self.processes, *self.output_processes]

@@ -53,8 +53,7 @@ def secondary_process() -> bool:
 
 def partitioned_model() -> bool:
     """Whether each rank of a run under ``mpirun`` cuts the model to its piece after the processes'
-    ExecuteInitialize (``MORTARCONTACT_PARTITIONED_MODEL=1``; issue 17, step 3, not yet the default:
-    its restart checkpoints hold rank 0's piece)."""
+    ExecuteInitialize (``MORTARCONTACT_PARTITIONED_MODEL=1``; issue 17, step 3, not yet the default)."""
     from . import _core
 
     return os.environ.get("MORTARCONTACT_PARTITIONED_MODEL") == "1" and _core.LaunchedProcesses() > 1

@@ -31,11 +31,11 @@ SOLVERS = {
 }
 
 
-def run(case_dir: str, solver: dict, ranks: int, work: str, partitioned: bool = False) -> list[dict]:
+def run(case_dir: str, solver: dict, ranks: int, work: str, partitioned: bool = False, extra=()) -> list[dict]:
     """The per-rank records of one run; `partitioned`: each rank cuts the model to its piece
-    (MORTARCONTACT_PARTITIONED_MODEL=1)."""
+    (MORTARCONTACT_PARTITIONED_MODEL=1); `extra`: more arguments of case_runner.py."""
     output = os.path.join(work, f"ranks{ranks}{'cut' if partitioned else ''}.json")
-    command = [sys.executable, RUNNER, "--code", "mortarcontact", "--linear-solver", json.dumps(solver),
+    command = [sys.executable, RUNNER, "--code", "mortarcontact", "--linear-solver", json.dumps(solver), *extra,
                case_dir, output]
     if ranks > 1:
         command = [shutil.which("mpirun"), "-n", str(ranks), *command]

@@ -108,20 +108,37 @@ class JsonOutputProcess(JsonResultsProcess):
     def write(self) -> None:
         """Writes what was recorded so far (atomically); of a cut model, what the ranks recorded,
         merged on every rank (collective) and written by rank 0."""
-        data = self.data if self.ranks is None else merge_pieces(self.ranks.all_gather((self.data, self.node_ids)))
-        write_json_atomically(self.file_name, data)
+        write_json_atomically(self.file_name, self._merged())
         self.written = True
+
+    def _merged(self) -> dict:
+        """What was recorded so far; of a cut model, the ranks' records merged (collective)."""
+        return self.data if self.ranks is None else merge_pieces(self.ranks.all_gather((self.data, self.node_ids)))
 
     def OutputFiles(self) -> list[str]:
         return [self.file_name] if self.written else []
 
     def RestartState(self):
-        """The values recorded so far: a resumed run writes the whole series."""
-        return {**super().RestartState(), "data": self.data}
+        """The values recorded so far: a resumed run writes the whole series. Of a cut model, the
+        serial run's (collective)."""
+        return {**super().RestartState(), "data": self._merged()}
 
     def LoadRestartState(self, state) -> None:
         super().LoadRestartState(state)
-        self.data = state["data"]
+        self.data = state["data"] if self.ranks is None else self._own_piece(state["data"])
+
+    def _own_piece(self, data: dict) -> dict:
+        """Of the serial series ``data``, what this rank of a cut model records: its owned nodes and
+        elements, and the resultants on rank 0 only (as zeros elsewhere: the ranks' series are summed)."""
+        mask = owned_mask(self.ranks, self.model_part, np.ones(self.model_part.NumberOfNodes(), dtype=bool))
+        keys = node_keys(self.model_part, mask, self.use_coordinates)
+        self.node_ids = dict(zip(keys, self.model_part.NodeIds()[mask].tolist()))
+        elements = {f"ELEMENT_{element}" for element in self.ranks.owned_elements(self.model_part)}
+        piece = {key: value for key, value in data.items() if key in self.node_ids or key in elements}
+        piece["TIME"] = data["TIME"]
+        if "RESULTANT" in data:
+            piece["RESULTANT"] = data["RESULTANT"] if self.ranks.rank == 0 else _zeros(data["RESULTANT"])
+        return piece
 
     def ExecuteFinalize(self) -> None:
         self.write()
@@ -129,3 +146,10 @@ class JsonOutputProcess(JsonResultsProcess):
 
     def ExecuteAfterFailure(self) -> None:
         self.write()
+
+
+def _zeros(series):
+    """``series`` (nested ``{key: [...] or {...}}``) with every value 0."""
+    if isinstance(series, list):
+        return [0.0] * len(series)
+    return {key: _zeros(entry) for key, entry in series.items()}

@@ -65,18 +65,27 @@ def _dof_variables(part) -> list[str]:
     return names
 
 
-def write_checkpoint(path: str, part, mesh: dict, processes, solver=None) -> None:
+def write_checkpoint(path: str, part, mesh: dict, processes, solver=None, ranks=None) -> None:
     """Writes the state of the root model part ``part``, of ``processes`` and of ``solver`` (what its
-    ``RestartState()`` returns) to ``path`` atomically (temporary file in the same folder, then renamed)."""
+    ``RestartState()`` returns) to ``path`` atomically (temporary file in the same folder, then renamed).
+    ``ranks`` (a ``Ranks``): ``part`` is this rank's piece of a model cut across the ranks; collective,
+    the owners' nodal states are gathered and rank 0 writes the serial run's file."""
     import h5py
 
+    nodes = _node_state(part) if ranks is None else _gathered_node_state(part, ranks)
+    # Every rank: a process of a cut model gathers its state from the ranks.
+    records = [json.dumps({"class": type(process).__name__, "where": getattr(process, "item_where", ""),
+                           "state": process.RestartState()}) for process in processes]
+    solver_state = json.dumps(solver.RestartState() if solver is not None else None)
+    if ranks is not None and ranks.rank > 0:
+        return
     folder = os.path.dirname(os.path.abspath(path))
     os.makedirs(folder, exist_ok=True)
     handle, temporary = tempfile.mkstemp(prefix=".", suffix=".rest.tmp", dir=folder)
     os.close(handle)
     try:
         with h5py.File(temporary, "w") as f:
-            _write(f, part, mesh, processes, solver)
+            _write(f, part, mesh, nodes, records, solver_state)
         publish_file(temporary, path)
     except BaseException:
         if os.path.exists(temporary):
@@ -84,37 +93,93 @@ def write_checkpoint(path: str, part, mesh: dict, processes, solver=None) -> Non
         raise
 
 
-def _write(f, part, mesh: dict, processes, solver) -> None:
-    info = part.ProcessInfo
-    f.attrs.update(format=FORMAT, version=VERSION, model_part_name=part.Name, buffer_size=part.GetBufferSize(),
-                   time=float(info.GetValue(_core.TIME)), step=int(info.GetValue(_core.STEP)),
-                   mesh=json.dumps(mesh))
-    nodes = f.create_group("nodes")
-    nodes["ids"] = part.NodeIds()
-    nodes["coordinates"] = part.NodeCoordinates(initial=False)
-    nodes["initial_coordinates"] = part.NodeCoordinates(initial=True)
-    historical = nodes.create_group("historical")
+def _node_state(part, rows=None) -> dict:
+    """The datasets of ``/nodes`` of the nodes of ``part`` selected by the boolean ``rows`` (all
+    without): a value, a flag or a fixity only where some selected node has it."""
+    take = slice(None) if rows is None else rows
+    state = {"ids": part.NodeIds()[take], "coordinates": part.NodeCoordinates(initial=False)[take],
+             "initial_coordinates": part.NodeCoordinates(initial=True)[take], "historical": {},
+             "non_historical": {}, "flags": {}, "fixity": {}}
     for name in part.NodalSolutionStepVariableNames():
         variable = _core.GetVariable(name)
-        historical[name] = np.stack([part.GetNodalValues(variable, step=s) for s in range(part.GetBufferSize())])
-    non_historical = nodes.create_group("non_historical")
+        state["historical"][name] = np.stack([part.GetNodalValues(variable, step=s)[take]
+                                              for s in range(part.GetBufferSize())])
     for name in part.NodalNonHistoricalVariableNames():
         variable = _core.GetVariable(name)
         if variable.Type() not in (_core.ValueType.Double, _core.ValueType.Int, _core.ValueType.Bool,
                                    _core.ValueType.Array3):
             raise _core.NotImplementedFeatureError(
                 f"restart: the nodal value {name} ({variable.Type().name}) cannot be saved in a checkpoint")
-        group = non_historical.create_group(name)
-        group["values"] = part.GetNodalNonHistoricalValues(variable)
-        group["held"] = part.HasNodalNonHistoricalValues(variable)
-    flags = nodes.create_group("flags")
+        held = part.HasNodalNonHistoricalValues(variable)[take]
+        if np.any(held):
+            state["non_historical"][name] = (part.GetNodalNonHistoricalValues(variable)[take], held)
     for name in _core.FlagNames():
-        states = part.GetNodalFlagStates(_core.GetFlag(name))
+        states = part.GetNodalFlagStates(_core.GetFlag(name))[take]
         if np.any(states >= 0):
-            flags[name] = states
-    fixity = nodes.create_group("fixity")
+            state["flags"][name] = states
     for name in _dof_variables(part):
-        fixity[name] = part.GetNodalFixity(_core.GetVariable(name))
+        fixity = part.GetNodalFixity(_core.GetVariable(name))[take]
+        if np.any(fixity >= 0):
+            state["fixity"][name] = fixity
+    return state
+
+
+def _gathered_node_state(part, ranks) -> dict:
+    """The serial run's ``/nodes`` datasets from the pieces of a model cut across the ranks: each node's
+    state from its owner (a contact-interface node every rank holds, too), in node-id order. A value,
+    flag or DoF no node of a rank has is filled as the serial run reads it there: not held, undefined,
+    no DoF."""
+    pieces = ranks.all_gather(_node_state(part, ranks.owned_nodes(part)))
+    order = np.argsort(np.concatenate([piece["ids"] for piece in pieces]), kind="stable")
+
+    def joined(arrays, axis=0):
+        return np.take(np.concatenate(arrays, axis=axis), order, axis=axis)
+
+    state = {key: joined([piece[key] for piece in pieces])
+             for key in ("ids", "coordinates", "initial_coordinates")}
+    state["historical"] = {name: joined([piece["historical"][name] for piece in pieces], axis=1)
+                           for name in pieces[0]["historical"]}
+
+    def union(group: str, fill) -> dict:
+        """Every name some piece has in ``group``, the pieces lacking it given ``fill(piece, name)``."""
+        names = dict.fromkeys(name for piece in pieces for name in piece[group])
+        return {name: [piece[group][name] if name in piece[group] else fill(piece, name) for piece in pieces]
+                for name in names}
+
+    def not_held(piece, name):
+        values = next(other["non_historical"][name][0] for other in pieces if name in other["non_historical"])
+        return np.zeros((piece["ids"].size, *values.shape[1:]), values.dtype), np.zeros(piece["ids"].size, bool)
+
+    def undefined(piece, name):
+        return np.full(piece["ids"].size, -1, np.int8)
+
+    state["non_historical"] = {name: tuple(joined(list(arrays)) for arrays in zip(*entries))
+                               for name, entries in union("non_historical", not_held).items()}
+    for group in ("flags", "fixity"):
+        state[group] = {name: joined(entries) for name, entries in union(group, undefined).items()}
+    return state
+
+
+def _write(f, part, mesh: dict, nodes: dict, process_records: list[str], solver_state: str) -> None:
+    info = part.ProcessInfo
+    f.attrs.update(format=FORMAT, version=VERSION, model_part_name=part.Name, buffer_size=part.GetBufferSize(),
+                   time=float(info.GetValue(_core.TIME)), step=int(info.GetValue(_core.STEP)),
+                   mesh=json.dumps(mesh))
+    group = f.create_group("nodes")
+    for key in ("ids", "coordinates", "initial_coordinates"):
+        group[key] = nodes[key]
+    historical = group.create_group("historical")
+    for name, values in nodes["historical"].items():
+        historical[name] = values
+    non_historical = group.create_group("non_historical")
+    for name, (values, held) in nodes["non_historical"].items():
+        entry = non_historical.create_group(name)
+        entry["values"] = values
+        entry["held"] = held
+    for key in ("flags", "fixity"):
+        entries = group.create_group(key)
+        for name, states in nodes[key].items():
+            entries[name] = states
     group = f.create_group("process_info")
     for name in info.ValueNames():
         if name == "IS_RESTARTED":  # says how this run started, not what state it is in
@@ -123,11 +188,10 @@ def _write(f, part, mesh: dict, processes, solver) -> None:
         group.attrs[name] = value if isinstance(value, str) else np.asarray(value)
     group.attrs["flags"] = json.dumps([name for name in _core.FlagNames() if info.Is(_core.GetFlag(name))])
     states = f.create_group("processes")
-    for index, process in enumerate(processes):
+    for index, record in enumerate(process_records):
         # A dataset, not an attribute: a JSON output's series outgrows HDF5's 64 kB attribute limit.
-        states[str(index)] = json.dumps({"class": type(process).__name__, "where": getattr(process, "item_where", ""),
-                                         "state": process.RestartState()})
-    f["solver"] = json.dumps(solver.RestartState() if solver is not None else None)
+        states[str(index)] = record
+    f["solver"] = solver_state
 
 
 class Checkpoint:
@@ -173,7 +237,8 @@ class Checkpoint:
                                    f"(SHA-256 {self.mesh['sha256'][:12]}...), but {os.path.abspath(path)} differs "
                                    "from it; resume with the mesh the checkpoint was written for")
 
-    def _check_model(self, part) -> None:
+    def check_model(self, part) -> None:
+        """The whole model read for the resumed run (the root model part ``part``) is the saved one."""
         where = f"restart: {self.path}"
         if part.Name != self.model_part_name:
             raise _core.InputError(f"{where} holds model part '{self.model_part_name}', not '{part.Name}'")
@@ -197,33 +262,39 @@ class Checkpoint:
                                    "settings and contact formulation as the saved run needed)")
 
     # -- restore ------------------------------------------------------------------------------
-    def restore_model(self, part) -> None:
-        """Overwrites the nodal data and the ProcessInfo of the root model part ``part``."""
-        self._check_model(part)
+    def restore_model(self, part, piece: bool = False) -> None:
+        """Overwrites the nodal data and the ProcessInfo of the root model part ``part``. ``piece``:
+        ``part`` is this rank's piece of a model cut across the ranks, whose whole model passed
+        ``check_model`` before the cut; its nodes take their rows of the checkpoint."""
+        if piece:
+            rows = self._rows(part)
+        else:
+            self.check_model(part)
+            rows = slice(None)
         nodes = self.file["nodes"]
-        part.SetNodeCoordinates(nodes["initial_coordinates"][()], initial=True)
-        part.SetNodeCoordinates(nodes["coordinates"][()], initial=False)
+        part.SetNodeCoordinates(nodes["initial_coordinates"][()][rows], initial=True)
+        part.SetNodeCoordinates(nodes["coordinates"][()][rows], initial=False)
         for name, values in nodes["historical"].items():
             variable = _core.GetVariable(name)
             for step, step_values in enumerate(values[()]):
-                part.SetNodalValues(variable, step_values, step=step)
+                part.SetNodalValues(variable, step_values[rows], step=step)
         no_node = np.zeros(part.NumberOfNodes(), dtype=bool)
         for name in part.NodalNonHistoricalVariableNames():
             if name not in nodes["non_historical"]:  # set by the fresh set-up, absent from the saved run
                 variable = _core.GetVariable(name)
                 part.SetNodalNonHistoricalValues(variable, part.GetNodalNonHistoricalValues(variable), held=no_node)
         for name, group in nodes["non_historical"].items():
-            part.SetNodalNonHistoricalValues(_core.GetVariable(self._known(name, "variable")), group["values"][()],
-                                             held=group["held"][()])
+            variable = _core.GetVariable(self._known(name, "variable"))
+            part.SetNodalNonHistoricalValues(variable, group["values"][()][rows], held=group["held"][()][rows])
         saved_flags = nodes["flags"]
         for name in _core.FlagNames():
             flag = _core.GetFlag(name)
             if name in saved_flags:
-                part.SetNodalFlagStates(flag, saved_flags[name][()])
+                part.SetNodalFlagStates(flag, saved_flags[name][()][rows])
             elif np.any(part.GetNodalFlagStates(flag) >= 0):
                 part.SetNodalFlagStates(flag, np.full(part.NumberOfNodes(), -1, dtype=np.int8))
         for name, fixed in nodes["fixity"].items():
-            part.SetNodalFixity(_core.GetVariable(self._known(name, "variable")), fixed[()] > 0)
+            part.SetNodalFixity(_core.GetVariable(self._known(name, "variable")), fixed[()][rows] > 0)
         info = part.ProcessInfo
         attrs = self.file["process_info"].attrs
         for name, value in attrs.items():
@@ -236,6 +307,16 @@ class Checkpoint:
             if info.Is(_core.GetFlag(name)) or name in set_flags:
                 info.Set(_core.GetFlag(name), name in set_flags)
         info.SetValue(_core.IS_RESTARTED, True)
+
+    def _rows(self, part) -> np.ndarray:
+        """The checkpoint's rows of the nodes of ``part`` (a piece: a subset of the saved nodes)."""
+        ids = self.file["nodes/ids"][()]
+        wanted = part.NodeIds()
+        rows = np.minimum(np.searchsorted(ids, wanted), ids.size - 1)
+        missing = np.flatnonzero(ids[rows] != wanted)
+        if missing.size:
+            raise _core.InputError(f"restart: {self.path} holds no node {wanted[missing[0]]} of {part.Name}")
+        return rows
 
     def restore_processes(self, processes) -> None:
         """Hands each process the state it saved; the process lists must be those of the saved run."""

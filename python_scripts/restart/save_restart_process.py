@@ -87,6 +87,7 @@ class SaveRestartProcess(OutputProcess):
         self.processes = []
         self.mesh = None
         self.solver = None
+        self.ranks = None  # a model cut across the ranks: the checkpoint gathers the pieces
         self.written: list[str] = []
 
     def attach(self, processes, mesh: dict | None, solver=None) -> None:
@@ -95,6 +96,9 @@ class SaveRestartProcess(OutputProcess):
         self.processes = processes
         self.mesh = mesh
         self.solver = solver
+
+    def ExecuteAfterModelCut(self, ranks) -> None:
+        self.ranks = ranks
 
     def _part(self):
         return resolve_model_part(self.model, self.model_part_name).GetRootModelPart()
@@ -120,7 +124,7 @@ class SaveRestartProcess(OutputProcess):
             while self.next_output <= label:
                 self.next_output += self.frequency
         path = os.path.join(self.folder, restart_file_name(self.stem, label))
-        write_checkpoint(path, self._part(), self.mesh, self.processes, self.solver)
+        write_checkpoint(path, self._part(), self.mesh, self.processes, self.solver, self.ranks)
         # The linear solver keeps factorizations across steps, which a run resumed from this
         # checkpoint does not have: both start the next step without them.
         if self.solver is not None:

@@ -293,9 +293,9 @@ class MechanicalSolver:
         Returns the piece's counts; ``self.ranks`` then gathers the pieces' results."""
         self._check_explicit_on_one_process()
         if self.checkpoint is not None:
-            raise _core.NotImplementedFeatureError(
-                "model_import_settings.input_type 'rest': resuming a model cut across the ranks "
-                "(MORTARCONTACT_PARTITIONED_MODEL=1); resume without it")
+            # Checked whole, restored after the set-up on each piece (its nodes' rows), as a serial
+            # resumed run restores the whole model after its set-up.
+            self.checkpoint.check_model(self.main_model_part)
         self._early_linear_solver = self._new_linear_solver()
         replicated = [part for process in processes for part in process.ExecuteBeforeModelCut()]
         piece = _core.CutModelPart(self.main_model_part, self._early_linear_solver, replicated)

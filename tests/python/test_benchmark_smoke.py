@@ -9,6 +9,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
 BENCHMARK = Path(__file__).resolve().parents[2] / "benchmarks" / "run_benchmarks.py"
 
 
@@ -45,3 +47,20 @@ def test_scaling_model_reads_the_measured_phases():
     assert one[0] == one[1]
     many = [sum(model.iteration(1.0e6, 64, distributed).values()) for distributed in (False, True)]
     assert many[1] < many[0] < one[0]
+
+
+def test_hertz_match_compares_every_node_and_step_in_the_serial_order():
+    """benchmarks/mpi/hertz_match.py (issue 17's done-when): the largest difference over every node,
+    component and step, relative to the largest serial value; a 2-rank file with the nodes in
+    another order is refused, not compared."""
+    sys.path.insert(0, str(BENCHMARK.parent / "mpi"))
+    try:
+        import hertz_match
+    finally:
+        sys.path.pop(0)
+    serial = {"TIME": [0.5, 1.0], "NODE_1": {"DISPLACEMENT_X": [1.0, -4.0]}, "NODE_2": {"DISPLACEMENT_X": [0.0, 2.0]}}
+    cut = {"TIME": [0.5, 1.0], "NODE_1": {"DISPLACEMENT_X": [1.0, -4.0]}, "NODE_2": {"DISPLACEMENT_X": [0.0, 2.4]}}
+    assert hertz_match.largest_relative_difference(serial, cut) == pytest.approx(0.1)
+    with pytest.raises(SystemExit, match="another order"):
+        hertz_match.largest_relative_difference(serial, {"TIME": cut["TIME"], "NODE_2": cut["NODE_2"],
+                                                         "NODE_1": cut["NODE_1"]})
