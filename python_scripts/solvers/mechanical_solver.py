@@ -232,6 +232,7 @@ class MechanicalSolver:
         interfaces) and what touches their nodes, which the interfaces are built from. The linear
         solver is made first, for its communicator. A bad line stops every rank at the same line;
         an error found on one rank's piece alone stops them all with that rank's message."""
+        self._check_explicit_on_one_process()
         self._early_linear_solver = self._new_linear_solver()
         self.ranks = Ranks(self._early_linear_solver)
         piece, body_of, labels = _core.PlanModelPartPiece(self.main_model_part, path, self._early_linear_solver,

@@ -433,3 +433,24 @@ def test_a_bad_line_read_in_pieces_stops_every_rank_with_the_serial_message(tmp_
         assert f".mdpa:{last}:" in errors[0] and "refers to node 999999" in errors[0], errors[0]
         messages[processes] = errors[0]
     assert messages[2] == messages[1]
+
+
+def test_a_mesh_error_on_one_ranks_piece_stops_every_rank_with_the_serial_message(tmp_path):
+    """A point load on a node that no element holds: only its owner (rank 0, which owns the nodes of
+    no element) finds it on its piece, and every rank stops with the serial run's message, once."""
+    messages = {}
+    for processes, env in ((1, ENV), (2, PARTITIONED)):
+        folder = tmp_path / f"ranks{processes}"
+        folder.mkdir()
+        _write_cut_case(folder, "hertz2d-mumps")
+        mdpa = next(folder.rglob("*.mdpa"))
+        text = mdpa.read_text().replace("End Nodes", "999999 0.5 0.5 0.0\nEnd Nodes", 1)
+        mdpa.write_text(text + "Begin Conditions PointLoadCondition2D1N\n999999 0 999999\nEnd Conditions\n")
+        done = _run(folder, processes, env)
+        assert done.returncode == 2, done.stdout + done.stderr
+        assert "Traceback" not in done.stderr
+        errors = [line for line in done.stderr.splitlines() if line.startswith("mortarcontact: input error")]
+        assert len(errors) == 1, done.stderr  # rank 0's only
+        assert "condition 999999 (PointLoadCondition2D1N): node 999999 belongs to no element" in errors[0], errors[0]
+        messages[processes] = errors[0]
+    assert messages[2] == messages[1]
