@@ -25,9 +25,12 @@ void AddIoToPython(py::module_& m) {
 
   py::class_<MdpaMesh::Piece>(m, "MdpaPiece",
                               "What one rank of a distributed run reads of an mdpa (PlanModelPartPiece): sorted ids.")
-      .def_property_readonly("nodes", [](const MdpaMesh::Piece& p) { return p.nodes.size(); })
-      .def_property_readonly("elements", [](const MdpaMesh::Piece& p) { return p.elements.size(); })
-      .def_property_readonly("conditions", [](const MdpaMesh::Piece& p) { return p.conditions.size(); });
+      .def_property_readonly(
+          "nodes", [](const MdpaMesh::Piece& p) { return p.nodes.size(); }, "How many nodes the piece holds.")
+      .def_property_readonly(
+          "elements", [](const MdpaMesh::Piece& p) { return p.elements.size(); }, "How many elements it holds.")
+      .def_property_readonly(
+          "conditions", [](const MdpaMesh::Piece& p) { return p.conditions.size(); }, "How many conditions it holds.");
 
   m.def(
       "ReadModelPart",
