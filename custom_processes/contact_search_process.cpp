@@ -18,6 +18,7 @@
 #include "core/model/parallel_utilities.h"
 #include "core/model/registry.h"
 #include "core/parameters/no_effect_warnings.h"
+#include "core/utilities/disjoint_sets.h"
 #include "core/utilities/error.h"
 #include "core/utilities/logger.h"
 #include "core/utilities/string_utilities.h"
@@ -256,24 +257,6 @@ const PairedCondition& ContactSearchProcess::Prototype(const Geometry& slave, co
   return *prototype;
 }
 
-namespace {
-
-/// Union-find over indices 0..n-1.
-class DisjointSets {
- public:
-  explicit DisjointSets(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
-  std::size_t Find(std::size_t i) {
-    while (parent_[i] != i) i = parent_[i] = parent_[parent_[i]];
-    return i;
-  }
-  void Join(std::size_t a, std::size_t b) { parent_[Find(a)] = Find(b); }
-
- private:
-  std::vector<std::size_t> parent_;
-};
-
-}  // namespace
-
 void ContactSearchProcess::AssignAutomaticRoles(const std::vector<Condition*>& conditions,
                                                 std::vector<std::vector<std::size_t>>& candidates) {
   const std::size_t n = conditions.size();
@@ -426,6 +409,16 @@ void ContactSearchProcess::FindBodies() {
     if (const auto it = body_of_node_.find(&condition->GetGeometry()[0]); it != body_of_node_.end())
       of_faces.emplace(*it);
   body_of_node_ = std::move(of_faces);
+  bodies_found_ = true;
+}
+
+void ContactSearchProcess::SetBodies(const std::unordered_map<IndexType, std::size_t>& body_of, std::size_t labels) {
+  body_of_node_.clear();
+  for (const Condition* condition : interface_.Conditions()) {
+    const Node& first = condition->GetGeometry()[0];
+    if (const auto it = body_of.find(first.Id()); it != body_of.end()) body_of_node_.emplace(&first, it->second);
+  }
+  bodiless_offset_ = labels;
   bodies_found_ = true;
 }
 

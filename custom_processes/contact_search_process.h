@@ -116,6 +116,9 @@ class ContactSearchProcess {
   /// (MORTARCONTACT_PARTITIONED_MODEL), where a body cut into pieces would fall apart. Without a
   /// cut, the first search finds them.
   void FindBodies();
+  /// The bodies as FindBodies finds them, found instead on the whole mesh file before a rank built
+  /// its piece (MdpaMesh::Bodies): `body_of` by node id, every label below `labels`.
+  void SetBodies(const std::unordered_map<IndexType, std::size_t>& body_of, std::size_t labels);
 
   ModelPart& InterfacePart() const noexcept { return interface_; }
   ModelPart& ComputingPart() const noexcept { return computing_; }

@@ -87,6 +87,9 @@ void AddContactProcessesToPython(py::module_& m) {
       .def("FindBodies", &ContactSearchProcess::FindBodies,
            "Finds the bodies the interface's faces lie on now, on the whole model, before it is cut across the "
            "ranks (the first search does it otherwise).")
+      .def("SetBodies", &ContactSearchProcess::SetBodies, py::arg("body_of"), py::arg("labels"),
+           "The bodies found on the mesh file before a rank read its piece (PlanModelPartPiece), instead of "
+           "FindBodies.")
       .def("SetInterfaceActive", &ContactSearchProcess::SetInterfaceActive, py::arg("active"),
            "Sets ACTIVE on the interface nodes, conditions and pairs (all inactive outside the process interval).")
       .def("InterfacePart", &ContactSearchProcess::InterfacePart, py::return_value_policy::reference,

@@ -6,6 +6,7 @@
 #include <malloc.h>
 #endif
 
+#include "core/io/mdpa_mesh.h"
 #include "core/linear_solvers/assembly_communicator.h"
 #include "core/linear_solvers/linear_solver.h"
 #include "core/model/master_slave_constraint.h"
@@ -344,12 +345,12 @@ void AddSolvingToPython(py::module_& m) {
       [](ModelPart& root, const LinearSolver& solver, const std::vector<const ModelPart*>& replicated) {
         const AssemblyCommunicator* communicator = solver.Communicator();
         if (!communicator) throw Error("CutModelPart: the linear solver solves on one process; nothing to cut");
-        // Made once on the whole model and kept with it: the builder numbers the piece with it
-        // (re-partitioning the piece would give other owners on each rank).
-        auto partition = std::make_shared<const NodePartition>(root, *communicator);
-        root.SetNodePartition(partition);
+        // Made once on the whole model (or on the file before a rank read its piece) and kept with
+        // it: the builder numbers the piece with it (re-partitioning the piece would give other
+        // owners on each rank).
+        if (!root.GetNodePartition()) root.SetNodePartition(std::make_shared<const NodePartition>(root, *communicator));
         const ModelPartPartitioner::Piece piece =
-            ModelPartPartitioner([&owners = *partition](const Node& node) { return owners.Owner(node); },
+            ModelPartPartitioner([&owners = *root.GetNodePartition()](const Node& node) { return owners.Owner(node); },
                                  communicator->Rank())
                 .Cut(root, replicated);
 #if defined(__GLIBC__)
@@ -366,6 +367,32 @@ void AddSolvingToPython(py::module_& m) {
       "the linear solver's processes, keeps the partition with the model and cuts it to this rank's piece (the "
       "entities touching its nodes, their nodes, the `replicated` sub model parts whole). Returns the piece's "
       "counts.");
+  m.def(
+      "PlanModelPartPiece",
+      [](ModelPart& root, const std::string& filename, const LinearSolver& solver,
+         const std::vector<std::string>& kept_whole) {
+        const AssemblyCommunicator* communicator = solver.Communicator();
+        if (!communicator) throw Error("PlanModelPartPiece: the linear solver solves on one process");
+        MdpaMesh::Piece piece;
+        std::pair<std::unordered_map<IndexType, std::size_t>, std::size_t> bodies;
+        {
+          py::gil_scoped_release release;
+          const MdpaMesh mesh = MdpaMesh::Read(filename);
+          auto partition = std::make_shared<NodePartition>(mesh, *communicator);
+          piece = mesh.PieceOf([&owners = *partition](IndexType id) { return owners.OwnerOf(id); },
+                               communicator->Rank(), root.Name(), kept_whole);
+          bodies = mesh.Bodies(piece.interface_nodes);
+          partition->KeepOnly(piece.nodes);
+          root.SetNodePartition(std::move(partition));
+        }
+        return py::make_tuple(std::move(piece), std::move(bodies.first), bodies.second);
+      },
+      py::arg("root"), py::arg("filename"), py::arg("linear_solver"), py::arg("kept_whole"),
+      "Collective under mpirun (issue 17): streams the mdpa's connectivity (no model built), partitions its nodes "
+      "with METIS over the linear solver's processes as CutModelPart would the model read whole, keeps the "
+      "partition (of this rank's nodes) with `root` and returns (piece, bodies, labels): what this rank reads "
+      "(ReadModelPart's `piece`: the entities touching its nodes, the sub model parts `kept_whole` whole and what "
+      "touches their nodes), and the bodies of those parts' nodes (ContactSearchProcess.SetBodies).");
   m.def(
       "AllGather",
       [](const LinearSolver& solver, const py::bytes& data) {

@@ -1,7 +1,8 @@
 """The analysis stage: runs a Kratos-format case in the order of spec 1.7.
 
 construct:  read and migrate ProjectParameters.json, choose and validate the solver, add variables
-Initialize: import mdpa and materials, add DoFs, create the processes (lists in alphabetical
+Initialize: import mdpa (under mpirun with MORTARCONTACT_PARTITIONED_MODEL=1 each rank reads its piece)
+            and materials, add DoFs, create the processes (lists in alphabetical
             order of their names, file order inside a list; outputs last), ExecuteInitialize,
             [under mpirun with MORTARCONTACT_PARTITIONED_MODEL=1: the model cut to the rank's piece],
             solver Initialize, Check, ExecuteBeforeSolutionLoop
@@ -19,7 +20,7 @@ import time as wallclock
 from contextlib import contextmanager
 
 from . import _core
-from .process_factory import create_process_lists, naming_the_item
+from .process_factory import create_process_lists, naming_the_item, parts_kept_whole
 from .project_parameters import migrate_project_parameters, read_project_parameters
 from .restart import attach_run
 from .solvers import create_solver
@@ -68,7 +69,7 @@ class StructuralMechanicsAnalysis:
         self.Finalize()
 
     def Initialize(self) -> None:
-        self.solver.ImportModelPart()
+        self.solver.ImportModelPart(kept_whole=self._parts_kept_whole())
         self.solver.AddDofs()
         self.processes = self._create_processes("processes")
         # Under mpirun the ranks hold the same model: only rank 0 writes it out. A model cut across
@@ -76,9 +77,14 @@ class StructuralMechanicsAnalysis:
         writes = not secondary_process() or partitioned_model()
         self.output_processes = self._create_processes("output_processes") if writes else []
         attach_run(self._all_processes(), self.solver.mesh_record, self.solver)
-        for process in self._all_processes():
-            with naming_the_item(getattr(process, "item_where", "")):
-                process.ExecuteInitialize()
+
+        def initialize() -> None:
+            for process in self._all_processes():
+                with naming_the_item(getattr(process, "item_where", "")):
+                    process.ExecuteInitialize()
+
+        # On the ranks' pieces an error may show on some ranks only: all stop with it.
+        initialize() if self.solver.ranks is None else self.solver.ranks.stop_together(initialize)
         if partitioned_model():
             self._cut_model()
         self.solver.set_sub_step_callbacks(self._initialize_sub_step, self._finalize_sub_step)
@@ -216,6 +222,18 @@ class StructuralMechanicsAnalysis:
         if self.echo_level >= 1:
             print(f"model cut across {_core.LaunchedProcesses()} processes; rank 0 keeps {piece['owned_nodes']} "
                   f"owned and {piece['ghost_nodes']} ghost nodes, {piece['elements']} elements")
+            if self.solver.piece_counts is not None:
+                print("each rank read its piece of the mesh: " + "; ".join(
+                    f"rank {rank} {nodes} nodes, {elements} elements"
+                    for rank, (nodes, elements) in enumerate(self.solver.piece_counts)))
+
+    def _parts_kept_whole(self) -> list[str] | None:
+        """A model cut across the ranks: the parts each rank reads whole beside its piece; None: the
+        model is read whole (one process, or a process that needs every element, e.g. a contact
+        interface over the skin of the whole model), then cut after ExecuteInitialize."""
+        if not partitioned_model():
+            return None
+        return parts_kept_whole(self.parameters["processes"]) if self.parameters.Has("processes") else []
 
     def _all_processes(self):
         return [*self.processes, *self.output_processes]

@@ -36,10 +36,20 @@ class Process:
     def ExecuteAfterOutputStep(self) -> None: ...
     def ExecuteFinalize(self) -> None: ...
 
-    def ExecuteBeforeModelCut(self) -> list:
+    @classmethod
+    def parts_kept_whole(cls, settings: _core.Parameters) -> list[str] | None:
+        """Under mpirun with MORTARCONTACT_PARTITIONED_MODEL=1, before the mesh is read (each rank
+        reads its piece): the model parts, named as in ``settings``, whose ExecuteInitialize needs
+        them whole on every rank, with what touches their nodes (the contact interfaces); None when
+        it needs the whole model (every rank then reads it whole and cuts it after)."""
+        return []
+
+    def ExecuteBeforeModelCut(self, bodies) -> list:
         """Under mpirun with MORTARCONTACT_PARTITIONED_MODEL=1, after every ExecuteInitialize and
         before the model is cut into the ranks' pieces: computes what needs the whole model and
-        returns the model parts every rank must keep whole (the contact interfaces)."""
+        returns the model parts every rank must keep whole (the contact interfaces). ``bodies``:
+        None when every rank read the model whole, else ``(body_of, labels)`` of the interface nodes
+        found on the mesh file before a rank read its piece (``PlanModelPartPiece``)."""
         return []
 
     def ExecuteAfterModelCut(self, ranks) -> None:

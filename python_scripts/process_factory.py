@@ -77,6 +77,15 @@ def find_process_class(kratos_module: str | None, python_module: str) -> type[Pr
 
 def create_process(item: _core.Parameters, model: _core.Model) -> Process:
     """Builds the process described by one item of a process list."""
+    cls, settings = _class_and_settings(item)
+    where = settings.Where()
+    with naming_the_item(where):
+        process = cls(model, settings)
+    process.item_where = where
+    return process
+
+
+def _class_and_settings(item: _core.Parameters) -> tuple[type[Process], _core.Parameters]:
     keys = item.Keys()
     if any(k in keys for k in _REGISTRY_FORM_KEYS):
         item.CheckKeys(_REGISTRY_FORM_KEYS)
@@ -91,12 +100,7 @@ def create_process(item: _core.Parameters, model: _core.Model) -> Process:
         python_module = item["python_module"].GetString()
         module = item["kratos_module"].GetString() if item.Has("kratos_module") else None
         settings = item["Parameters"] if item.Has("Parameters") else _core.Parameters()
-    cls = find_process_class(module, python_module)
-    where = settings.Where()
-    with naming_the_item(where):
-        process = cls(model, settings)
-    process.item_where = where
-    return process
+    return find_process_class(module, python_module), settings
 
 
 @contextmanager
@@ -114,20 +118,36 @@ def naming_the_item(where: str):
         raise _core.InputError(f"{where}: {message}") from None
 
 
-def create_process_lists(block: _core.Parameters, model: _core.Model) -> list[Process]:
-    """All processes of a ``processes`` (or ``output_processes``) object: lists in
-    lexicographic order of their names, file order inside a list (spec 1.4); list names
-    starting with ``_`` are commented out and skipped."""
-    processes = []
+def _items(block: _core.Parameters):
+    """The items of a ``processes`` (or ``output_processes``) object: lists in lexicographic order
+    of their names, file order inside a list (spec 1.4); list names starting with ``_`` are
+    commented out and skipped."""
     for list_name in sorted(block.Keys()):
         if list_name.startswith("_"):
             continue
         items = block[list_name]
         if not items.IsArray():
             raise _core.InputError(f"{items.Where()}: a process list must be an array")
-        processes.extend(create_process(items[i], model) for i in range(items.size()))
-    return processes
+        yield from (items[i] for i in range(items.size()))
+
+
+def create_process_lists(block: _core.Parameters, model: _core.Model) -> list[Process]:
+    """All processes of a ``processes`` (or ``output_processes``) object, in the order of ``_items``."""
+    return [create_process(item, model) for item in _items(block)]
+
+
+def parts_kept_whole(block: _core.Parameters) -> list[str] | None:
+    """Before the mesh is read: the model parts the processes of ``block`` need whole on every rank
+    (``Process.parts_kept_whole``), or None when one of them needs the whole model."""
+    names = []
+    for item in _items(block):
+        cls, settings = _class_and_settings(item)
+        kept = cls.parts_kept_whole(settings)
+        if kept is None:
+            return None
+        names += kept
+    return names
 
 
 __all__ = ["PROCESS_REGISTRY", "create_process", "create_process_lists", "find_process_class",
-           "naming_the_item", "normalise_kratos_module"]
+           "naming_the_item", "normalise_kratos_module", "parts_kept_whole"]

@@ -23,11 +23,30 @@ class Ranks:
         """Collective: every rank's ``value`` (picklable), in rank order, on every rank."""
         return [pickle.loads(data) for data in _core.AllGather(self._linear_solver, pickle.dumps(value))]
 
+    def stop_together(self, action) -> None:
+        """Collective: runs ``action``; when it raised a user's error (InputError or
+        NotImplementedFeatureError) on any rank, every rank raises the lowest such rank's, so no
+        rank is left waiting in the next collective and rank 0 prints that one message."""
+        errors = (_core.InputError, _core.NotImplementedFeatureError)
+        try:
+            action()
+            mine = None
+        except errors as error:
+            mine = (int(isinstance(error, errors[1])), str(error))
+        failed = [error for error in self.all_gather(mine) if error is not None]
+        if failed:
+            kind, message = failed[0]
+            raise errors[kind](message)
+
     def owned_nodes(self, part) -> np.ndarray:
         """Whether this rank owns each node of ``part``, in node-id order."""
         return _core.OwnedNodes(part)
 
+    def owned_node_ids(self, part) -> set[int]:
+        """The ids of the nodes of ``part`` this rank owns."""
+        return set(part.NodeIds()[self.owned_nodes(part)].tolist())
+
     def owned_elements(self, part) -> set[int]:
         """The ids of the elements of ``part`` this rank reports."""
-        owned = set(part.NodeIds()[self.owned_nodes(part)].tolist())
+        owned = self.owned_node_ids(part)
         return {element.Id for element in part.Elements if element.NodeIds()[0] in owned}

@@ -7,6 +7,11 @@ the same Newton iterations.
     python benchmarks/mpi/scaling.py --case hertz2d_100k --solver mumps
     python benchmarks/mpi/scaling.py --case hertz3d_50k --solver fieldsplit
     python benchmarks/mpi/scaling.py --case hertz2d_100k --partitioned-model   # + 2 ranks, model cut
+    python benchmarks/mpi/scaling.py --case hertz2d_100k --partitioned-model --mdpa   # each rank reads its piece
+
+``--mdpa`` has every run read the case's mesh as the mdpa ``mesh_files.write_kratos_mdpa`` makes of
+it (the same nodes, elements and parts): a rank of a cut model then reads only its piece of it,
+where a gmsh mesh is read whole and cut.
 
 The per-rank records come from benchmarks/hertz/case_runner.py (rank r > 0 writes
 ``<output>.rank<r>.json``).
@@ -54,6 +59,20 @@ def run(case_dir: str, solver: dict, ranks: int, work: str, partitioned: bool = 
     return loaded
 
 
+def read_as_mdpa(case_dir: str) -> None:
+    """Points the case's ProjectParameters.json at the mdpa of its mesh."""
+    from mortarcontact.cases.mesh_files import write_kratos_mdpa
+
+    mdpa = write_kratos_mdpa(case_dir)
+    path = os.path.join(case_dir, "ProjectParameters.json")
+    with open(path) as f:
+        parameters = json.load(f)
+    parameters["solver_settings"]["model_import_settings"] = {
+        "input_type": "mdpa", "input_filename": os.path.splitext(os.path.basename(mdpa))[0]}
+    with open(path, "w") as f:
+        json.dump(parameters, f, indent=2)
+
+
 def row(ranks, records: list[dict]) -> str:
     def per_rank(*names, digits=2):
         return " / ".join(f"{sum(r['phases'][n] for n in names):.{digits}f}" for r in records)
@@ -76,6 +95,8 @@ def main() -> int:
     parser.add_argument("--solver", choices=sorted(SOLVERS), default="mumps")
     parser.add_argument("--partitioned-model", action="store_true",
                         help="also on 2 processes, each cutting the model (MORTARCONTACT_PARTITIONED_MODEL)")
+    parser.add_argument("--mdpa", action="store_true",
+                        help="read the mesh as an mdpa (a rank of a cut model reads its piece only)")
     args = parser.parse_args()
     from mortarcontact.cases import hertz
 
@@ -83,6 +104,8 @@ def main() -> int:
     load_before = f"{os.getloadavg()[0]:.1f}"  # on a shared machine the timings are only as good as this
     with tempfile.TemporaryDirectory() as work:
         case_dir = hertz.write_case(family, label, work)
+        if args.mdpa:
+            read_as_mdpa(case_dir)
         results = {ranks: run(case_dir, SOLVERS[args.solver], ranks, work) for ranks in (1, 2)}
         if args.partitioned_model:
             results["2, model cut"] = run(case_dir, SOLVERS[args.solver], 2, work, partitioned=True)
@@ -90,7 +113,8 @@ def main() -> int:
     if any(iterations != steps[1] for iterations in steps.values()):
         raise SystemExit(f"the Newton iterations differ: {steps}")
     dofs = results[1][0].get("dofs", "?")
-    print(f"{args.case} ({dofs} DoFs), PETSc {args.solver}, one thread per process; wall-clock seconds per rank "
+    print(f"{args.case} ({dofs} DoFs, {'mdpa' if args.mdpa else 'gmsh'} mesh), PETSc {args.solver}, one thread per "
+          "process; wall-clock seconds per rank "
           f"(rank 0 / rank 1); load average before and after: {load_before} / {os.getloadavg()[0]:.1f}")
     print()
     print("| processes | Newton iterations | assembly | linear solve | DoF set-up + pattern | contact search + "

@@ -5,7 +5,6 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <limits>
 #include <mutex>
 #include <set>
@@ -25,6 +24,8 @@ namespace mc {
 namespace {
 
 using mdpa::IsBlank;
+using mdpa::Line;
+using mdpa::LineCursor;
 using mdpa::NextToken;
 using mdpa::ToDouble;
 using mdpa::ToInteger;
@@ -37,43 +38,6 @@ const std::string* InternName(const std::string& name) {
   const std::lock_guard<std::mutex> lock(mutex);
   return &*names.insert(name).first;
 }
-
-/// One non-blank line with its comment and surrounding whitespace removed.
-struct Line {
-  std::string_view text;
-  std::size_t number = 0;
-};
-
-/// Walks the text line by line without copying; accepts LF and CRLF endings.
-class LineCursor {
- public:
-  explicit LineCursor(std::string_view text) : text_(text) {}
-
-  bool Next(Line& line) {
-    while (pos_ < text_.size()) {
-      const char* begin = text_.data() + pos_;
-      const void* newline = std::memchr(begin, '\n', text_.size() - pos_);
-      const std::size_t length =
-          newline ? static_cast<std::size_t>(static_cast<const char*>(newline) - begin) : text_.size() - pos_;
-      std::string_view raw(begin, length);
-      pos_ += length + 1;
-      ++number_;
-      const std::size_t comment = raw.find("//");
-      if (comment != std::string_view::npos) raw = raw.substr(0, comment);
-      raw = TrimView(raw);
-      if (!raw.empty()) {
-        line = {raw, number_};
-        return true;
-      }
-    }
-    return false;
-  }
-
- private:
-  std::string_view text_;
-  std::size_t pos_ = 0;
-  std::size_t number_ = 0;
-};
 
 /// Id -> entity lookup for the duration of one read: a dense table when ids are compact,
 /// a hash map otherwise. Cheaper than the containers' binary search, and unaffected by the
@@ -110,6 +74,27 @@ class IdIndex {
   std::unordered_map<IndexType, T*> sparse_;
 };
 
+/// The ids a filtered read met, kept or not (MdpaReaderOptions::piece): what a line referring to
+/// an entity of another rank's piece is checked against, and where a duplicate id shows.
+class IdsRead {
+ public:
+  /// False when `id` was read before.
+  bool Add(IndexType id) {
+    if (ids_.empty() || id > ids_.back()) {
+      ids_.push_back(id);
+      return true;
+    }
+    const auto it = std::lower_bound(ids_.begin(), ids_.end(), id);
+    if (it != ids_.end() && *it == id) return false;
+    ids_.insert(it, id);
+    return true;
+  }
+  bool Has(IndexType id) const { return std::binary_search(ids_.begin(), ids_.end(), id); }
+
+ private:
+  std::vector<IndexType> ids_;
+};
+
 class Reader {
  public:
   Reader(std::string_view text, const std::string& origin, ModelPart& target, const MdpaReaderOptions& options,
@@ -119,6 +104,7 @@ class Reader {
         target_(target),
         root_(target.GetRootModelPart()),
         options_(options),
+        piece_(options.piece),
         fixities_(fixities) {}
 
   void Run() {
@@ -366,6 +352,10 @@ class Reader {
                     std::max(entries[i].line, entries[i - 1].line)),
              std::to_string(entries[i].id));
     for (const Entry& e : entries) {
+      if (piece_) {
+        nodes_read_.Add(e.id);
+        if (!piece_->KeepsNode(e.id)) continue;
+      }
       try {
         target_.CreateNewNode(e.id, e.x[0], e.x[1], e.x[2]);
       } catch (const InputError& error) {
@@ -376,6 +366,8 @@ class Reader {
   }
 
   Node* FindNode(IndexType id) { return nodes_.Find(id, root_.Nodes()); }
+  /// Whether a filtered read met node `id` (FindNode finds the kept ones only).
+  bool NodeRead(IndexType id) const { return piece_ && nodes_read_.Has(id); }
 
   // Elements and conditions -------------------------------------------------------------------
   template <class T>
@@ -391,6 +383,24 @@ class Reader {
       return root_.Elements();
     else
       return root_.Conditions();
+  }
+  template <class T>
+  IdsRead& ReadOf() {
+    if constexpr (std::is_same_v<T, Element>)
+      return elements_read_;
+    else
+      return conditions_read_;
+  }
+  template <class T>
+  bool EntityRead(IndexType id) {
+    return piece_ && ReadOf<T>().Has(id);
+  }
+  template <class T>
+  bool Keeps(IndexType id) const {
+    if constexpr (std::is_same_v<T, Element>)
+      return !piece_ || piece_->KeepsElement(id);
+    else
+      return !piece_ || piece_->KeepsCondition(id);
   }
   template <class T>
   T* FindEntity(IndexType id) {
@@ -436,11 +446,12 @@ class Reader {
         Fail(line.number,
              Concat("expected ", expected, " node ids for ", name, " ", id, " (found ", node_ids.size(), ")"),
              line.text);
+      const bool kept = Keeps<T>(id);
       Geometry::NodesArray nodes;
       nodes.reserve(node_ids.size());
       for (IndexType nid : node_ids) {
-        Node* node = FindNode(nid);
-        if (!node)
+        Node* node = kept ? FindNode(nid) : nullptr;
+        if (!node && (kept || !NodeRead(nid)))
           FailIn(line.number, Concat(kind, " ", id, " refers to node ", nid, ", which does not exist"), line.text);
         nodes.push_back(node);
       }
@@ -455,11 +466,13 @@ class Reader {
         properties = &target_.GetOrCreateProperties(pid);
         properties_id = pid;
       }
-      // Ids above every id seen so far cannot be duplicates; only the others need a lookup.
-      if (any_id && id <= max_id && existing.Find(id))
-        FailIn(line.number, Concat("expected a unique id: ", kind, " ", id, " is defined twice"), line.text);
+      // Ids above every id seen so far cannot be duplicates; only the others need a lookup. A
+      // filtered read holds some entities only: it looks among the ids read.
+      const bool twice = piece_ ? !ReadOf<T>().Add(id) : any_id && id <= max_id && existing.Find(id);
+      if (twice) FailIn(line.number, Concat("expected a unique id: ", kind, " ", id, " is defined twice"), line.text);
       if (!any_id || id > max_id) max_id = id;
       any_id = true;
+      if (!kept) continue;
       std::unique_ptr<T> entity;
       try {
         entity = prototype->Create(id, std::move(nodes), properties);
@@ -501,7 +514,8 @@ class Reader {
       std::string_view tail = line.text;
       const IndexType id = ParseId(line, NextToken(tail), "a nodal data line 'node_id fixity value'");
       Node* node = FindNode(id);
-      if (!node) FailIn(line.number, Concat("NodalData ", var->Name(), ": node ", id, " does not exist"), line.text);
+      if (!node && !NodeRead(id))
+        FailIn(line.number, Concat("NodalData ", var->Name(), ": node ", id, " does not exist"), line.text);
       const std::string_view fix_token = NextToken(tail);
       int fixed = 0;
       if (!ToInteger(fix_token, fixed) || (fixed != 0 && fixed != 1))
@@ -512,12 +526,13 @@ class Reader {
         double v = 0.0;
         if (!ToDouble(text, v))
           Fail(line.number, Concat("expected a finite number for ", var->Name()), text.empty() ? line.text : text);
-        node->FastGetSolutionStepValue(*static_cast<const Variable<double>*>(var)) = v;
+        if (node) node->FastGetSolutionStepValue(*static_cast<const Variable<double>*>(var)) = v;
       } else {
+        // Another rank's node (a filtered read): parsed for its errors only.
         const DataValueContainer::Value value = ParseValue(line, *var, text);
-        if (historical)
+        if (node && historical)
           node->FastGetSolutionStepValue(*static_cast<const Variable<Array3>*>(var)) = std::get<Array3>(value);
-        else
+        else if (node)
           node->Data().SetGeneric(*var, value);
       }
       if (fixed == 1) {
@@ -525,7 +540,8 @@ class Reader {
           Fail(line.number,
                Concat("expected fixity 0: ", var->Name(), " is a ", ValueTypeName(var->Type()), " and has no DoF"),
                fix_token);
-        for (const Variable<double>* component : fixable) fixities_.push_back({node, component});
+        if (node)
+          for (const Variable<double>* component : fixable) fixities_.push_back({node, component});
       }
     }
   }
@@ -541,9 +557,10 @@ class Reader {
       std::string_view tail = line.text;
       const IndexType id = ParseId(line, NextToken(tail), [&] { return Concat("a data line '", kind, "_id value'"); });
       T* entity = FindEntity<T>(id);
-      if (!entity)
+      if (!entity && !EntityRead<T>(id))
         FailIn(line.number, Concat(keyword, " ", var->Name(), ": ", kind, " ", id, " does not exist"), line.text);
-      entity->Data().SetGeneric(*var, ParseValue(line, *var, TrimView(tail)));
+      const DataValueContainer::Value value = ParseValue(line, *var, TrimView(tail));
+      if (entity) entity->Data().SetGeneric(*var, value);
     }
   }
 
@@ -592,22 +609,23 @@ class Reader {
       if (keyword == "SubModelPartNodes") {
         ReadIds(line, keyword, [&](IndexType id, const Line& at) {
           Node* node = FindNode(id);
-          if (!node) FailIn(at.number, Concat("sub model part ", where, ": node ", id, " does not exist"), at.text);
-          sub.AddNode(node);
+          if (!node && !NodeRead(id))
+            FailIn(at.number, Concat("sub model part ", where, ": node ", id, " does not exist"), at.text);
+          if (node) sub.AddNode(node);
         });
       } else if (keyword == "SubModelPartElements") {
         ReadIds(line, keyword, [&](IndexType id, const Line& at) {
           Element* element = FindEntity<Element>(id);
-          if (!element)
+          if (!element && !EntityRead<Element>(id))
             FailIn(at.number, Concat("sub model part ", where, ": element ", id, " does not exist"), at.text);
-          sub.AddElement(element);
+          if (element) sub.AddElement(element);
         });
       } else if (keyword == "SubModelPartConditions") {
         ReadIds(line, keyword, [&](IndexType id, const Line& at) {
           Condition* condition = FindEntity<Condition>(id);
-          if (!condition)
+          if (!condition && !EntityRead<Condition>(id))
             FailIn(at.number, Concat("sub model part ", where, ": condition ", id, " does not exist"), at.text);
-          sub.AddCondition(condition);
+          if (condition) sub.AddCondition(condition);
         });
       } else if (keyword == "SubModelPartProperties") {
         ReadIds(line, keyword, [&](IndexType id, const Line& at) {
@@ -640,6 +658,8 @@ class Reader {
   IdIndex<Element> elements_;
   IdIndex<Condition> conditions_;
   std::set<IndexType> undefined_properties_;
+  const MdpaMesh::Piece* piece_;
+  IdsRead nodes_read_, elements_read_, conditions_read_;
 };
 
 }  // namespace
@@ -647,15 +667,7 @@ class Reader {
 MdpaReader::MdpaReader(std::string filename, MdpaReaderOptions options)
     : filename_(std::move(filename)), options_(options) {}
 
-void MdpaReader::ReadModelPart(ModelPart& model_part) {
-  std::ifstream file(filename_, std::ios::binary | std::ios::ate);
-  if (!file) throw InputError(Concat("cannot open the mdpa file '", filename_, "'"));
-  const std::streamsize size = file.tellg();
-  std::string text(static_cast<std::size_t>(size), '\0');
-  file.seekg(0);
-  if (!file.read(text.data(), size)) throw InputError(Concat("cannot read the mdpa file '", filename_, "'"));
-  ReadModelPartFromText(text, model_part);
-}
+void MdpaReader::ReadModelPart(ModelPart& model_part) { ReadModelPartFromText(mdpa::ReadText(filename_), model_part); }
 
 void MdpaReader::ReadModelPartFromText(std::string_view text, ModelPart& model_part) {
   Reader(text, filename_, model_part, options_, fixities_).Run();

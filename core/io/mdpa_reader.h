@@ -5,6 +5,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/io/mdpa_mesh.h"
 #include "core/variables/variable.h"
 
 namespace mc {
@@ -16,6 +17,10 @@ struct MdpaReaderOptions {
   /// Kratos' `ignore_variables_not_in_solution_step_data`: when true, data blocks naming a
   /// variable that is not registered are skipped with a warning instead of being an error.
   bool ignore_variables_not_in_solution_step_data = false;
+  /// A distributed run's filtered read (issue 17): only these nodes, elements and conditions are
+  /// built; every line is read and checked as without it, so every rank stops at the same bad
+  /// line with the same message. Data of entities not kept is read and dropped.
+  const MdpaMesh::Piece* piece = nullptr;
 };
 
 /// A `Begin NodalData VAR` line with fixity flag 1. Nodes get their DoFs only when the solver

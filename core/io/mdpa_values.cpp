@@ -1,11 +1,23 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "core/io/mdpa_values.h"
 
+#include <fstream>
 #include <variant>
 
 #include "core/utilities/error.h"
+#include "core/utilities/string_utilities.h"
 
 namespace mc::mdpa {
+
+std::string ReadText(const std::string& filename) {
+  std::ifstream file(filename, std::ios::binary | std::ios::ate);
+  if (!file) throw InputError(Concat("cannot open the mdpa file '", filename, "'"));
+  const std::streamsize size = file.tellg();
+  std::string text(static_cast<std::size_t>(size), '\0');
+  file.seekg(0);
+  if (!file.read(text.data(), size)) throw InputError(Concat("cannot read the mdpa file '", filename, "'"));
+  return text;
+}
 
 namespace {
 

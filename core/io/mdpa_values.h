@@ -6,6 +6,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <string>
 #include <string_view>
 
@@ -51,6 +52,45 @@ bool ToInteger(std::string_view token, Int& value) noexcept {
   return ec == std::errc() && end == last && first != last;
 }
 
+/// One non-blank line with its comment and surrounding whitespace removed.
+struct Line {
+  std::string_view text;
+  std::size_t number = 0;
+};
+
+/// Walks the text line by line without copying; accepts LF and CRLF endings.
+class LineCursor {
+ public:
+  explicit LineCursor(std::string_view text) : text_(text) {}
+
+  bool Next(Line& line) {
+    while (pos_ < text_.size()) {
+      const char* begin = text_.data() + pos_;
+      const void* newline = std::memchr(begin, '\n', text_.size() - pos_);
+      const std::size_t length =
+          newline ? static_cast<std::size_t>(static_cast<const char*>(newline) - begin) : text_.size() - pos_;
+      std::string_view raw(begin, length);
+      pos_ += length + 1;
+      ++number_;
+      const std::size_t comment = raw.find("//");
+      if (comment != std::string_view::npos) raw = raw.substr(0, comment);
+      raw = TrimView(raw);
+      if (!raw.empty()) {
+        line = {raw, number_};
+        return true;
+      }
+    }
+    return false;
+  }
+
+ private:
+  std::string_view text_;
+  std::size_t pos_ = 0;
+  std::size_t number_ = 0;
+};
+
+/// The whole file (InputError naming it when it cannot be read).
+std::string ReadText(const std::string& filename);
 /// Parses `text` as a value of the type of `var` (a component takes a double).
 bool ParseValue(const VariableData& var, std::string_view text, DataValueContainer::Value& value);
 /// "a number", "an array '[3](x,y,z)'"... for error messages.

@@ -116,11 +116,30 @@ class SearchBaseProcess(Process):
                 self.root, interface, sp, slot=slot, condition_name=self.condition_stem,
                 predefined_master_slave=bool(slaves), property_id=properties.Id))
 
-    def ExecuteBeforeModelCut(self) -> list:
+    @classmethod
+    def parts_kept_whole(cls, settings) -> list[str] | None:
+        """The parts the interfaces are built from (``<pair_prefix>_model_part``); None for the skin
+        of the whole model (every slot empty) or settings the constructor will reject. The slave
+        parts (``assume_master_slave``) need not be whole: only their nodes on the interface count."""
+        key = f"{cls.pair_prefix}_model_part"
+        settings = settings.Clone()
+        _settings.normalise_pair_layouts(settings, (key,))
+        if not settings.Has(key) or not settings[key].IsSubParameter():
+            return None
+        try:
+            names = [name for slot in settings[key].Keys() for name in settings[key][slot].GetStringArray()]
+        except _core.InputError:
+            return None
+        return names or None
+
+    def ExecuteBeforeModelCut(self, bodies) -> list:
         # Every rank searches the whole interface (the pairs reach master faces anywhere) and
         # computes every pair, so the pairs' part is replicated too.
         for search in self.searches:
-            search.FindBodies()
+            if bodies is None:
+                search.FindBodies()
+            else:
+                search.SetBodies(*bodies)
         return [part for search in self.searches for part in (search.InterfacePart(), search.ComputingPart())]
 
     def _adapt_search(self, interfaces) -> None:

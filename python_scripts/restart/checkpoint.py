@@ -237,18 +237,23 @@ class Checkpoint:
                                    f"(SHA-256 {self.mesh['sha256'][:12]}...), but {os.path.abspath(path)} differs "
                                    "from it; resume with the mesh the checkpoint was written for")
 
-    def check_model(self, part) -> None:
-        """The whole model read for the resumed run (the root model part ``part``) is the saved one."""
+    def check_model(self, part, piece: bool = False) -> None:
+        """The whole model read for the resumed run (the root model part ``part``) is the saved one;
+        ``piece``: ``part`` is the piece a rank read, whose nodes must be among the saved ones."""
         where = f"restart: {self.path}"
         if part.Name != self.model_part_name:
             raise _core.InputError(f"{where} holds model part '{self.model_part_name}', not '{part.Name}'")
         ids = self.file["nodes/ids"][()]
-        if ids.shape != (part.NumberOfNodes(),):
-            raise _core.InputError(f"{where} has {ids.size} nodes; {part.Name} has {part.NumberOfNodes()}")
-        differ = np.flatnonzero(ids != part.NodeIds())
-        if differ.size:
-            raise _core.InputError(f"{where}: node ids differ from {part.Name}'s, first at position {differ[0]} "
-                                   f"({ids[differ[0]]} in the checkpoint, {part.NodeIds()[differ[0]]} in the model)")
+        if piece:
+            self._rows(part)
+        else:
+            if ids.shape != (part.NumberOfNodes(),):
+                raise _core.InputError(f"{where} has {ids.size} nodes; {part.Name} has {part.NumberOfNodes()}")
+            differ = np.flatnonzero(ids != part.NodeIds())
+            if differ.size:
+                raise _core.InputError(f"{where}: node ids differ from {part.Name}'s, first at position {differ[0]} "
+                                       f"({ids[differ[0]]} in the checkpoint, {part.NodeIds()[differ[0]]} in the "
+                                       "model)")
         if self.buffer_size != part.GetBufferSize():
             raise _core.InputError(f"{where} has buffer_size {self.buffer_size}; the solver uses "
                                    f"{part.GetBufferSize()} (solver_settings.buffer_size and the scheme)")

@@ -52,7 +52,9 @@ class MechanicalSolver:
         self.mesh_record = None  # the mesh file and its import settings, for checkpoints
         self.mesh_path = None  # the mesh file read, named in errors about its entities
         self.sub_step_callbacks = (None, None)
-        self._early_linear_solver = None  # made by CutModel, taken by _create_strategy
+        self._early_linear_solver = None  # made by _read_piece or CutModel, taken by _create_strategy
+        self.piece_bodies = None  # a rank read its piece: the interface's bodies (_read_piece)
+        self.piece_counts = None  # and each rank's (nodes, elements) read
         self._time_step_checked = False
         self._predicted_time_step = None  # (time step, steps since it was predicted)
         self.convergence_history = ConvergenceHistory.from_settings(settings["convergence_history"])
@@ -136,13 +138,15 @@ class MechanicalSolver:
         return (self.scheme_type in ("static", "pseudo_static") and s["analysis_type"].GetString() == "non_linear"
                 and s["displacement_extrapolation"].GetBool())
 
-    def ImportModelPart(self) -> None:
+    def ImportModelPart(self, kept_whole: list[str] | None = None) -> None:
         """Reads the mesh named by ``model_import_settings``: ``input_type`` ``"mdpa"`` (Kratos), or
         mortarcontact's ``"gmsh"`` / ``"meshio"`` with ``element_names``, ``condition_names`` and
         ``properties_ids`` (see ``solvers/meshio_import.py``), then the materials. ``"rest"`` opens
         the checkpoint named by ``input_filename``, ``restart_load_file_label``,
         ``input_output_path`` and ``load_restart_files_from_folder`` (Kratos' keys) and reads the
-        mesh it was written for; the analysis stage restores the state after the set-up."""
+        mesh it was written for; the analysis stage restores the state after the set-up.
+        ``kept_whole``: each rank of a model cut across the ranks reads only its piece of an mdpa,
+        keeping these model parts whole (``process_factory.parts_kept_whole``)."""
         imports = self.settings["model_import_settings"]
         # Nodes are created with the buffer in force, so it is set before the mesh is read.
         self.main_model_part.SetBufferSize(max(self.settings["buffer_size"].GetInt(), self.minimum_buffer_size()))
@@ -156,7 +160,7 @@ class MechanicalSolver:
             self.checkpoint.check_mesh_file(path)
             self.mesh_record = self.checkpoint.mesh
         else:
-            path = self._import_mesh(imports)
+            path = self._import_mesh(imports, kept_whole)
             self.mesh_record = mesh_record(imports, path) if path is not None else None
         self.mesh_path = path
         self._import_materials()
@@ -182,8 +186,9 @@ class MechanicalSolver:
                                       else "; no checkpoints of that name were saved there"))
         return Checkpoint(found)
 
-    def _import_mesh(self, imports) -> str | None:
-        """Reads the mesh of an mdpa / gmsh / meshio ``imports`` block; the file read, or None."""
+    def _import_mesh(self, imports, kept_whole: list[str] | None = None) -> str | None:
+        """Reads the mesh of an mdpa / gmsh / meshio ``imports`` block; the file read, or None.
+        With ``kept_whole``, this rank's piece of an mdpa (``_read_piece``)."""
         where = imports.Where()
         input_type = imports["input_type"].GetString()
         if input_type in ("mdpa", "gmsh", "meshio") and not imports["input_filename"].GetString():
@@ -201,8 +206,11 @@ class MechanicalSolver:
                                        "or \"meshio\"")
             path = self._locate(filename if filename.endswith(".mdpa") else filename + ".mdpa",
                                 f"{where}.input_filename")
-            self.pending_fixities = _core.ReadModelPart(
-                self.main_model_part, path, imports["ignore_variables_not_in_solution_step_data"].GetBool())
+            ignore = imports["ignore_variables_not_in_solution_step_data"].GetBool()
+            if kept_whole is not None:
+                self._read_piece(path, ignore, kept_whole)
+                return path
+            self.pending_fixities = _core.ReadModelPart(self.main_model_part, path, ignore)
             check_imported_mesh(self.main_model_part, path)
             return path
         if input_type in ("gmsh", "meshio"):
@@ -216,6 +224,29 @@ class MechanicalSolver:
             raise _core.NotImplementedFeatureError(f"{where}.input_type: \"{input_type}\" is not supported"
                                                    f"{nearest(input_type, valid)}; valid: {', '.join(valid)}")
         return None
+
+    def _read_piece(self, path: str, ignore: bool, kept_whole: list[str]) -> None:
+        """Each rank builds only its piece of the mdpa (issue 17): every rank streams the file's
+        connectivity, rank 0 partitions it with METIS as it would the model read whole, and each
+        rank reads the entities touching its nodes, the parts ``kept_whole`` (the contact
+        interfaces) and what touches their nodes, which the interfaces are built from. The linear
+        solver is made first, for its communicator. A bad line stops every rank at the same line;
+        an error found on one rank's piece alone stops them all with that rank's message."""
+        self._check_explicit_on_one_process()
+        self._early_linear_solver = self._new_linear_solver()
+        self.ranks = Ranks(self._early_linear_solver)
+        piece, body_of, labels = _core.PlanModelPartPiece(self.main_model_part, path, self._early_linear_solver,
+                                                          kept_whole)
+        self.piece_bodies = (body_of, labels)
+
+        def read() -> None:
+            part = self.main_model_part
+            self.pending_fixities = _core.ReadModelPart(part, path, ignore, piece)
+            check_imported_mesh(part, path, self.ranks.owned_node_ids(part))
+
+        self.ranks.stop_together(read)
+        part = self.main_model_part
+        self.piece_counts = self.ranks.all_gather((part.NumberOfNodes(), part.NumberOfElements()))
 
     def _import_materials(self) -> None:
         filename = self.settings["material_import_settings"]["materials_filename"].GetString()
@@ -293,13 +324,18 @@ class MechanicalSolver:
         Returns the piece's counts; ``self.ranks`` then gathers the pieces' results."""
         self._check_explicit_on_one_process()
         if self.checkpoint is not None:
-            # Checked whole, restored after the set-up on each piece (its nodes' rows), as a serial
-            # resumed run restores the whole model after its set-up.
-            self.checkpoint.check_model(self.main_model_part)
-        self._early_linear_solver = self._new_linear_solver()
-        replicated = [part for process in processes for part in process.ExecuteBeforeModelCut()]
-        piece = _core.CutModelPart(self.main_model_part, self._early_linear_solver, replicated)
-        self.ranks = Ranks(self._early_linear_solver)
+            # Checked (the whole model, or a piece read: its nodes among the saved ones), restored
+            # after the set-up on each piece (its nodes' rows), as a serial resumed run restores the
+            # whole model after its set-up.
+            self.checkpoint.check_model(self.main_model_part, piece=self.piece_counts is not None)
+        if self._early_linear_solver is None:  # else made to read the rank's piece
+            self._early_linear_solver = self._new_linear_solver()
+            self.ranks = Ranks(self._early_linear_solver)
+        replicated = [part for process in processes for part in process.ExecuteBeforeModelCut(self.piece_bodies)]
+        piece = {}
+        # A piece read may hold what the cut refuses (master-slave constraints) on some ranks only.
+        self.ranks.stop_together(lambda: piece.update(
+            _core.CutModelPart(self.main_model_part, self._early_linear_solver, replicated)))
         return piece
 
     def _linear_solver(self):

@@ -17,9 +17,11 @@ NO_STIFFNESS = LOAD_CONDITIONS | {"LineCondition2D2N", "LineCondition2D3N", "Sur
                                   "SurfaceCondition3D4N"}
 
 
-def check_imported_mesh(part, path: str) -> None:
+def check_imported_mesh(part, path: str, owned=None) -> None:
     """Raises InputError for the first problem found in ``part`` as read from ``path``. Nodes are
-    carried by elements and by conditions that give stiffness (springs of a plugin, ...)."""
+    carried by elements and by conditions that give stiffness (springs of a plugin, ...). On a
+    rank's piece of a distributed run, ``owned`` (the ids of the nodes it owns): a load's node is
+    checked by its owner only, which holds every entity carrying it."""
     carried: set[int] = set()
     loads = []
     for kind, entities in (("element", part.Elements), ("condition", part.Conditions)):
@@ -39,7 +41,7 @@ def check_imported_mesh(part, path: str) -> None:
                                f"{part.NumberOfConditions()} conditions, none of which gives stiffness); "
                                "the structure needs an element block")
     for condition, name, ids in loads:
-        orphans = [i for i in ids if i not in carried]
+        orphans = [i for i in ids if i not in carried and (owned is None or i in owned)]
         if orphans:
             raise _core.InputError(f"{path}: condition {condition.Id} ({name}): node {orphans[0]} belongs to "
                                    "no element, so nothing carries its load")

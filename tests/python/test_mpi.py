@@ -379,3 +379,78 @@ def test_the_elimination_builder_on_a_cut_model_is_one_clear_error(tmp_path):
     assert len(messages) == 1, done.stderr  # rank 0's only
     assert "elimination builder on a model cut across 2 processes" in messages[0], messages[0]
     assert '"block_builder": true' in messages[0], messages[0]
+
+
+def _echo(parameters, part):
+    parameters["problem_data"]["echo_level"] = 1
+
+
+def test_each_rank_reads_only_its_piece_of_the_mesh(tmp_path):
+    """Each rank of a cut model builds only its piece of the mdpa (the entities touching its nodes,
+    the contact interface and what touches it): on 2 and 3 ranks every rank holds fewer nodes and
+    elements than the mesh has, and together they hold every node."""
+    _write_cut_case(tmp_path, "hertz2d-mumps", _echo)
+    mdpa = next(tmp_path.rglob("*.mdpa"))
+    blocks, block = {"Nodes": 0, "Elements": 0}, None
+    for line in mdpa.read_text().splitlines():
+        words = line.split("//")[0].split()
+        if words[:1] == ["Begin"]:
+            block = words[1]
+        elif words[:1] == ["End"]:
+            block = None
+        elif words and block in blocks:
+            blocks[block] += 1
+    for ranks in (2, 3):
+        done = _run(tmp_path, ranks, PARTITIONED)
+        assert done.returncode == 0, done.stdout + done.stderr
+        line = next(line for line in done.stdout.splitlines() if line.startswith("each rank read its piece"))
+        pieces = [tuple(int(word) for word in piece.split()[2::2]) for piece in line.split(": ", 1)[1].split("; ")]
+        assert len(pieces) == ranks, line
+        for nodes, elements in pieces:
+            assert 0 < nodes < blocks["Nodes"] and 0 < elements < blocks["Elements"], (line, blocks)
+        assert sum(nodes for nodes, _ in pieces) >= blocks["Nodes"], (line, blocks)
+
+
+def test_a_bad_line_read_in_pieces_stops_every_rank_with_the_serial_message(tmp_path):
+    """An element naming a node that does not exist, in the part of the mesh one rank reads: every
+    rank reads every line, so both stop at it, and rank 0 prints the serial run's message once."""
+    messages = {}
+    for processes, env in ((1, ENV), (2, PARTITIONED)):
+        folder = tmp_path / f"ranks{processes}"
+        folder.mkdir()
+        _write_cut_case(folder, "hertz2d-mumps")
+        mdpa = next(folder.rglob("*.mdpa"))
+        lines = mdpa.read_text().splitlines()
+        last = max(k for k, line in enumerate(lines) if line.strip() == "End Elements")
+        words = lines[last - 1].split()
+        lines[last - 1] = " ".join([*words[:-1], "999999"])
+        mdpa.write_text("\n".join(lines) + "\n")
+        done = _run(folder, processes, env)
+        assert done.returncode == 2, done.stdout + done.stderr
+        assert "Traceback" not in done.stderr
+        errors = [line for line in done.stderr.splitlines() if line.startswith("mortarcontact: input error")]
+        assert len(errors) == 1, done.stderr  # rank 0's only
+        assert f".mdpa:{last}:" in errors[0] and "refers to node 999999" in errors[0], errors[0]
+        messages[processes] = errors[0]
+    assert messages[2] == messages[1]
+
+
+def test_a_mesh_error_on_one_ranks_piece_stops_every_rank_with_the_serial_message(tmp_path):
+    """A point load on a node that no element holds: only its owner (rank 0, which owns the nodes of
+    no element) finds it on its piece, and every rank stops with the serial run's message, once."""
+    messages = {}
+    for processes, env in ((1, ENV), (2, PARTITIONED)):
+        folder = tmp_path / f"ranks{processes}"
+        folder.mkdir()
+        _write_cut_case(folder, "hertz2d-mumps")
+        mdpa = next(folder.rglob("*.mdpa"))
+        text = mdpa.read_text().replace("End Nodes", "999999 0.5 0.5 0.0\nEnd Nodes", 1)
+        mdpa.write_text(text + "Begin Conditions PointLoadCondition2D1N\n999999 0 999999\nEnd Conditions\n")
+        done = _run(folder, processes, env)
+        assert done.returncode == 2, done.stdout + done.stderr
+        assert "Traceback" not in done.stderr
+        errors = [line for line in done.stderr.splitlines() if line.startswith("mortarcontact: input error")]
+        assert len(errors) == 1, done.stderr  # rank 0's only
+        assert "condition 999999 (PointLoadCondition2D1N): node 999999 belongs to no element" in errors[0], errors[0]
+        messages[processes] = errors[0]
+    assert messages[2] == messages[1]

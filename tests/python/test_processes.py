@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import mortarcontact as mc
-from mortarcontact.process_factory import PROCESS_REGISTRY, create_process, create_process_lists
+from mortarcontact.process_factory import PROCESS_REGISTRY, create_process, create_process_lists, parts_kept_whole
 from mortarcontact.processes import resolve_model_part
 from mortarcontact.processes.from_json_check_result_process import CheckResultError, is_close
 
@@ -264,6 +264,27 @@ def test_process_lists_run_in_lexicographic_order():
     for process in processes:
         process.ExecuteBeforeSolutionLoop()
     assert root.GetNodalValues(mc.DISPLACEMENT)[0, 0] == 3.0
+
+
+def test_the_parts_kept_whole_are_named_before_the_mesh_is_read():
+    """Issue 17: before a rank reads its piece, the processes name the model parts they need whole
+    (the contact interfaces' parts, in any of the slot layouts; not the slave parts); an interface
+    over the skin of the whole model needs every element (None: the model is read whole)."""
+    def block(*contact_settings):
+        items = [{"python_module": "assign_scalar_variable_process", "kratos_module": "KratosMultiphysics",
+                  "Parameters": {"model_part_name": "Structure.top", "variable_name": "DISPLACEMENT_X"}}]
+        items += [{"python_module": "alm_contact_process",
+                   "kratos_module": "KratosMultiphysics.ContactStructuralMechanicsApplication",
+                   "Parameters": settings} for settings in contact_settings]
+        return parameters(json.dumps({"contact_process_list": items}))
+
+    slots = {"contact_model_part": {"0": ["Contact_slave", "Contact_master"], "3": ["Other"]},
+             "assume_master_slave": {"0": ["Contact_slave"]}}
+    assert parts_kept_whole(block(slots)) == ["Contact_slave", "Contact_master", "Other"]
+    assert parts_kept_whole(block({"contact_model_part": "Contact_Part"}, {"contact_model_part": ["A", "B"]})) == \
+        ["Contact_Part", "A", "B"]
+    assert parts_kept_whole(block()) == []
+    assert parts_kept_whole(block({"contact_model_part": {"0": []}})) is None
 
 
 # --- JSON oracle ---------------------------------------------------------------------------------

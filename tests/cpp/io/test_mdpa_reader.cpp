@@ -11,6 +11,7 @@
 
 #include "core/io/mdpa_reader.h"
 #include "core/model/model.h"
+#include "core/model/model_part_partitioner.h"
 #include "core/utilities/logger.h"
 #include "core/variables/kernel_variables.h"
 #include "io_test_utilities.h"
@@ -451,19 +452,92 @@ TEST(MdpaReader, MalformedInputNamesFileLineAndText) {
        Mesh("Begin SubModelPart Part\nBegin SubModelPartNodes\n1\nEnd SubModelPartNodes\n"),
        {"bad.mdpa:7:", "End SubModelPart", "'Begin SubModelPart Part'"}},
   };
-  for (const BadCase& bad : cases) {
-    SCOPED_TRACE(bad.what);
+  // Read whole, and as each piece of a distributed run (issue 17: every rank reads every line):
+  // the same message, so every rank stops at the same line.
+  const auto message_of = [](const std::string& text, const MdpaMesh::Piece* piece) {
     Model model;
     ModelPart& root = model.CreateModelPart("Structure");
     root.AddNodalSolutionStepVariable(DISPLACEMENT);
+    MdpaReaderOptions options;
+    options.piece = piece;
     try {
-      MdpaReader("bad.mdpa").ReadModelPartFromText(bad.text, root);
-      ADD_FAILURE() << "no error";
+      MdpaReader("bad.mdpa", options).ReadModelPartFromText(text, root);
     } catch (const InputError& error) {
-      const std::string message = error.what();
-      for (const std::string& part : bad.expected) EXPECT_NE(message.find(part), std::string::npos) << message;
+      return std::string(error.what());
     }
+    return std::string("no error");
+  };
+  for (const BadCase& bad : cases) {
+    SCOPED_TRACE(bad.what);
+    const std::string message = message_of(bad.text, nullptr);
+    for (const std::string& part : bad.expected) EXPECT_NE(message.find(part), std::string::npos) << message;
+    const MdpaMesh mesh = MdpaMesh::FromText(bad.text);
+    for (int rank = 0; rank < 2; ++rank) {
+      const MdpaMesh::Piece piece =
+          mesh.PieceOf([](IndexType id) { return static_cast<int>(id % 2); }, rank, "Structure", {});
+      EXPECT_EQ(message_of(bad.text, &piece), message) << "piece of rank " << rank;
+    }
+    const MdpaMesh::Piece nothing;
+    EXPECT_EQ(message_of(bad.text, &nothing), message) << "a piece holding nothing";
   }
+}
+
+// Issue 17: a rank reading its piece of Kratos' Hertz case (3 ranks, owners by blocks of node ids)
+// holds part of the model only, the elements around every interface node as the whole model does,
+// and, cut as a model read whole is cut (ModelPartPartitioner), exactly that model's piece.
+TEST(MdpaReader, APieceReadThenCutIsTheModelReadWholeThenCut) {
+  const std::string path = CasesDir() + "/ALM_frictionless_contact_test_2D/simple_hertz_sphere_plate_test.mdpa";
+  test::RegisterEntitiesNamedIn(ReadFile(path));
+  const auto owner = [](IndexType id) { return static_cast<int>((id / 37) % 3); };
+  const auto node_owner = [&](const Node& node) { return owner(node.Id()); };
+  const MdpaMesh mesh = MdpaMesh::Read(path);
+  const auto read = [&](Model& model, const MdpaMesh::Piece* piece) -> ModelPart& {
+    ModelPart& root = model.CreateModelPart("Structure");
+    root.AddNodalSolutionStepVariable(DISPLACEMENT);
+    MdpaReaderOptions options;
+    options.piece = piece;
+    MdpaReader(path, options).ReadModelPart(root);
+    return root;
+  };
+  Model whole_model;
+  const ModelPart& whole = read(whole_model, nullptr);
+  const auto elements_around = [](const ModelPart& part, IndexType node) {
+    std::set<IndexType> ids;
+    for (const Element* element : part.Elements())
+      for (const Node* n : element->GetGeometry().Nodes())
+        if (n->Id() == node) ids.insert(element->Id());
+    return ids;
+  };
+  for (int rank = 0; rank < 3; ++rank) {
+    SCOPED_TRACE(rank);
+    const MdpaMesh::Piece piece = mesh.PieceOf(owner, rank, "Structure", {"Structure.Contact_Part"});
+    Model piece_model, cut_model;
+    ModelPart& read_piece = read(piece_model, &piece);
+    EXPECT_LT(read_piece.NumberOfNodes(), whole.NumberOfNodes());
+    EXPECT_LT(read_piece.NumberOfElements(), whole.NumberOfElements());
+    for (const Node* node : whole.GetSubModelPart("Contact_Part").Nodes())
+      EXPECT_EQ(elements_around(read_piece, node->Id()), elements_around(whole, node->Id())) << "node " << node->Id();
+    EXPECT_EQ(read_piece.Conditions()[read_piece.NumberOfConditions() - 1]->Id(),
+              whole.Conditions()[whole.NumberOfConditions() - 1]->Id());
+    ModelPart& cut = read(cut_model, nullptr);
+    const ModelPartPartitioner partitioner(node_owner, rank);
+    partitioner.Cut(cut, {&cut.GetSubModelPart("Contact_Part")});
+    partitioner.Cut(read_piece, {&read_piece.GetSubModelPart("Contact_Part")});
+    test::ExpectSameModelPart(cut, read_piece);
+  }
+  // The two bodies, as ContactSearchProcess::FindBodies labels them on the whole model.
+  std::vector<IndexType> contact_nodes;
+  for (const Node* node : whole.GetSubModelPart("Contact_Part").Nodes()) contact_nodes.push_back(node->Id());
+  const auto [body_of, labels] = mesh.Bodies(contact_nodes);
+  std::set<std::size_t> hemisphere, plate;
+  for (const auto& [node, body] : body_of) {
+    EXPECT_LT(body, labels);
+    (whole.GetSubModelPart("Parts_parts_hemisphere").HasNode(node) ? hemisphere : plate).insert(body);
+  }
+  EXPECT_EQ(hemisphere.size(), 1U);
+  EXPECT_EQ(plate.size(), 1U);
+  EXPECT_NE(*hemisphere.begin(), *plate.begin());
+  EXPECT_EQ(body_of.size(), whole.GetSubModelPart("Contact_Part").NumberOfNodes());
 }
 
 TEST(MdpaReader, MissingFileIsAnInputError) {

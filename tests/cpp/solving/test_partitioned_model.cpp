@@ -14,11 +14,13 @@
 #include <set>
 #include <thread>
 
+#include "core/io/mdpa_mesh.h"
 #include "core/model/model.h"
 #include "core/model/model_part.h"
 #include "core/model/model_part_partitioner.h"
 #include "core/solving/distributed_dof_numbering.h"
 #include "core/solving/node_partition.h"
+#include "core/utilities/string_utilities.h"
 #include "core/variables/kernel_variables.h"
 #include "test_elements.h"
 #include "tests/cpp/common/error_message.h"
@@ -228,6 +230,42 @@ TEST_P(PartitionedModel, EveryRankGivesADofTheReplicatedEquationIdAndTheGhostsTh
   }
   EXPECT_EQ(begin, static_cast<std::int64_t>(all.size()));
   EXPECT_GT(ghosts, 0U);
+}
+
+TEST_P(PartitionedModel, TheFileStreamedBeforeReadingIsPartitionedAsTheModelReadWhole) {
+  // Issue 17: a rank reading only its piece partitions the mdpa's connectivity (MdpaMesh), listed
+  // here in another order than the ids, and must find the owners the model read whole gets.
+  const int size = GetParam();
+  std::string text = "Begin Nodes\n";
+  const Grid grid;
+  for (const Node* node : grid.mp.Nodes()) text += Concat(node->Id(), " ", node->X0()[0], " ", node->X0()[1], " 0\n");
+  text += "End Nodes\nBegin Elements Spring\n";
+  const std::size_t count = grid.mp.NumberOfElements();
+  for (std::size_t k = 0; k < count; ++k) {
+    const Element& element = *grid.mp.Elements()[(k * 11) % count];  // 11 and the count are coprime
+    text += Concat(element.Id(), " 0 ", element.GetGeometry()[0].Id(), " ", element.GetGeometry()[1].Id(), "\n");
+  }
+  text += "End Elements\n";
+  ASSERT_NE(count % 11, 0U);
+  const MdpaMesh mesh = MdpaMesh::FromText(text);
+  ThreadRanks ranks(size);
+  std::vector<std::map<IndexType, int>> from_model(static_cast<std::size_t>(size)), from_file(from_model);
+  std::vector<std::thread> threads;
+  for (int r = 0; r < size; ++r)
+    threads.emplace_back([&, r] {
+      ThreadCommunicator communicator(ranks, r);
+      const NodePartition model_partition(grid.mp, communicator);
+      const NodePartition file_partition(mesh, communicator);
+      for (const Node* node : grid.mp.Nodes()) {
+        from_model[static_cast<std::size_t>(r)][node->Id()] = model_partition.Owner(*node);
+        from_file[static_cast<std::size_t>(r)][node->Id()] = file_partition.OwnerOf(node->Id());
+      }
+    });
+  for (auto& t : threads) t.join();
+  std::set<int> parts;
+  for (const auto& [id, owner] : from_model.front()) parts.insert(owner);
+  EXPECT_EQ(parts.size(), static_cast<std::size_t>(size));
+  for (int r = 0; r < size; ++r) EXPECT_EQ(from_file[static_cast<std::size_t>(r)], from_model.front()) << "rank " << r;
 }
 
 INSTANTIATE_TEST_SUITE_P(Ranks, PartitionedModel, ::testing::Values(2, 3, 4));
