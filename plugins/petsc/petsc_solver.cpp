@@ -592,7 +592,8 @@ PetscSolver::Options ReadPetscOptions(const Parameters& settings) {
   PetscSolver::Options options;
   options.tolerance = settings["tolerance"].GetDouble();
   options.max_iteration = settings["max_iteration"].GetInt();
-  options.inexact_newton = settings["inexact_newton"].GetBool();
+  // The factory's settings always hold it; the entry point's direct callers may leave it out.
+  options.inexact_newton = settings.Has("inexact_newton") && settings["inexact_newton"].GetBool();
   const Parameters given = settings["petsc_options"];
   if (!given.IsSubParameter())
     throw InputError(Concat(given.Where(), ": must be an object of PETSc options, e.g. {\"pc_type\": \"hypre\"}"));
