@@ -175,6 +175,10 @@ void AddSolvingToPython(py::module_& m) {
       .def_readonly("increment_norm", &IterationRecord::increment_norm, "|du| applied in the iteration.")
       .def_readonly("step_length", &IterationRecord::step_length,
                     "Line-search factor applied to the increment (1: Newton).")
+      .def_readonly("linear_tolerance", &IterationRecord::linear_tolerance,
+                    "Relative residual the linear solve was asked to reach (0: a direct solve).")
+      .def_readonly("linear_iterations", &IterationRecord::linear_iterations,
+                    "Iterations of the linear solve (1: a direct solve).")
       .def_readonly("criteria", &IterationRecord::criteria, "The CriterionValue measures of the criteria.")
       .def_readonly("converged", &IterationRecord::converged, "Whether the criteria were met.")
       .def_readonly("active_nodes", &IterationRecord::active_nodes,

@@ -223,6 +223,17 @@ def run_mortarcontact(parameters_path: str, dim: int, record: dict, linear_solve
     analysis = StructuralMechanicsAnalysis(model, parameters, progress=False, stop_on_non_convergence=False,
                                            case_dir=os.path.dirname(parameters_path))
     analysis.Initialize()
+    # Each step's Newton iterations: residual norm, linear tolerance and iterations (issue 14)
+    finalize_step = analysis.FinalizeSolutionStep
+
+    def finalize_and_record():
+        record["newton"].append([{"residual": r.residual_norm, "linear_tolerance": r.linear_tolerance,
+                                  "linear_iterations": r.linear_iterations}
+                                 for r in analysis.solver.strategy.GetIterationHistory()])
+        finalize_step()
+
+    record["newton"] = []
+    analysis.FinalizeSolutionStep = finalize_and_record
     record["setup_seconds"] = time.perf_counter() - started
     record["setup_rss_mb"] = _peak_rss_mb()  # imports, plugins, the model read, processes set up
     record["setup_resident_mb"] = _resident_mb()

@@ -24,6 +24,11 @@ class FallbackSolver : public LinearSolver {
   void Solve(const SparseMatrix& A, Vector& x, const Vector& b) override;
   void Clear() override;
   int IterationsNumber() const override { return Active().IterationsNumber(); }
+  void SetForcingTerm(double eta) override {
+    primary_->SetForcingTerm(eta);
+    fallback_->SetForcingTerm(eta);
+  }
+  double LastTolerance() const override { return Active().LastTolerance(); }
   WorkCounters Counters() const override { return Active().Counters(); }
 
   bool UsingFallback() const noexcept { return switched_; }

@@ -46,6 +46,12 @@ class LinearSolver {
   virtual void Clear() = 0;
   /// Iterations of the last solve (1 for direct solvers).
   virtual int IterationsNumber() const { return 1; }
+  /// Inexact Newton (ForcingTerm): the relative residual at which the next solves may stop. A
+  /// Krylov solver that accepts it ("inexact_newton") never stops before its own tolerance;
+  /// the others ignore it.
+  virtual void SetForcingTerm(double eta) {}
+  /// The relative residual the last solve was asked to reach; 0 for a direct solve.
+  virtual double LastTolerance() const { return 0.0; }
   /// Work done since construction, for benchmarks and tests: numeric factorizations, solves
   /// answered by a Krylov method preconditioned with kept factors, their iterations (including
   /// those of solves that fell back), fallbacks to a fresh factorization, and the set-ups of a

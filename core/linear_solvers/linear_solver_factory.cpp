@@ -154,6 +154,7 @@ Parameters DefaultSettings() {
     "use_gpgpu": null,
     "gpgpu_backend": null,
     "petsc_options": {},
+    "inexact_newton": false,
     "reuse_factorization": true
   })");
 }

@@ -24,6 +24,8 @@ class ScalingSolver : public LinearSolver {
   void Solve(const SparseMatrix& A, Vector& x, const Vector& b) override;
   void Clear() override;
   int IterationsNumber() const override { return inner_->IterationsNumber(); }
+  void SetForcingTerm(double eta) override { inner_->SetForcingTerm(eta); }
+  double LastTolerance() const override { return inner_->LastTolerance(); }
   WorkCounters Counters() const override { return inner_->Counters(); }
 
   const LinearSolver& Inner() const noexcept { return *inner_; }

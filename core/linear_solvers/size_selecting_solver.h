@@ -25,6 +25,11 @@ class SizeSelectingSolver : public LinearSolver {
   void Solve(const SparseMatrix& A, Vector& x, const Vector& b) override;
   void Clear() override;
   int IterationsNumber() const override { return Active().IterationsNumber(); }
+  void SetForcingTerm(double eta) override {
+    small_->SetForcingTerm(eta);
+    large_->SetForcingTerm(eta);
+  }
+  double LastTolerance() const override { return Active().LastTolerance(); }
   WorkCounters Counters() const override { return Active().Counters(); }
 
   /// The solver used for the last pattern.

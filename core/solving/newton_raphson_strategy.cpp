@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/linear_solvers/linear_solver.h"
 #include "core/model/model_part.h"
 #include "core/utilities/logger.h"
 #include "core/variables/kernel_variables.h"
@@ -201,6 +202,10 @@ bool NewtonRaphsonStrategy::NewtonIteration(int iteration) {
   SolveIteration(iteration);
   IterationRecord record;
   record.iteration = iteration;
+  if (const LinearSolver* solver = builder_->GetLinearSolver()) {
+    record.linear_tolerance = solver->LastTolerance();
+    record.linear_iterations = solver->IterationsNumber();
+  }
   record.time = model_part_.GetProcessInfo().GetValue(TIME);
   record.residual_norm = builder_->Norm(builder_->Residual());
   record.step_length = UpdateDatabase(iteration);
@@ -218,6 +223,7 @@ bool NewtonRaphsonStrategy::NewtonIteration(int iteration) {
 }
 
 void NewtonRaphsonStrategy::SolveIteration(int iteration) {
+  if (LinearSolver* solver = builder_->GetLinearSolver()) solver->SetForcingTerm(forcing_.ForIteration(iteration));
   if (iteration == 1 && use_old_stiffness_ && has_stiffness_) {
     builder_->BuildRHSAndSolve(*scheme_, model_part_);
   } else {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/solving/convergence_criteria.h"
+#include "core/solving/forcing_term.h"
 #include "core/solving/implicit_solving_strategy.h"
 #include "core/solving/iteration_record.h"
 #include "core/solving/step_splitting.h"
@@ -80,7 +81,8 @@ class NewtonRaphsonStrategy : public ImplicitSolvingStrategy {
 
   /// One iteration: criteria and scheme hooks, solve, update, check. Returns convergence.
   virtual bool NewtonIteration(int iteration);
-  /// Builds (or, with the old stiffness, only the residual) and solves.
+  /// Builds (or, with the old stiffness, only the residual) and solves, to the relative residual
+  /// of the forcing term when the linear solver accepts one (inexact Newton).
   virtual void SolveIteration(int iteration);
   /// Applies the increment of the builder; returns the factor applied to it (1 for Newton).
   virtual double UpdateDatabase(int iteration);
@@ -92,6 +94,7 @@ class NewtonRaphsonStrategy : public ImplicitSolvingStrategy {
   bool use_old_stiffness_;
   bool has_stiffness_ = false;
   std::vector<IterationRecord> history_;
+  ForcingTerm forcing_;
   StepSplitting splitting_;
   bool in_sub_step_ = false;
   /// The message of the SolutionError that ended the last attempt ("" if none).

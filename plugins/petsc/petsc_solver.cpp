@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cassert>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <mutex>
@@ -146,11 +147,12 @@ struct PetscSolver::Handles {
   VecScatter to_all = nullptr;
   // The kept preconditioner of this KSP (DecidePreconditionerReuse): whether the next solve keeps
   // it, the CPU seconds of the solve that set it up and of the last one that kept it, the
-  // iterations of its first solve, and the CPU seconds of the iterations beyond those since.
+  // iterations per decade of residual of its first solve, and the CPU seconds of the iterations
+  // beyond that rate since.
   bool keep_preconditioner = false;
   double rebuild_setup_seconds = 0.0;
   double kept_setup_seconds = -1.0;
-  int first_iterations = 0;
+  double first_iterations_per_decade = 0.0;
   double excess_seconds = 0.0;
   ~Handles() {
     if (to_all) VecScatterDestroy(&to_all);
@@ -324,6 +326,13 @@ void PetscSolver::Solve(const SparseMatrix& A, Vector& x, const Vector& b) {
   const bool krylov = !IsDirect();
   const bool rebuilt = !handles_->keep_preconditioner;
   double setup_seconds = 0.0, krylov_seconds = 0.0;
+  PetscReal tolerance = 0.0;
+  if (krylov && options_.inexact_newton)
+    Check(KSPSetTolerances(handles_->ksp, std::max(options_.tolerance, forcing_term_), PETSC_DEFAULT, PETSC_DEFAULT,
+                           PETSC_DEFAULT),
+          "KSPSetTolerances");
+  if (krylov) Check(KSPGetTolerances(handles_->ksp, &tolerance, nullptr, nullptr, nullptr), "KSPGetTolerances");
+  last_tolerance_ = tolerance;
   if (krylov) {
     // Set up apart from the iterations, to weigh the one against the other: the outer
     // preconditioner, then the kept one (in the field split PETSc would otherwise set up the
@@ -406,10 +415,11 @@ void PetscSolver::Solve(const SparseMatrix& A, Vector& x, const Vector& b) {
     PetscReal residual = 0.0;
     KSPGetResidualNorm(handles_->ksp, &residual);
     throw SolutionError(Concat("PETSc: ", KSPConvergedReasons[reason], " after ", iterations,
-                               " iterations (residual norm ", residual, ", rtol ", options_.tolerance,
-                               ", max_iteration ", options_.max_iteration, ")"));
+                               " iterations (residual norm ", residual, ", rtol ", tolerance, ", max_iteration ",
+                               options_.max_iteration, ")"));
   }
-  if (krylov) DecidePreconditionerReuse(rebuilt, setup_seconds, krylov_seconds, static_cast<int>(iterations));
+  if (krylov)
+    DecidePreconditionerReuse(rebuilt, setup_seconds, krylov_seconds, static_cast<int>(iterations), tolerance);
 }
 
 KSP PetscSolver::KeptPreconditionerKsp() const {
@@ -428,17 +438,22 @@ KSP PetscSolver::KeptPreconditionerKsp() const {
 // iterations beyond those of its first solve, at this solve's time per iteration, have cost less
 // than one set-up (at most twice the work of the better choice made in hindsight). Its set-up is
 // the set-up time of the solve that built it less that of a solve that kept it (the outer
-// preconditioner, rebuilt every time). Processes decide together: a rank alone would hang the rest.
-void PetscSolver::DecidePreconditionerReuse(bool rebuilt, double setup, double krylov, int iterations) {
+// preconditioner, rebuilt every time). Iterations are compared per decade of the residual they
+// reduced: under a forcing term the tolerance changes from solve to solve. Processes decide
+// together: a rank alone would hang the rest.
+void PetscSolver::DecidePreconditionerReuse(bool rebuilt, double setup, double krylov, int iterations,
+                                            double tolerance) {
   Handles& h = *handles_;
+  const double decades = std::max(1.0, -std::log10(tolerance));
   if (rebuilt) {
     ++counters_.preconditioner_setups;
     h.rebuild_setup_seconds = setup;
-    h.first_iterations = iterations;
+    h.first_iterations_per_decade = iterations / decades;
     h.excess_seconds = 0.0;
   } else {
     h.kept_setup_seconds = setup;
-    h.excess_seconds += std::max(0, iterations - h.first_iterations) * krylov / std::max(1, iterations);
+    const double excess = std::max(0.0, iterations - h.first_iterations_per_decade * decades);
+    h.excess_seconds += excess * krylov / std::max(1, iterations);
   }
   const double setup_cost = h.rebuild_setup_seconds - std::max(0.0, h.kept_setup_seconds);
   int rebuild = h.excess_seconds > setup_cost ? 1 : 0;
@@ -577,6 +592,8 @@ PetscSolver::Options ReadPetscOptions(const Parameters& settings) {
   PetscSolver::Options options;
   options.tolerance = settings["tolerance"].GetDouble();
   options.max_iteration = settings["max_iteration"].GetInt();
+  // The factory's settings always hold it; the entry point's direct callers may leave it out.
+  options.inexact_newton = settings.Has("inexact_newton") && settings["inexact_newton"].GetBool();
   const Parameters given = settings["petsc_options"];
   if (!given.IsSubParameter())
     throw InputError(Concat(given.Where(), ": must be an object of PETSc options, e.g. {\"pc_type\": \"hypre\"}"));

@@ -54,6 +54,9 @@ class PetscSolver : public LinearSolver {
   struct Options {
     double tolerance = 1.0e-6;  ///< relative residual of Krylov methods (KSP rtol)
     int max_iteration = 200;
+    /// Accept the Newton strategy's forcing term (SetForcingTerm): the first solves of a load step
+    /// may stop at a relative residual above `tolerance` (ForcingTerm).
+    bool inexact_newton = false;
     /// PETSc options without the leading dash, applied under this solver's own prefix, e.g.
     /// {"ksp_type", "preonly"}, {"pc_type", "lu"}, {"pc_factor_mat_solver_type", "mumps"}.
     std::vector<std::pair<std::string, std::string>> petsc_options;
@@ -77,6 +80,8 @@ class PetscSolver : public LinearSolver {
   void Solve(const SparseMatrix& A, Vector& x, const Vector& b) override;
   void Clear() override;
   int IterationsNumber() const override { return iterations_; }
+  void SetForcingTerm(double eta) override { forcing_term_ = eta; }
+  double LastTolerance() const override { return last_tolerance_; }
   /// Solves by a Krylov method and their iterations, or factorizations (ksp_type preonly).
   WorkCounters Counters() const override { return counters_; }
   /// Only the field split needs the DoF of each row.
@@ -101,8 +106,9 @@ class PetscSolver : public LinearSolver {
   /// split with multipliers (once the outer preconditioner is set up), else the solver's own.
   _p_KSP* KeptPreconditionerKsp() const;
   /// After a Krylov solve: whether the next one keeps the preconditioner (see the class comment);
-  /// `rebuilt` says whether this one set it up, `setup` and `krylov` are its CPU seconds.
-  void DecidePreconditionerReuse(bool rebuilt, double setup, double krylov, int iterations);
+  /// `rebuilt` says whether this one set it up, `setup` and `krylov` are its CPU seconds, and it
+  /// stopped at the relative residual `tolerance`.
+  void DecidePreconditionerReuse(bool rebuilt, double setup, double krylov, int iterations, double tolerance);
   void ClearOptions();
   /// After MUMPS ran out of the workspace it estimated (its pivots delayed more than the analysis
   /// foresaw, as in a saddle-point system on 4 ranks): raises its allowance (ICNTL(14)) in the
@@ -119,6 +125,8 @@ class PetscSolver : public LinearSolver {
   SparsePattern pattern_;
   SparseMatrix compressed_;
   int iterations_ = 0;
+  double forcing_term_ = 0.0;
+  double last_tolerance_ = 0.0;
   WorkCounters counters_;
   bool field_split_ = false;
   std::vector<Dof*> dofs_;  ///< of the last ProvideAdditionalData, whose split depends on nothing else

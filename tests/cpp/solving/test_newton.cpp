@@ -69,6 +69,46 @@ TEST(NewtonRaphson, CubicSpringConvergesQuadratically) {
   EXPECT_GE(checked, 2);
 }
 
+// UMFPACK standing in for a Krylov solver that accepts a forcing term: it records the tolerances.
+class ForcingRecorder : public UmfpackSolver {
+ public:
+  void SetForcingTerm(double eta) override { eta_ = eta; }
+  double LastTolerance() const override { return eta_; }
+
+ private:
+  double eta_ = 0.0;
+};
+
+TEST(NewtonRaphson, TheFirstSolvesOfAStepAreAskedForTheLooseToleranceTheLaterOnesForTheSolvers) {
+  CubicSpring s(1.0, 1.0, 10.0);
+  NewtonRaphsonStrategy strategy(s.mp, std::make_shared<ResidualBasedIncrementalUpdateStaticScheme>(),
+                                 std::make_shared<DisplacementCriteria>(1e-14, 0.0),
+                                 std::make_shared<BlockBuilderAndSolver>(std::make_shared<ForcingRecorder>()), 30);
+  ASSERT_TRUE(strategy.Solve());
+  const auto& h = strategy.IterationHistory();
+  ASSERT_GT(h.size(), static_cast<std::size_t>(ForcingTerm::kLooseSolves));
+  for (const IterationRecord& record : h) {
+    EXPECT_EQ(record.linear_tolerance, record.iteration <= ForcingTerm::kLooseSolves ? ForcingTerm::kLoose : 0.0)
+        << record.iteration;
+    EXPECT_EQ(record.linear_iterations, 1);
+  }
+}
+
+TEST(NewtonRaphson, ADirectSolveRecordsNoTolerance) {
+  CubicSpring s(1.0, 1.0, 10.0);
+  NewtonRaphsonStrategy strategy(s.mp, std::make_shared<ResidualBasedIncrementalUpdateStaticScheme>(),
+                                 std::make_shared<DisplacementCriteria>(1e-14, 0.0), Block(), 30);
+  ASSERT_TRUE(strategy.Solve());
+  for (const IterationRecord& record : strategy.IterationHistory()) EXPECT_EQ(record.linear_tolerance, 0.0);
+}
+
+TEST(ForcingTerm, LooseForTheFirstSolvesOfALoop) {
+  const ForcingTerm forcing(2, 1e-5);
+  EXPECT_EQ(forcing.ForIteration(1), 1e-5);
+  EXPECT_EQ(forcing.ForIteration(2), 1e-5);
+  EXPECT_EQ(forcing.ForIteration(3), 0.0);  // the solver's own tolerance
+}
+
 TEST(NewtonRaphson, ResidualCriterionNeedsTwoIterationsOnALinearProblem) {
   CubicSpring s(4.0, 0.0, 2.0);
   NewtonRaphsonStrategy strategy(s.mp, std::make_shared<ResidualBasedIncrementalUpdateStaticScheme>(),

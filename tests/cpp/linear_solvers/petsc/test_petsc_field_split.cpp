@@ -94,6 +94,30 @@ TEST(PetscFieldSplit, TheDisplacementMultigridIsKeptOverTheSolvesOfOnePattern) {
   EXPECT_GE(petsc.Counters().preconditioner_setups, 2);
 }
 
+TEST(PetscFieldSplit, InexactNewtonStopsAtTheForcingTermNeverBeforeItsOwnTolerance) {
+  AssembledSystem<ContactSystem<3, 4, 4>> assembled(std::vector<bool>{true, false, true, true});
+  auto& [system, A, b, dofs] = assembled;
+  b.setLinSpaced(b.size(), -1.0, 2.0);
+  auto solve = [&](bool inexact_newton, double eta) {
+    PetscSolver::Options options = FieldSplitOptions();
+    options.inexact_newton = inexact_newton;
+    PetscSolver petsc(options);
+    petsc.ProvideAdditionalData(A, dofs);
+    petsc.SetForcingTerm(eta);
+    Vector x;
+    petsc.Solve(A, x, b);
+    EXPECT_LE((A * x - b).norm(), petsc.LastTolerance() * b.norm() * (1.0 + 1e-9));
+    return std::pair{petsc.LastTolerance(), petsc.IterationsNumber()};
+  };
+  const auto [tight, tight_iterations] = solve(true, 0.0);
+  EXPECT_EQ(tight, 1e-12);
+  const auto [loose, loose_iterations] = solve(true, 1e-3);
+  EXPECT_EQ(loose, 1e-3);
+  EXPECT_LT(loose_iterations, tight_iterations);
+  EXPECT_EQ(solve(true, 1e-15).first, 1e-12);  // never below its own tolerance
+  EXPECT_EQ(solve(false, 1e-3).first, 1e-12);  // not asked for: the forcing term is ignored
+}
+
 TEST(PetscFieldSplit, SmoothedAggregationGetsTheRigidBodyModesOfTheDisplacements) {
   AssembledSystem<ContactSystem<3, 4, 4>> assembled(std::vector<bool>{true, true, false, true});
   auto& [system, A, b, dofs] = assembled;
