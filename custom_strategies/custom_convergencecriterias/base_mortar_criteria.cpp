@@ -73,6 +73,15 @@ bool BaseMortarConvergenceCriteria::PostCriteria(ModelPart& model_part, const Do
   return converged;
 }
 
+ActiveSetUtilities::SetChanges BaseMortarConvergenceCriteria::TrialActiveSet(ModelPart& model_part) {
+  ModelPart* contact = FindContactModelPart(model_part);
+  if (!contact) return {};
+  if (contact->HasNodalSolutionStepVariable(WEIGHTED_GAP) && updater_)
+    RecomputeWeightedGap(model_part, *contact, *updater_);
+  ActiveSetUtilities::ChangedNodes changed;
+  return model_part.Is(INTERACTION) ? UpdateActiveSet(*contact, &changed) : SetChanges{};
+}
+
 std::vector<CriterionValue> BaseMortarConvergenceCriteria::LastValues() const {
   std::vector<CriterionValue> values{{"active set changes", static_cast<double>(changes_.active), 0.0}};
   if (HasSlipSet()) values.push_back({"slip set changes", static_cast<double>(changes_.slip), 0.0});

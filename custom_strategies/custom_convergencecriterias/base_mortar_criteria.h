@@ -55,6 +55,11 @@ class BaseMortarConvergenceCriteria : public ConvergenceCriteria {
   std::size_t LastChangeCount() const noexcept { return changes_.active; }
   /// Active nodes that switched between stick and slip at the last check (0 without friction).
   std::size_t LastSlipChangeCount() const noexcept { return changes_.slip; }
+  /// What the next PostCriteria would make of the set at the current coordinates, done to the nodes
+  /// and not recorded: the weighted gap recomputed, then (full semi-smooth Newton only) the set
+  /// updated. The contact strategy's line search evaluates its trial points with it and restores
+  /// the nodes afterwards.
+  ActiveSetUtilities::SetChanges TrialActiveSet(ModelPart& model_part);
   bool ComputeDynamicFactor() const noexcept { return compute_dynamic_factor_; }
   bool PrintConvergenceCriterion() const noexcept { return print_; }
 

@@ -4,12 +4,16 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 
 #include "core/model/model_part.h"
 #include "core/solving/singular_system_error.h"
 #include "core/utilities/logger.h"
 #include "core/variables/kernel_variables.h"
+#include "custom_strategies/custom_convergencecriterias/base_mortar_criteria.h"
 #include "custom_strategies/custom_convergencecriterias/contact_criteria_utilities.h"
+#include "custom_strategies/custom_convergencecriterias/mortar_and_criteria.h"
 #include "custom_utilities/contact_state_cycle.h"
 #include "custom_utilities/contact_variables.h"
 
@@ -20,6 +24,70 @@ namespace {
 int ConvergedContactStates(const Node& node) {
   return node.Has(CONVERGED_CONTACT_STATES) ? node.GetValue(CONVERGED_CONTACT_STATES) : -1;
 }
+
+/// The mortar criterion of `criteria` (itself, or the second of a MortarAndConvergenceCriteria), or null.
+BaseMortarConvergenceCriteria* FindMortarCriterion(ConvergenceCriteria* criteria) {
+  if (auto* both = dynamic_cast<MortarAndConvergenceCriteria*>(criteria)) criteria = &both->Mortar();
+  return dynamic_cast<BaseMortarConvergenceCriteria*>(criteria);
+}
+
+/// What an evaluation of the active set writes on the contact nodes (flags, multipliers on
+/// activation, weighted gap and slip, nodal area, augmented pressures), kept to be put back.
+class ContactNodeSnapshot {
+ public:
+  explicit ContactNodeSnapshot(ModelPart& contact)
+      : vector_multiplier_(contact.HasNodalSolutionStepVariable(VECTOR_LAGRANGE_MULTIPLIER)),
+        scalar_multiplier_(contact.HasNodalSolutionStepVariable(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE)),
+        gap_(contact.HasNodalSolutionStepVariable(WEIGHTED_GAP)),
+        slip_(contact.HasNodalSolutionStepVariable(WEIGHTED_SLIP)) {
+    for (Node* node : contact.Nodes()) {
+      Entry e{node, node->Is(ACTIVE), node->Is(SLIP), node->Is(ISOLATED)};
+      if (vector_multiplier_) e.multiplier = node->FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER);
+      if (scalar_multiplier_) e.pressure = node->FastGetSolutionStepValue(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE);
+      if (gap_) e.gap = node->FastGetSolutionStepValue(WEIGHTED_GAP);
+      if (slip_) e.slip = node->FastGetSolutionStepValue(WEIGHTED_SLIP);
+      if (node->Has(NODAL_AREA)) e.area = node->GetValue(NODAL_AREA);
+      if (node->Has(AUGMENTED_NORMAL_CONTACT_PRESSURE))
+        e.normal_pressure = node->GetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE);
+      if (node->Has(AUGMENTED_TANGENT_CONTACT_PRESSURE))
+        e.tangent_pressure = node->GetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE);
+      entries_.push_back(e);
+    }
+  }
+
+  void Restore() const {
+    for (const Entry& e : entries_) {
+      Node& node = *e.node;
+      node.Set(ACTIVE, e.active);
+      node.Set(SLIP, e.slipping);
+      node.Set(ISOLATED, e.isolated);
+      if (vector_multiplier_) node.FastGetSolutionStepValue(VECTOR_LAGRANGE_MULTIPLIER) = e.multiplier;
+      if (scalar_multiplier_) node.FastGetSolutionStepValue(LAGRANGE_MULTIPLIER_CONTACT_PRESSURE) = e.pressure;
+      if (gap_) node.FastGetSolutionStepValue(WEIGHTED_GAP) = e.gap;
+      if (slip_) node.FastGetSolutionStepValue(WEIGHTED_SLIP) = e.slip;
+      if (e.area) node.SetValue(NODAL_AREA, *e.area);
+      if (e.normal_pressure) node.SetValue(AUGMENTED_NORMAL_CONTACT_PRESSURE, *e.normal_pressure);
+      if (e.tangent_pressure) node.SetValue(AUGMENTED_TANGENT_CONTACT_PRESSURE, *e.tangent_pressure);
+    }
+  }
+
+ private:
+  struct Entry {
+    Node* node;
+    bool active, slipping, isolated;
+    Array3 multiplier = Array3::Zero();
+    double pressure = 0.0;
+    double gap = 0.0;
+    Array3 slip = Array3::Zero();
+    std::optional<double> area, normal_pressure;
+    std::optional<Array3> tangent_pressure;
+  };
+  bool vector_multiplier_, scalar_multiplier_, gap_, slip_;
+  std::vector<Entry> entries_;
+};
+
+/// Armijo's sufficient decrease: |F(x + s dx)| <= (1 - kArmijo s) |F(x)|.
+constexpr double kArmijo = 1e-4;
 }  // namespace
 
 Parameters ResidualBasedNewtonRaphsonContactStrategy::GetDefaultParameters() {
@@ -27,7 +95,8 @@ Parameters ResidualBasedNewtonRaphsonContactStrategy::GetDefaultParameters() {
       "adaptative_strategy"   : false,
       "split_factor"          : 10.0,
       "max_number_splits"     : 3,
-      "inner_loop_iterations" : 5
+      "inner_loop_iterations" : 5,
+      "active_set_line_search" : false
   })");
 }
 
@@ -38,6 +107,7 @@ ContactStrategySettings ResidualBasedNewtonRaphsonContactStrategy::ReadSettings(
   s.split_factor = settings["split_factor"].GetDouble();
   s.max_number_splits = settings["max_number_splits"].GetInt();
   s.inner_loop_iterations = settings["inner_loop_iterations"].GetInt();
+  s.active_set_line_search = settings["active_set_line_search"].GetBool();
   if (!(s.split_factor > 1.0))
     throw InputError(Concat(settings["split_factor"].Where(), ": ", s.split_factor, " must be greater than 1"));
   if (s.max_number_splits < 1)
@@ -181,6 +251,62 @@ void ResidualBasedNewtonRaphsonContactStrategy::ExplainLostOverlap(const Singula
              "load step is too large for the contact to follow: use a smaller time step, or let the solver "
              "split the step (contact_settings adaptative_strategy / max_number_splits)"),
       error.Dofs());
+}
+
+double ResidualBasedNewtonRaphsonContactStrategy::TrialMerit(BaseMortarConvergenceCriteria& mortar,
+                                                             ModelPart& contact) {
+  const ContactNodeSnapshot moved(contact);
+  const ActiveSetUtilities::SetChanges changes = mortar.TrialActiveSet(model_part_);
+  double changed = static_cast<double>(changes.active);
+  if (const AssemblyCommunicator* ranks = builder_->PieceCommunicator()) ranks->SumToAll(&changed, 1);
+  double merit = -1.0;
+  if (changed > 0.0) {
+    builder_->BuildRHS(*scheme_, model_part_);
+    merit = builder_->Norm(builder_->Residual());
+  }
+  moved.Restore();
+  return merit;
+}
+
+double ResidualBasedNewtonRaphsonContactStrategy::UpdateDatabase(int iteration) {
+  BaseMortarConvergenceCriteria* mortar = FindMortarCriterion(criteria_.get());
+  ModelPart* contact = FindContactModelPart(model_part_);
+  if (!settings_.active_set_line_search || !mortar || !contact || !model_part_.Is(INTERACTION))
+    return NewtonRaphsonStrategy::UpdateDatabase(iteration);
+  // Far from the solution a semi-smooth Newton increment can carry lightly pressed nodes across
+  // the complementarity kink and back, the set never settling (the ironing drag, benchmarks/
+  // robustness/README.md). The merit decides whether such an increment may decide the set.
+  const Vector direction = builder_->Increment();
+  const Vector residual = builder_->Residual();
+  // Non-monotone: against the last iteration of this step too. The monotone test (|F| now alone)
+  // cost contact-onset steps an iteration and failed a sweep case that converges with this one.
+  double reference = builder_->Norm(residual);
+  if (!history_.empty() && history_.back().time == model_part_.GetProcessInfo().GetValue(TIME))
+    reference = std::max(reference, history_.back().residual_norm);
+  double applied = 0.0;
+  double best = 1.0;
+  double best_merit = std::numeric_limits<double>::infinity();
+  for (double s = 1.0;; s *= 0.5) {
+    UpdateAndMoveMesh((s - applied) * direction);
+    applied = s;
+    const double merit = TrialMerit(*mortar, *contact);
+    if (merit < 0.0 || merit <= (1.0 - kArmijo * s) * reference) {
+      best = s;
+      break;
+    }
+    if (merit < best_merit) {
+      best_merit = merit;
+      best = s;
+    }
+    if (s <= kMinStepLength) break;
+  }
+  if (best != applied) UpdateAndMoveMesh((best - applied) * direction);
+  if (best != 1.0 && echo_level_ >= 1)
+    Logger::Info(Concat(Name(), ": iteration ", iteration, ": increment damped to ", best,
+                        " (it changed the active set and did not decrease the residual)"));
+  builder_->Increment() = best * direction;
+  builder_->Residual() = residual;
+  return best;
 }
 
 bool ResidualBasedNewtonRaphsonContactStrategy::RunNewtonLoop() {

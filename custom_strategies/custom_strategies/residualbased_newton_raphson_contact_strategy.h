@@ -14,14 +14,16 @@
 namespace mc {
 
 class SingularSystemError;
+class BaseMortarConvergenceCriteria;
 
 /// Settings of the contact Newton strategy, read from its keys of `contact_settings`
 /// (ResidualBasedNewtonRaphsonContactStrategy::ReadSettings; defaults in GetDefaultParameters).
 struct ContactStrategySettings {
-  bool adaptative_strategy;   ///< split the step when it does not converge
-  double split_factor;        ///< DELTA_TIME divisor per split level
-  int max_number_splits;      ///< split levels tried before giving up
-  int inner_loop_iterations;  ///< active-set passes of the simplified semi-smooth Newton
+  bool adaptative_strategy;     ///< split the step when it does not converge
+  double split_factor;          ///< DELTA_TIME divisor per split level
+  int max_number_splits;        ///< split levels tried before giving up
+  int inner_loop_iterations;    ///< active-set passes of the simplified semi-smooth Newton
+  bool active_set_line_search;  ///< damp the increments that change the set (see UpdateDatabase)
 };
 
 /// "newton_raphson_contact_strategy": Newton-Raphson for mortar contact, i.e. the semi-smooth
@@ -32,7 +34,8 @@ struct ContactStrategySettings {
 ///    in which the active set is updated after every iteration. If the set returns to that of an
 ///    earlier iteration (a cycle), the union of the sets of the cycle is kept until Newton
 ///    converges on it and checked then, as in the simplified method (Kratos stops at
-///    max_iteration).
+///    max_iteration). With `active_set_line_search` (ours, off by default) an increment that
+///    would change the active set must decrease the residual, or is damped (UpdateDatabase).
 ///  - Simplified semi-smooth Newton otherwise: up to `inner_loop_iterations` passes, each a
 ///    complete Newton loop (the active set is updated after its first iteration, then frozen),
 ///    followed by an active-set check with NL_ITERATION_NUMBER = 1; done when the set no longer
@@ -52,8 +55,10 @@ struct ContactStrategySettings {
 ///    last criterion values.
 class ResidualBasedNewtonRaphsonContactStrategy : public NewtonRaphsonStrategy {
  public:
+  /// The shortest step the active-set line search tries.
+  static constexpr double kMinStepLength = 0.0625;
   /// Its keys of Kratos' contact_settings: adaptative_strategy (false), split_factor (10),
-  /// max_number_splits (3), inner_loop_iterations (5).
+  /// max_number_splits (3), inner_loop_iterations (5); and ours, active_set_line_search (false).
   static Parameters GetDefaultParameters();
   /// Reads its keys from `settings` (the solver's validated contact_settings, or any object:
   /// missing keys are added with their defaults; the owner of the block rejects unknown ones)
@@ -85,6 +90,15 @@ class ResidualBasedNewtonRaphsonContactStrategy : public NewtonRaphsonStrategy {
  protected:
   /// Base iteration, plus the active-set flip bookkeeping and the inverted-element guard.
   bool NewtonIteration(int iteration) override;
+  /// With `active_set_line_search`, in full semi-smooth Newton: an increment after which the
+  /// active-set update would change the set is accepted only if it decreases the merit |F|, the
+  /// residual assembled with the set the update takes there (the complementarity rows included),
+  /// by the Armijo fraction; otherwise it is halved, down to kMinStepLength, and the trial with
+  /// the least merit is taken. The reference is the larger of |F| now and at the last iteration
+  /// of the step (a non-monotone test: a single rise, as when contact spreads, passes). An
+  /// increment that changes no node's ACTIVE flag is taken whole (stick / slip changes are left
+  /// out: checked too, they cost shift steps up to 10 more iterations).
+  double UpdateDatabase(int iteration) override;
   /// Rethrows `error` in contact terms when every DoF it names is the multiplier of an active slave node.
   void ExplainLostOverlap(const SingularSystemError& error, int iteration) const;
   /// Full or simplified semi-smooth Newton, per the INTERACTION flag.
@@ -117,6 +131,9 @@ class ResidualBasedNewtonRaphsonContactStrategy : public NewtonRaphsonStrategy {
   bool LastStepKeptContactStates() const;
   /// Id of an element with a negative Jacobian determinant at an integration point, or 0.
   IndexType FindInvertedElement() const;
+  /// Merit of the current coordinates for UpdateDatabase: |F| if the set update changes the set there,
+  /// else -1. The contact nodes are left as they were.
+  double TrialMerit(BaseMortarConvergenceCriteria& mortar, ModelPart& contact);
 
   ContactStrategySettings settings_;
   std::shared_ptr<MortarUpdater> updater_;

@@ -107,7 +107,8 @@ def write_case(out_dir: str, friction: float = FRICTION, slip_augmentation: floa
             "analysis_type": "non_linear", "buffer_size": 3,
             "model_import_settings": model_import,
             "material_import_settings": {"materials_filename": f"{name}_materials.json"},
-            "contact_settings": {"mortar_type": "ALMContactFrictional"},
+            # mortarcontact's globalized set update: without it step 19 does not converge (not a Kratos key)
+            "contact_settings": {"mortar_type": "ALMContactFrictional", "active_set_line_search": True},
             "time_stepping": {"time_step": dt},
             "compute_reactions": True, "convergence_criterion": "contact_residual_criterion",
             "residual_relative_tolerance": 1e-6, "residual_absolute_tolerance": 1e-10, "max_iteration": 30,
