@@ -411,46 +411,50 @@ def test_each_rank_reads_only_its_piece_of_the_mesh(tmp_path):
         assert sum(nodes for nodes, _ in pieces) >= blocks["Nodes"], (line, blocks)
 
 
-def test_a_bad_line_read_in_pieces_stops_every_rank_with_the_serial_message(tmp_path):
-    """An element naming a node that does not exist, in the part of the mesh one rank reads: every
-    rank reads every line, so both stop at it, and rank 0 prints the serial run's message once."""
+def _input_error_of_a_broken_mesh(tmp_path, break_mesh) -> str:
+    """The hertz2d-mumps case with its mdpa edited by ``break_mesh(path)``, run on one process and
+    on two with the model cut: each exits 2 without a traceback, rank 0 alone prints the input error,
+    and it is the serial run's. Returns that message."""
     messages = {}
     for processes, env in ((1, ENV), (2, PARTITIONED)):
         folder = tmp_path / f"ranks{processes}"
         folder.mkdir()
         _write_cut_case(folder, "hertz2d-mumps")
-        mdpa = next(folder.rglob("*.mdpa"))
+        break_mesh(next(folder.rglob("*.mdpa")))
+        done = _run(folder, processes, env)
+        assert done.returncode == 2, done.stdout + done.stderr
+        assert "Traceback" not in done.stderr
+        errors = [line for line in done.stderr.splitlines() if line.startswith("mortarcontact: input error")]
+        assert len(errors) == 1, done.stderr  # rank 0's only
+        messages[processes] = errors[0]
+    assert messages[2] == messages[1]
+    return messages[1]
+
+
+def test_a_bad_line_read_in_pieces_stops_every_rank_with_the_serial_message(tmp_path):
+    """An element naming a node that does not exist, in the part of the mesh one rank reads: every
+    rank reads every line, so both stop at it, and rank 0 prints the serial run's message once."""
+    line_number = []
+
+    def break_mesh(mdpa):
         lines = mdpa.read_text().splitlines()
         last = max(k for k, line in enumerate(lines) if line.strip() == "End Elements")
         words = lines[last - 1].split()
         lines[last - 1] = " ".join([*words[:-1], "999999"])
         mdpa.write_text("\n".join(lines) + "\n")
-        done = _run(folder, processes, env)
-        assert done.returncode == 2, done.stdout + done.stderr
-        assert "Traceback" not in done.stderr
-        errors = [line for line in done.stderr.splitlines() if line.startswith("mortarcontact: input error")]
-        assert len(errors) == 1, done.stderr  # rank 0's only
-        assert f".mdpa:{last}:" in errors[0] and "refers to node 999999" in errors[0], errors[0]
-        messages[processes] = errors[0]
-    assert messages[2] == messages[1]
+        line_number.append(last)
+
+    error = _input_error_of_a_broken_mesh(tmp_path, break_mesh)
+    assert f".mdpa:{line_number[0]}:" in error and "refers to node 999999" in error, error
 
 
 def test_a_mesh_error_on_one_ranks_piece_stops_every_rank_with_the_serial_message(tmp_path):
     """A point load on a node that no element holds: only its owner (rank 0, which owns the nodes of
     no element) finds it on its piece, and every rank stops with the serial run's message, once."""
-    messages = {}
-    for processes, env in ((1, ENV), (2, PARTITIONED)):
-        folder = tmp_path / f"ranks{processes}"
-        folder.mkdir()
-        _write_cut_case(folder, "hertz2d-mumps")
-        mdpa = next(folder.rglob("*.mdpa"))
+
+    def break_mesh(mdpa):
         text = mdpa.read_text().replace("End Nodes", "999999 0.5 0.5 0.0\nEnd Nodes", 1)
         mdpa.write_text(text + "Begin Conditions PointLoadCondition2D1N\n999999 0 999999\nEnd Conditions\n")
-        done = _run(folder, processes, env)
-        assert done.returncode == 2, done.stdout + done.stderr
-        assert "Traceback" not in done.stderr
-        errors = [line for line in done.stderr.splitlines() if line.startswith("mortarcontact: input error")]
-        assert len(errors) == 1, done.stderr  # rank 0's only
-        assert "condition 999999 (PointLoadCondition2D1N): node 999999 belongs to no element" in errors[0], errors[0]
-        messages[processes] = errors[0]
-    assert messages[2] == messages[1]
+
+    error = _input_error_of_a_broken_mesh(tmp_path, break_mesh)
+    assert "condition 999999 (PointLoadCondition2D1N): node 999999 belongs to no element" in error, error
