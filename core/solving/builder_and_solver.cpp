@@ -16,6 +16,7 @@
 #include "core/solving/scheme.h"
 #include "core/solving/singular_system_error.h"
 #include "core/utilities/logger.h"
+#include "core/variables/kernel_variables.h"
 
 namespace mc {
 
@@ -64,6 +65,25 @@ void BuilderAndSolver::SetUpDofSet(ModelPart& model_part, const Scheme& scheme) 
     std::sort(v.begin(), v.end());
     v.erase(std::unique(v.begin(), v.end()), v.end());
     dofs_.insert(dofs_.end(), v.begin(), v.end());
+  }
+  if (communicator_ && model_part.GetNodePartition()) {
+    // A piece keeps its contact interface whole, but a node of it that no entity of the piece uses
+    // would get no displacement update here: its position would go stale, and this rank's contact
+    // search would see another master surface than its owner's (hertz2d_250k on 2 ranks took another
+    // contact zone from step 3). Its displacement DoFs join the piece as ghosts, which follow their
+    // owner's increments like the others. Only the components the entities solve for (a 2D model's
+    // nodes also carry DISPLACEMENT_Z, which no entity uses and no owner numbers).
+    std::vector<const Variable<double>*> solved;
+    for (const Dof* dof : dofs_)
+      if (dof->variable->Source() == &DISPLACEMENT &&
+          std::find(solved.begin(), solved.end(), dof->variable) == solved.end())
+        solved.push_back(dof->variable);
+    const NodePartition& owners = *model_part.GetNodePartition();
+    const int rank = communicator_->Rank();
+    for (Node* node : model_part.Nodes())
+      if (owners.Owner(*node) != rank)
+        for (const Variable<double>* variable : solved)
+          if (Dof* dof = node->FindDof(*variable)) dofs_.push_back(dof);
   }
   std::vector<std::shared_ptr<const MasterSlaveConstraint>> constraints = added_constraints_;
   constraints.insert(constraints.end(), model_part.MasterSlaveConstraints().begin(),
