@@ -107,8 +107,7 @@ def write_case(out_dir: str, friction: float = FRICTION, slip_augmentation: floa
             "analysis_type": "non_linear", "buffer_size": 3,
             "model_import_settings": model_import,
             "material_import_settings": {"materials_filename": f"{name}_materials.json"},
-            # mortarcontact's globalized set update: without it step 19 does not converge (not a Kratos key)
-            "contact_settings": {"mortar_type": "ALMContactFrictional", "active_set_line_search": True},
+            "contact_settings": {"mortar_type": "ALMContactFrictional"},
             "time_stepping": {"time_step": dt},
             "compute_reactions": True, "convergence_criterion": "contact_residual_criterion",
             "residual_relative_tolerance": 1e-6, "residual_absolute_tolerance": 1e-10, "max_iteration": 30,
@@ -126,6 +125,9 @@ def write_case(out_dir: str, friction: float = FRICTION, slip_augmentation: floa
                                "assume_master_slave": {"0": ["Contact_slave"]},
                                "slip_augmentation_coefficient": slip_augmentation}}]},
         "output_processes": {}}
+    # mortarcontact's globalized set update (the contact strategy's key, not Kratos'): without it
+    # step 19 does not converge
+    parameters["solver_settings"]["contact_settings"]["active_set_line_search"] = True
     write_json_files(folder, {f"{name}_materials.json": materials, "ProjectParameters.json": parameters})
     return folder
 
